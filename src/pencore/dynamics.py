@@ -1,0 +1,456 @@
+"""Contact force and moment (paper Eqs 5-11) and the rigid-body equations (Eqs 2-4).
+
+Everything here is compiled with numba and works on plain arrays; :mod:`pencore.solver`
+wraps it for users.
+
+State vector ``y`` (length 14, SI units)::
+
+    y[0:3]   centre-of-mass position in the fixed frame (m)
+    y[3:7]   attitude quaternion (w, x, y, z), body -> fixed frame
+    y[7:10]  centre-of-mass velocity in the fixed frame (m/s)
+    y[10:13] angular velocity in the body frame (rad/s); body axis 1 is the symmetry axis
+    y[13]    work done on the body by the contact stresses (J)
+
+Force law on a surface element with outward normal ``n`` moving at ``u`` (paper Eqs 6-9)::
+
+    Vn = u . n,  sigma_n = a0 + a1 Vn + a2 Vn^2 + ...
+    traction = -H(Vn) sigma_n n  -  mu(|u_t|) H(Vn) sigma_n u_t / |u_t|
+
+with ``u_t = u - Vn n`` the sliding velocity. The paper's Eq. 9 builds the tangential
+direction as ``m x n``, whose length is ``|u_t|/|u|``; we use the unit direction (the
+Coulomb law the text describes) and the sign that opposes sliding.
+
+Contact (Eq. 7 plus the free surface): an element carries load when it is inside a
+layer (``y <= 0``) and ``Vn >= 0``. On each surface ring every quantity is affine in
+``cos(phi)`` and ``sin(phi)``, so the loaded part of the ring is a union of arcs whose
+ends are found exactly and the normal stress is integrated over them in closed form.
+
+The unilateral condition makes the force discontinuous where ``Vn`` changes sign over a
+whole ring at once: on a cylinder at zero angle of attack ``Vn = 0`` everywhere and
+``H = 1`` loads all around, while any sideways velocity unloads one half, so the lateral
+force on a shank ring jumps from 0 to ``2 a0 r dl`` (a dry-friction-like force). The
+solver smooths the step over a normal-velocity band of half-width ``eps`` (m/s)::
+
+    H_eps(Vn) = clip((Vn + eps) / (2 eps), 0, 1)
+
+which tends to Eq. 7 as ``eps -> 0`` (``eps = 0`` is the sharp law). The band is integrated
+in closed form too. The default ``eps`` comes from the convergence study
+(``benchmarks/convergence.py``); the implicit integrator keeps the stiff band stable.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba as nb
+import numpy as np
+
+TWO_PI = 2.0 * math.pi
+_MAXI = 16  # max number of arcs in an interval set
+_MAXD = 10  # max polynomial degree + 2
+
+# ---------------------------------------------------------------- rotations
+
+
+@nb.njit(cache=True)
+def quat_to_matrix(q: np.ndarray) -> np.ndarray:
+    """Rotation matrix (body -> fixed) of a quaternion (w, x, y, z); normalises ``q``."""
+    n = math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3])
+    w, x, y, z = q[0] / n, q[1] / n, q[2] / n, q[3] / n
+    r = np.empty((3, 3))
+    r[0, 0] = 1 - 2 * (y * y + z * z)
+    r[0, 1] = 2 * (x * y - w * z)
+    r[0, 2] = 2 * (x * z + w * y)
+    r[1, 0] = 2 * (x * y + w * z)
+    r[1, 1] = 1 - 2 * (x * x + z * z)
+    r[1, 2] = 2 * (y * z - w * x)
+    r[2, 0] = 2 * (x * z - w * y)
+    r[2, 1] = 2 * (y * z + w * x)
+    r[2, 2] = 1 - 2 * (x * x + y * y)
+    return r
+
+
+# ---------------------------------------------------------------- arc sets on [0, 2pi)
+
+
+@nb.njit(cache=True)
+def _arc(center: float, half: float, lo: np.ndarray, hi: np.ndarray) -> int:
+    """Write the arc |phi - center| <= half as intervals in [0, 2pi); return the count."""
+    if half >= math.pi:
+        lo[0] = 0.0
+        hi[0] = TWO_PI
+        return 1
+    if half <= 0.0:
+        return 0
+    a = (center - half) % TWO_PI
+    b = a + 2.0 * half
+    if b <= TWO_PI:
+        lo[0] = a
+        hi[0] = b
+        return 1
+    lo[0] = a
+    hi[0] = TWO_PI
+    lo[1] = 0.0
+    hi[1] = b - TWO_PI
+    return 2
+
+
+@nb.njit(cache=True)
+def _intersect(alo, ahi, na, blo, bhi, nb_, olo, ohi) -> int:
+    n = 0
+    for i in range(na):
+        for j in range(nb_):
+            lo = max(alo[i], blo[j])
+            hi = min(ahi[i], bhi[j])
+            if hi > lo and n < _MAXI:
+                olo[n] = lo
+                ohi[n] = hi
+                n += 1
+    return n
+
+
+@nb.njit(cache=True)
+def _level_arc(c0: float, ck: float, phik: float, level: float, above: bool, lo, hi) -> int:
+    """Arc set where ``c0 + ck cos(phi - phik) >= level`` (above) or ``<= level``."""
+    if ck < 1e-300:
+        ok = (c0 >= level) if above else (c0 <= level)
+        if ok:
+            lo[0] = 0.0
+            hi[0] = TWO_PI
+            return 1
+        return 0
+    c = (level - c0) / ck
+    if above:  # cos(phi - phik) >= c
+        if c <= -1.0:
+            return _arc(0.0, math.pi, lo, hi)
+        if c > 1.0:
+            return 0
+        return _arc(phik, math.acos(c), lo, hi)
+    # cos(phi - phik) <= c  <=>  |phi - phik - pi| <= pi - acos(c)
+    if c >= 1.0:
+        return _arc(0.0, math.pi, lo, hi)
+    if c < -1.0:
+        return 0
+    return _arc(phik + math.pi, math.pi - math.acos(c), lo, hi)
+
+
+# ---------------------------------------------------------------- closed-form arc integrals
+
+
+@nb.njit(cache=True)
+def _poly_arc_integrals(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj):
+    """Integrals of P(V), P(V) cos(phi), P(V) sin(phi) over the intervals, where
+    ``V = a + k cos(phi - phi0)`` and ``P(V) = sum poly[i] V^i`` (i <= deg).
+    ``e, cj, dj`` are scratch arrays of length >= deg + 2."""
+    # Taylor coefficients of P(a + x) by repeated synthetic division (Horner shifts)
+    for i in range(deg + 1):
+        e[i] = poly[i]
+    for j in range(deg):
+        for i in range(deg - 1, j - 1, -1):
+            e[i] += a * e[i + 1]
+    s0 = 0.0
+    sc = 0.0
+    ss = 0.0
+    cph = math.cos(phi0)
+    sph = math.sin(phi0)
+    for m in range(n):
+        pa = lo[m] - phi0
+        pb = hi[m] - phi0
+        ca, sa = math.cos(pa), math.sin(pa)
+        cb, sb = math.cos(pb), math.sin(pb)
+        cj[0] = pb - pa
+        cj[1] = sb - sa
+        cpa = ca  # cos^(j-1) at a, starting j = 2
+        cpb = cb
+        for j in range(2, deg + 2):
+            cj[j] = (cpb * sb - cpa * sa) / j + (j - 1) / j * cj[j - 2]
+            cpa *= ca
+            cpb *= cb
+        cpa = ca
+        cpb = cb
+        for j in range(deg + 1):
+            dj[j] = (cpa - cpb) / (j + 1)
+            cpa *= ca
+            cpb *= cb
+        kp = 1.0
+        for j in range(deg + 1):
+            f = e[j] * kp
+            s0 += f * cj[j]
+            sc += f * (cph * cj[j + 1] - sph * dj[j])
+            ss += f * (cph * dj[j] + sph * cj[j + 1])
+            kp *= k
+    return s0, sc, ss
+
+
+# ---------------------------------------------------------------- contact loads
+
+
+@nb.njit(cache=True)
+def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
+    """Resultant contact force and moment.
+
+    Parameters
+    ----------
+    y : (14,) state (see module docstring).
+    rings : (n, 5) array x1, r, na, nr, w (see :class:`pencore.geometry.Rings`).
+    bounds, coef, fric : layer arrays from :meth:`pencore.target.Target.kernel_arrays`.
+    eps : float
+        Half-width of the smoothed contact step (m/s); 0 for the sharp Eq. 7.
+    n_gauss : int
+        Gauss points per arc piece for the friction integral (0 skips friction).
+
+    Returns
+    -------
+    force_body : (3,) N, in the body frame.
+    moment_body : (3,) N m about the centre of mass, body frame.
+    clearance : float
+        Lowest point of the surface rings above the free surface (m); <= 0 in contact.
+    """
+    rot = quat_to_matrix(y[3:7])
+    # velocity of the centre of mass in the body frame
+    v1 = rot[0, 0] * y[7] + rot[1, 0] * y[8] + rot[2, 0] * y[9]
+    v2 = rot[0, 1] * y[7] + rot[1, 1] * y[8] + rot[2, 1] * y[9]
+    v3 = rot[0, 2] * y[7] + rot[1, 2] * y[8] + rot[2, 2] * y[9]
+    w1, w2, w3 = y[10], y[11], y[12]
+    ycm = y[1]
+    r10, r11, r12 = rot[1, 0], rot[1, 1], rot[1, 2]
+
+    f = np.zeros(3)
+    mom = np.zeros(3)
+    clearance = np.inf
+    nlay = bounds.shape[0]
+    ncoef = coef.shape[1]
+    poly = np.zeros(_MAXD)
+    se = np.zeros(_MAXD)
+    scj = np.zeros(_MAXD)
+    sdj = np.zeros(_MAXD)
+
+    l1lo = np.empty(_MAXI)
+    l1hi = np.empty(_MAXI)
+    l2lo = np.empty(_MAXI)
+    l2hi = np.empty(_MAXI)
+    blo = np.empty(_MAXI)
+    bhi = np.empty(_MAXI)
+    vlo = np.empty(_MAXI)
+    vhi = np.empty(_MAXI)
+    slo = np.empty(_MAXI)
+    shi = np.empty(_MAXI)
+    gx, gw = _gauss_table(n_gauss)
+
+    for i in range(rings.shape[0]):
+        x1 = rings[i, 0]
+        r = rings[i, 1]
+        na = rings[i, 2]
+        nr = rings[i, 3]
+        w = rings[i, 4]
+        # height of the ring points: y = Y0 + Yk cos(phi - phiy)
+        y0 = ycm + r10 * x1
+        yc = r11 * r
+        ys = r12 * r
+        yk = math.sqrt(yc * yc + ys * ys)
+        phiy = math.atan2(ys, yc)
+        low = y0 - yk
+        if low < clearance:
+            clearance = low
+        if low > bounds[0, 0]:
+            continue
+        # normal velocity: Vn = A + K cos(phi - phi0)
+        q = nr * x1 - na * r
+        av = na * v1
+        bc = nr * v2 + w3 * q
+        bs = nr * v3 - w2 * q
+        kv = math.sqrt(bc * bc + bs * bs)
+        phi0 = math.atan2(bs, bc)
+        for lay in range(nlay):
+            top = bounds[lay, 0]
+            bot = bounds[lay, 1]
+            n1 = _level_arc(y0, yk, phiy, top, False, l1lo, l1hi)
+            if n1 == 0:
+                continue
+            if bot > -np.inf:
+                n2 = _level_arc(y0, yk, phiy, bot, True, l2lo, l2hi)
+                nbase = _intersect(l1lo, l1hi, n1, l2lo, l2hi, n2, blo, bhi)
+            else:
+                nbase = n1
+                for m in range(n1):
+                    blo[m] = l1lo[m]
+                    bhi[m] = l1hi[m]
+            if nbase == 0:
+                continue
+            # --- normal stress, closed form
+            s0 = 0.0
+            sc = 0.0
+            ss = 0.0
+            deg = ncoef - 1
+            if eps <= 0.0:
+                nv = _level_arc(av, kv, phi0, 0.0, True, vlo, vhi)
+                ns = _intersect(blo, bhi, nbase, vlo, vhi, nv, slo, shi)
+                if ns > 0:
+                    for c in range(ncoef):
+                        poly[c] = coef[lay, c]
+                    a_, b_, c_ = _poly_arc_integrals(poly, deg, av, kv, phi0, slo, shi, ns, se, scj, sdj)
+                    s0 += a_
+                    sc += b_
+                    ss += c_
+            else:
+                inv = 0.5 / eps
+                for side in range(2):
+                    level = -eps if side == 0 else eps
+                    sgn = 1.0 if side == 0 else -1.0
+                    nv = _level_arc(av, kv, phi0, level, True, vlo, vhi)
+                    ns = _intersect(blo, bhi, nbase, vlo, vhi, nv, slo, shi)
+                    if ns == 0:
+                        continue
+                    # sgn * (V - level) * sigma(V) / (2 eps)
+                    for c in range(ncoef + 1):
+                        poly[c] = 0.0
+                    for c in range(ncoef):
+                        poly[c + 1] += sgn * inv * coef[lay, c]
+                        poly[c] += -sgn * inv * level * coef[lay, c]
+                    a_, b_, c_ = _poly_arc_integrals(
+                        poly, deg + 1, av, kv, phi0, slo, shi, ns, se, scj, sdj
+                    )
+                    s0 += a_
+                    sc += b_
+                    ss += c_
+            f[0] -= w * na * s0
+            f[1] -= w * nr * sc
+            f[2] -= w * nr * ss
+            mom[1] += w * q * ss
+            mom[2] -= w * q * sc
+            # --- friction, Gauss quadrature on the loaded arcs
+            if n_gauss > 0 and fric[lay, fric.shape[1] - 1, 1] + fric[lay, 0, 1] > 0.0:
+                level = -eps if eps > 0.0 else 0.0
+                nv = _level_arc(av, kv, phi0, level, True, vlo, vhi)
+                ns = _intersect(blo, bhi, nbase, vlo, vhi, nv, slo, shi)
+                _friction_ring(
+                    f, mom, slo, shi, ns, gx, gw, x1, r, na, nr, w, v1, v2, v3, w1, w2, w3,
+                    coef, lay, fric, eps,
+                )
+    return f, mom, clearance
+
+
+@nb.njit(cache=True)
+def _gauss_table(n):
+    if n <= 0:
+        return np.zeros(1), np.zeros(1)
+    return _leggauss(n)
+
+
+@nb.njit(cache=True)
+def _leggauss(n):
+    """Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n)."""
+    x = np.empty(n)
+    w = np.empty(n)
+    for i in range(n):
+        z = math.cos(math.pi * (i + 0.75) / (n + 0.5))
+        for _ in range(100):
+            p1 = 1.0
+            p2 = 0.0
+            for j in range(1, n + 1):
+                p3 = p2
+                p2 = p1
+                p1 = ((2.0 * j - 1.0) * z * p2 - (j - 1.0) * p3) / j
+            pp = n * (z * p1 - p2) / (z * z - 1.0)
+            z1 = z
+            z = z1 - p1 / pp
+            if abs(z - z1) < 1e-15:
+                break
+        x[i] = -z
+        w[i] = 2.0 / ((1.0 - z * z) * pp * pp)
+    return x, w
+
+
+@nb.njit(cache=True)
+def _friction_ring(f, mom, lo, hi, n, gx, gw, x1, r, na, nr, w, v1, v2, v3, w1, w2, w3,
+                   coef, lay, fric, eps):
+    ncoef = coef.shape[1]
+    nt = fric.shape[1]
+    reg = eps if eps > 0.0 else 1e-9
+    for m in range(n):
+        length = hi[m] - lo[m]
+        npieces = int(math.ceil(length / (0.25 * math.pi)))
+        h = length / npieces
+        for p in range(npieces):
+            a = lo[m] + p * h
+            for g in range(gx.shape[0]):
+                phi = a + 0.5 * h * (gx[g] + 1.0)
+                dphi = 0.5 * h * gw[g]
+                c = math.cos(phi)
+                s = math.sin(phi)
+                # point, normal, velocity (body frame)
+                px, py, pz = x1, r * c, r * s
+                nx, ny, nz = na, nr * c, nr * s
+                ux = v1 + w2 * pz - w3 * py
+                uy = v2 + w3 * px - w1 * pz
+                uz = v3 + w1 * py - w2 * px
+                vn = ux * nx + uy * ny + uz * nz
+                if eps > 0.0:
+                    hw = min(max((vn + eps) / (2.0 * eps), 0.0), 1.0)
+                else:
+                    hw = 1.0 if vn >= 0.0 else 0.0
+                if hw == 0.0:
+                    continue
+                sig = 0.0
+                vp = 1.0
+                for k in range(ncoef):
+                    sig += coef[lay, k] * vp
+                    vp *= vn
+                tx = ux - vn * nx
+                ty = uy - vn * ny
+                tz = uz - vn * nz
+                vt = math.sqrt(tx * tx + ty * ty + tz * tz)
+                # mu(vt): piecewise linear table, constant beyond the ends
+                if vt <= fric[lay, 0, 0]:
+                    mu = fric[lay, 0, 1]
+                elif vt >= fric[lay, nt - 1, 0]:
+                    mu = fric[lay, nt - 1, 1]
+                else:
+                    mu = fric[lay, nt - 1, 1]
+                    for k in range(nt - 1):
+                        if vt < fric[lay, k + 1, 0]:
+                            t = (vt - fric[lay, k, 0]) / (fric[lay, k + 1, 0] - fric[lay, k, 0])
+                            mu = fric[lay, k, 1] + t * (fric[lay, k + 1, 1] - fric[lay, k, 1])
+                            break
+                scale = -mu * hw * sig * w * dphi / math.sqrt(vt * vt + reg * reg)
+                fx, fy, fz = scale * tx, scale * ty, scale * tz
+                f[0] += fx
+                f[1] += fy
+                f[2] += fz
+                mom[0] += py * fz - pz * fy
+                mom[1] += pz * fx - px * fz
+                mom[2] += px * fy - py * fx
+
+
+# ---------------------------------------------------------------- equations of motion
+
+
+@nb.njit(cache=True)
+def rhs(y, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss):
+    """Time derivative of the state (Newton, Euler with I2 = I3, quaternion kinematics,
+    and the power of the contact stresses). Returns ``(dy, clearance)``."""
+    fb, mb, clearance = contact_loads(y, rings, bounds, coef, fric, eps, n_gauss)
+    rot = quat_to_matrix(y[3:7])
+    dy = np.empty(14)
+    dy[0] = y[7]
+    dy[1] = y[8]
+    dy[2] = y[9]
+    qw, qx, qy, qz = y[3], y[4], y[5], y[6]
+    w1, w2, w3 = y[10], y[11], y[12]
+    # dq/dt = 0.5 q (x) (0, w)
+    dy[3] = 0.5 * (-qx * w1 - qy * w2 - qz * w3)
+    dy[4] = 0.5 * (qw * w1 + qy * w3 - qz * w2)
+    dy[5] = 0.5 * (qw * w2 + qz * w1 - qx * w3)
+    dy[6] = 0.5 * (qw * w3 + qx * w2 - qy * w1)
+    for k in range(3):
+        dy[7 + k] = (rot[k, 0] * fb[0] + rot[k, 1] * fb[1] + rot[k, 2] * fb[2]) / mass + gravity[k]
+    i1, i2, i3 = inertia[0], inertia[1], inertia[2]
+    dy[10] = (mb[0] + (i2 - i3) * w2 * w3) / i1
+    dy[11] = (mb[1] + (i3 - i1) * w3 * w1) / i2
+    dy[12] = (mb[2] + (i1 - i2) * w1 * w2) / i3
+    # power of the contact stresses: F . v + M . w (body frame)
+    v1 = rot[0, 0] * y[7] + rot[1, 0] * y[8] + rot[2, 0] * y[9]
+    v2 = rot[0, 1] * y[7] + rot[1, 1] * y[8] + rot[2, 1] * y[9]
+    v3 = rot[0, 2] * y[7] + rot[1, 2] * y[8] + rot[2, 2] * y[9]
+    dy[13] = fb[0] * v1 + fb[1] * v2 + fb[2] * v3 + mb[0] * w1 + mb[1] * w2 + mb[2] * w3
+    return dy, clearance
