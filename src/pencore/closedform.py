@@ -1,0 +1,133 @@
+"""Closed-form and one-dimensional references for normal, frictionless penetration.
+
+These verify the 3-D solver; they are not part of it.
+
+For a frictionless body at zero yaw moving along its axis at speed ``V`` into a
+half-space with ``sigma_n = a0 + a1 Vn + a2 Vn^2`` (Vn = V na on the nose), the axial
+force on the embedded part of the nose (tip depth ``z``) is::
+
+    F(z, V) = a0 A(z) + a1 V B1(z) + a2 V^2 B2(z),
+    A(z) = pi r(z)^2,  Bk(z) = int_0^z 2 pi r na^(k+1) dl
+
+(the shank carries no axial load: na = 0 there, and its a0 cancels around the ring).
+Fully embedded, ``A = pi a^2`` and ``B2 = pi a^2 N*`` with the nose factor ``N*``, giving
+the paper guide's ``F = pi a^2 (a0 + N* a2 V^2)`` and, for ``a1 = 0``, the tunnel-phase
+depth ``(m / (2 pi a^2 N* a2)) ln(1 + N* a2 V1^2 / a0)``.
+
+The nose-entry phase is integrated exactly: with ``a1 = 0``, ``m d(V^2)/dz = -2 F`` is
+linear in ``V^2`` and solved by quadrature (:func:`nose_entry_speed`), so
+:func:`depth` is the exact depth of the DAFL model for normal impact, up to quadrature
+error, including the entry phase.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .geometry import Projectile
+from .target import Medium
+
+__all__ = ["axial_force", "tunnel_depth", "nose_entry_speed", "depth"]
+
+
+def _coeffs(medium: Medium) -> tuple[float, float]:
+    c = list(medium.coefficients) + [0.0, 0.0, 0.0]
+    if any(x != 0.0 for x in c[3:]) or c[1] != 0.0:
+        raise ValueError("closed forms need sigma_n = a0 + a2 Vn^2 (a1 = 0, no higher terms)")
+    if not medium.frictionless:
+        raise ValueError("closed forms are frictionless")
+    return c[0], c[2]
+
+
+def axial_force(projectile: Projectile, medium: Medium, velocity: float) -> float:
+    """Axial resistance (N) on the fully embedded nose at speed ``velocity`` (m/s)."""
+    a0, a2 = _coeffs(medium)
+    a = projectile.radius
+    return math.pi * a * a * (a0 + projectile.nose_factor() * a2 * velocity**2)
+
+
+def tunnel_depth(projectile: Projectile, medium: Medium, v1: float) -> float:
+    """Distance (m) travelled after full nose embedment from speed ``v1`` (m/s) to rest."""
+    a0, a2 = _coeffs(medium)
+    a = projectile.radius
+    m = projectile.mass_properties().mass
+    ns = projectile.nose_factor()
+    if a0 == 0.0:
+        raise ValueError("a0 = 0: the projectile never stops")
+    return m / (2.0 * math.pi * a * a * ns * a2) * math.log1p(ns * a2 * v1 * v1 / a0)
+
+
+def _entry_profile(projectile: Projectile, n: int = 4000) -> tuple[np.ndarray, ...]:
+    """Tip depth z, A(z), B2(z) on a fine grid over the nose length."""
+    rings = projectile.rings(n_nose=n, n_shank=1, n_face=max(1, n // 10))
+    sel = rings.part != 1
+    sel &= rings.na > 0  # nose surface and blunt face, not the rear face
+    x1 = rings.x1[sel]
+    mp = projectile.mass_properties()
+    s = mp.lc - x1  # distance from the tip
+    order = np.argsort(s, kind="stable")
+    s, na, w = s[order], rings.na[sel][order], rings.w[sel][order]
+    # band contributions, accumulated by tip depth (a band is loaded once its axial
+    # position is below the surface)
+    da = 2.0 * np.pi * w * na  # d(projected area) = 2 pi r dl na
+    db = 2.0 * np.pi * w * na**3
+    return s, np.cumsum(da), np.cumsum(db)
+
+
+def nose_entry_speed(projectile: Projectile, medium: Medium, velocity: float) -> tuple[float, float]:
+    """Speed (m/s) when the nose is fully embedded, and the tip depth (m) reached.
+
+    Solves ``m d(V^2)/dz = -2 (a0 A(z) + a2 B2(z) V^2)`` over the nose length. If the
+    projectile stops before full embedment, returns ``(0, z_stop)``.
+    """
+    a0, a2 = _coeffs(medium)
+    m = projectile.mass_properties().mass
+    z, area, b2 = _entry_profile(projectile)
+    ln = projectile.nose_length
+    if ln == 0.0:
+        return velocity, 0.0
+    # piecewise-constant A, B2 between band positions; exact exponential update of V^2
+    v2 = velocity * velocity
+    zprev = 0.0
+    for k in range(len(z)):
+        dz = z[k] - zprev
+        if dz > 0.0:
+            ak = area[k - 1] if k > 0 else 0.0
+            bk = b2[k - 1] if k > 0 else 0.0
+            v2, stopped_at = _advance(v2, ak, bk, a0, a2, m, dz)
+            if stopped_at is not None:
+                return 0.0, zprev + stopped_at
+        zprev = z[k]
+    dz = ln - zprev
+    if dz > 0.0:
+        v2, stopped_at = _advance(v2, area[-1], b2[-1], a0, a2, m, dz)
+        if stopped_at is not None:
+            return 0.0, zprev + stopped_at
+    return math.sqrt(v2), ln
+
+
+def _advance(v2, a, b, a0, a2, m, dz):
+    """V^2 after dz with constant A = a, B2 = b; or the distance to rest."""
+    k = 2.0 * a2 * b / m
+    c = 2.0 * a0 * a / m
+    if k > 0.0:
+        vinf = -c / k
+        new = vinf + (v2 - vinf) * math.exp(-k * dz)
+        if new <= 0.0:
+            return 0.0, math.log((v2 - vinf) / (-vinf)) / k
+        return new, None
+    new = v2 - c * dz
+    if new <= 0.0:
+        return 0.0, v2 / c if c > 0 else dz
+    return new, None
+
+
+def depth(projectile: Projectile, medium: Medium, velocity: float) -> float:
+    """Tip depth (m) at rest for normal, zero-yaw, frictionless impact: exact nose-entry
+    phase (:func:`nose_entry_speed`) plus the tunnel-phase closed form."""
+    v1, z = nose_entry_speed(projectile, medium, velocity)
+    if v1 == 0.0:
+        return z
+    return z + tunnel_depth(projectile, medium, v1)
