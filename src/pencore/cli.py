@@ -1,0 +1,354 @@
+"""Command-line interface: ``pencore simulate | fit-table3 | list``.
+
+Every user error ends the program with exit status 2 and a single line on stderr,
+``pencore: error: <message>``, naming the offending value and what is allowed; a solver
+failure ends it with status 1 and a single line. ``simulate --out`` writes its NetCDF
+file atomically (temporary file in the same directory, then :func:`os.replace`), so a
+failed or interrupted run never leaves a partial or stale-looking output behind.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import sys
+import tempfile
+import time
+from collections.abc import Callable, Sequence
+from pathlib import Path
+from typing import Any, NoReturn
+
+from . import __version__
+from .library import InputError
+
+__all__ = ["main", "build_parser"]
+
+PROG = "pencore"
+
+
+class _Failure(Exception):
+    """An error to report as one line with a given exit status."""
+
+    def __init__(self, message: str, status: int) -> None:
+        super().__init__(message)
+        self.status = status
+
+
+class _Parser(argparse.ArgumentParser):
+    """ArgumentParser whose errors are one line: ``pencore: error: ...``."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"{PROG}: error: {_one_line(message)} (see '{self.prog} --help')\n")
+
+
+def _one_line(text: str) -> str:
+    return " ".join(str(text).split())
+
+
+# ---------------------------------------------------------------- argument types
+
+
+def _number(allowed: str, ok: Callable[[float], bool]) -> Callable[[str], float]:
+    """An argparse type: a float for which ``ok`` holds, else an error naming the value
+    and ``allowed``."""
+
+    def conv(text: str) -> float:
+        try:
+            v = float(text)
+        except ValueError:
+            v = math.nan
+        if not (math.isfinite(v) and ok(v)):
+            raise argparse.ArgumentTypeError(f"must be {allowed}, got {text!r}")
+        return v
+
+    return conv
+
+
+def _finite(unit: str) -> Callable[[str], float]:
+    return _number(f"a finite number of {unit}", lambda v: True)
+
+
+_velocity = _number("a positive finite number of m/s", lambda v: v > 0.0)
+_obliquity = _number("a number of degrees in [0, 90)", lambda v: 0.0 <= v < 90.0)
+
+
+# ---------------------------------------------------------------- parser
+
+
+_SIM_SUMMARY = """\
+simulate options (all SI, angles in degrees):
+  --projectile NAME|FILE  p1..p4, validation projectiles, or a projectile YAML file
+  --target NAME|FILE      soil, concrete, aluminium, or a target YAML file
+  --velocity M_S          impact speed (m/s), > 0
+  --obliquity DEG         axis angle from the target normal (deg), in [0, 90)
+  --yaw DEG               velocity angle minus axis angle (deg)
+  --omega RAD_S           initial angular velocity about +z (rad/s)
+  --start X Y Z           initial nose-tip position (m)
+  --stop-at-reversal      end the run at the first trajectory reversal
+  --out FILE.nc           write the full trajectory as NetCDF
+Run 'pencore simulate --help' for details; 'pencore list' for the named projectiles
+and targets.
+"""
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """Build the ``pencore`` argument parser.
+
+    Returns
+    -------
+    argparse.ArgumentParser
+        Parser with the ``simulate``, ``fit-table3`` and ``list`` subcommands.
+    """
+    parser = _Parser(
+        prog=PROG,
+        description="3-D rigid-projectile penetration with the differential area force "
+        "law (Li & Flores-Johnson, IJIE 2011). SI units throughout (m, kg, s, m/s, "
+        "rad/s); angles in degrees.",
+        epilog=_SIM_SUMMARY,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("--version", action="version", version=f"{PROG} {__version__}",
+                        help="print the pencore version and exit")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+
+    sim = sub.add_parser(
+        "simulate",
+        help="simulate one impact and print a summary (m, m/s, deg, rad/s)",
+        description="Simulate one impact of a rigid projectile on a target and print a "
+        "summary: penetration depth (m), nose-tip path length below the surface (m), "
+        "outcome, reversal, final trajectory slope dy/dx, final deviation of the velocity "
+        "from the target normal (deg), run time (s) and number of steps. The target is "
+        "y <= 0 and the projectile moves towards +x and -y.",
+    )
+    sim.add_argument("--projectile", required=True, metavar="NAME|FILE",
+                     help="projectile name (see 'pencore list'; lengths in m, masses in "
+                     "kg) or a projectile YAML file (diameter and lengths in m, densities "
+                     "in kg/m^3)")
+    sim.add_argument("--target", required=True, metavar="NAME|FILE",
+                     help="target name (soil, concrete, aluminium) or a target YAML file "
+                     "(resistance coefficients in Pa, Pa s/m, Pa s^2/m^2, ...)")
+    sim.add_argument("--velocity", required=True, type=_velocity, metavar="M_S",
+                     help="impact speed in m/s; must be > 0 and finite")
+    sim.add_argument("--obliquity", type=_obliquity, default=0.0, metavar="DEG",
+                     help="obliquity in deg: angle between the projectile axis and the "
+                     "target normal, towards +x; 0 <= DEG < 90 (default: 0 deg)")
+    sim.add_argument("--yaw", type=_finite("deg"), default=0.0, metavar="DEG",
+                     help="yaw in deg: velocity angle minus axis angle; |obliquity + yaw| "
+                     "must stay below 90 deg (default: 0 deg)")
+    sim.add_argument("--omega", type=_finite("rad/s"), default=0.0, metavar="RAD_S",
+                     help="initial angular velocity about the centre of mass, about +z, in "
+                     "rad/s; positive turns the nose towards +x (default: 0 rad/s)")
+    sim.add_argument("--start", type=_finite("m"), nargs=3, default=None,
+                     metavar=("X", "Y", "Z"),
+                     help="initial nose-tip position in m (default: tip at x = z = 0, "
+                     "body just touching the surface y = 0 m)")
+    sim.add_argument("--stop-at-reversal", action="store_true",
+                     help="end the run at the first reversal of the trajectory (dy/dx "
+                     "changes sign; outcome 'reversed')")
+    sim.add_argument("--out", metavar="FILE.nc", default=None,
+                     help="write the trajectory (time in s, positions in m, velocities in "
+                     "m/s, angles in deg, rates in rad/s) to this NetCDF file; its "
+                     "directory must exist and be writable; written atomically")
+
+    sub.add_parser(
+        "fit-table3",
+        help="fit the p1..p4 geometry (diameter and shank length in m) to the paper's "
+        "Table 3 (masses in kg, Lc/L)",
+        description="Fit a solid CRH-3 ogive + cylinder (diameter and shank length in "
+        "m) to the masses (kg) and Lc/L of paper Table 3, and print the residuals "
+        "(kg and dimensionless). Takes no options.",
+    )
+    sub.add_parser(
+        "list",
+        help="list the named projectiles (mass in kg, diameter in mm) and targets "
+        "(coefficients in Pa, Pa s/m, Pa s^2/m^2)",
+        description="List the named projectiles (mass in kg, Lc/L = tip-to-centre-of-"
+        "mass distance over length, diameter in mm, source) and targets (resistance "
+        "coefficients a0 in Pa, a1 in Pa s/m, a2 in Pa s^2/m^2, source). Takes no options.",
+    )
+    return parser
+
+
+# ---------------------------------------------------------------- helpers
+
+
+def _check_output(out: str) -> Path:
+    """Check that ``out`` can be written, before any computation."""
+    path = Path(out)
+    if path.suffix != ".nc":
+        raise _Failure(f"output file {out!r} must end in .nc", 2)
+    if path.is_dir():
+        raise _Failure(f"output file {out!r} is a directory; give a FILE.nc path", 2)
+    parent = path.parent
+    if not parent.is_dir():
+        raise _Failure(
+            f"output directory {str(parent)!r} of {out!r} does not exist; create it first", 2
+        )
+    # a real probe: os.access alone is fooled by root, read-only mounts, ACLs
+    try:
+        fd, probe = tempfile.mkstemp(dir=parent, prefix=f".{path.name}.", suffix=".probe")
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as exc:
+        raise _Failure(
+            f"output directory {str(parent)!r} of {out!r} is not writable: {exc.strerror}", 2
+        ) from None
+    return path
+
+
+def _write_atomic(ds: Any, path: Path) -> None:
+    """Write ``ds`` to ``path`` via a temporary file in the same directory."""
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    os.close(fd)
+    try:
+        ds.to_netcdf(tmp, engine="netcdf4")
+        # mkstemp makes the file 0600; give it the usual permissions of a new file
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except FileNotFoundError:
+            pass
+        raise
+
+
+def _resolve(kind: str, spec: str, getter: Callable[[str], Any]) -> Any:
+    """Resolve a name or YAML file; every failure becomes an :class:`InputError`."""
+    try:
+        obj = getter(spec)
+        if kind == "projectile":
+            obj.mass_properties()  # catches bodies without volume before the run
+        return obj
+    except InputError:
+        raise
+    except UnicodeDecodeError:
+        raise InputError(f"{kind} file {spec!r} is not a text (UTF-8) YAML file") from None
+    except (ValueError, TypeError, KeyError, AttributeError, IndexError) as exc:
+        raise InputError(f"invalid {kind} {spec!r}: {exc}") from None
+
+
+def _fmt_slope(s: float) -> str:
+    if not math.isfinite(s) or abs(s) > 1e6:
+        return f"{s:.4g} (path essentially vertical)"
+    return f"{s:.4g}"
+
+
+# ---------------------------------------------------------------- commands
+
+
+def _cmd_simulate(args: argparse.Namespace) -> int:
+    from .library import get_projectile, get_target
+    from .solver import simulate
+
+    out = _check_output(args.out) if args.out is not None else None
+    projectile = _resolve("projectile", args.projectile, get_projectile)
+    target = _resolve("target", args.target, get_target)
+    t0 = time.perf_counter()
+    ds = simulate(
+        projectile, target, args.velocity, args.obliquity, args.yaw, args.omega,
+        start=None if args.start is None else tuple(args.start),
+        stop_at_reversal=args.stop_at_reversal,
+    )
+    total = time.perf_counter() - t0
+    if out is not None:
+        try:
+            _write_atomic(ds, out)
+        except OSError as exc:
+            raise _Failure(f"cannot write output file {str(out)!r}: {exc}", 1) from None
+    a = ds.attrs
+    rows = [
+        ("projectile", f"{a['projectile']} ({a['mass_kg']:.4g} kg, "
+                       f"{a['length_m']:.4g} m long, Lc/L = {a['lc_over_l']:.3f})"),
+        ("target", str(a["target"])),
+        ("impact", f"{args.velocity:g} m/s, obliquity {args.obliquity:g} deg, "
+                   f"yaw {args.yaw:g} deg, omega {args.omega:g} rad/s"),
+        ("penetration depth", f"{float(ds['penetration_depth']):.6g} m"),
+        ("tip path length below surface", f"{float(ds['path_length']):.6g} m"),
+        ("outcome", str(a["outcome"])),
+        ("reversed", "yes" if a["reversed"] else "no"),
+        ("final slope dy/dx", _fmt_slope(float(ds["final_slope"]))),
+        ("final deviation from normal", f"{float(ds['final_deviation']):.4g} deg"),
+        ("run time", f"{a['wall_time_s']:.3g} s integration, {total:.3g} s total"),
+        ("steps", str(a["n_steps"])),
+    ]
+    if out is not None:
+        rows.append(("output", str(out)))
+    width = max(len(k) for k, _ in rows)
+    for k, v in rows:
+        print(f"{k + ':':<{width + 1}} {v}")
+    return 0
+
+
+def _cmd_fit_table3(args: argparse.Namespace) -> int:
+    from .library import table3_fit
+
+    print(table3_fit().report())
+    return 0
+
+
+def _cmd_list(args: argparse.Namespace) -> int:
+    from .library import MEDIA, get_projectile, projectile_names
+
+    print("projectiles:")
+    print(f"  {'name':<18} {'mass_kg':>9} {'Lc/L':>6} {'diameter_mm':>11}  source")
+    for name in projectile_names():
+        p = get_projectile(name)
+        mp = p.mass_properties()
+        print(f"  {name:<18} {mp.mass:9.3f} {mp.lc_over_l:6.3f} {p.diameter * 1e3:11.2f}"
+              f"  {p.source}")
+    print()
+    print("targets (normal stress = a0 + a1 Vn + a2 Vn^2; a0 Pa, a1 Pa s/m, a2 Pa s^2/m^2):")
+    for name in sorted(MEDIA):
+        m = MEDIA[name]
+        coef = ", ".join(f"a{i}={c:.4g}" for i, c in enumerate(m.coefficients))
+        fric = "frictionless" if m.frictionless else f"friction mu={m.friction_mu}"
+        print(f"  {name:<10} {coef}; density {m.density:g} kg/m^3; {fric}")
+        print(f"  {'':<10} source: {m.source}")
+    return 0
+
+
+_COMMANDS: dict[str, Callable[[argparse.Namespace], int]] = {
+    "simulate": _cmd_simulate,
+    "fit-table3": _cmd_fit_table3,
+    "list": _cmd_list,
+}
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the ``pencore`` command line.
+
+    Parameters
+    ----------
+    argv : sequence of str, optional
+        Arguments without the program name; default ``sys.argv[1:]``.
+
+    Returns
+    -------
+    int
+        Exit status: 0 success, 1 solver or write failure, 2 bad input.
+    """
+    from .solver import SolverError
+
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # --help, --version, usage errors
+        return exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 2)
+    try:
+        return _COMMANDS[args.command](args)
+    except _Failure as exc:
+        msg, status = str(exc), exc.status
+    except InputError as exc:
+        msg, status = str(exc), 2
+    except SolverError as exc:
+        msg, status = f"solver failed: {exc}", 1
+    print(f"{PROG}: error: {_one_line(msg)}", file=sys.stderr)
+    return status
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
