@@ -76,7 +76,9 @@ def _entry_profile(projectile: Projectile, n: int = 4000) -> tuple[np.ndarray, .
     return s, np.cumsum(da), np.cumsum(db)
 
 
-def nose_entry_speed(projectile: Projectile, medium: Medium, velocity: float) -> tuple[float, float]:
+def nose_entry_speed(
+    projectile: Projectile, medium: Medium, velocity: float
+) -> tuple[float, float]:
     """Speed (m/s) when the nose is fully embedded, and the tip depth (m) reached.
 
     Solves ``m d(V^2)/dz = -2 (a0 A(z) + a2 B2(z) V^2)`` over the nose length. If the

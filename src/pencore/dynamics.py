@@ -58,15 +58,17 @@ def quat_to_matrix(q: np.ndarray) -> np.ndarray:
     n = math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3])
     w, x, y, z = q[0] / n, q[1] / n, q[2] / n, q[3] / n
     r = np.empty((3, 3))
-    r[0, 0] = 1 - 2 * (y * y + z * z)
+    # diagonal as w^2 + x^2 - y^2 - z^2 (not 1 - 2(y^2 + z^2)): exact zeros for the
+    # quarter turns, so an axisymmetric impact starts exactly on axis
+    r[0, 0] = w * w + x * x - y * y - z * z
     r[0, 1] = 2 * (x * y - w * z)
     r[0, 2] = 2 * (x * z + w * y)
     r[1, 0] = 2 * (x * y + w * z)
-    r[1, 1] = 1 - 2 * (x * x + z * z)
+    r[1, 1] = w * w - x * x + y * y - z * z
     r[1, 2] = 2 * (y * z - w * x)
     r[2, 0] = 2 * (x * z - w * y)
     r[2, 1] = 2 * (y * z + w * x)
-    r[2, 2] = 1 - 2 * (x * x + y * y)
+    r[2, 2] = w * w - x * x - y * y + z * z
     return r
 
 
@@ -154,6 +156,19 @@ def _poly_arc_integrals(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj):
     cph = math.cos(phi0)
     sph = math.sin(phi0)
     for m in range(n):
+        if lo[m] == 0.0 and hi[m] == TWO_PI:
+            # whole ring: exact integrals (odd powers and the sine moments vanish), so
+            # round-off cannot create a lateral load on an axisymmetric state
+            for j in range(deg + 2):
+                cj[j] = _full_circle_cos_power(j)
+            kp = 1.0
+            for j in range(deg + 1):
+                f = e[j] * kp
+                s0 += f * cj[j]
+                sc += f * cph * cj[j + 1]
+                ss += f * sph * cj[j + 1]
+                kp *= k
+            continue
         pa = lo[m] - phi0
         pb = hi[m] - phi0
         ca, sa = math.cos(pa), math.sin(pa)
@@ -180,6 +195,17 @@ def _poly_arc_integrals(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj):
             ss += f * (cph * dj[j] + sph * cj[j + 1])
             kp *= k
     return s0, sc, ss
+
+
+@nb.njit(cache=True)
+def _full_circle_cos_power(j):
+    """Integral of cos^j over a full turn: 0 for odd j, 2 pi (j-1)!!/j!! for even j."""
+    if j % 2 == 1:
+        return 0.0
+    v = TWO_PI
+    for i in range(2, j + 1, 2):
+        v *= (i - 1.0) / i
+    return v
 
 
 # ---------------------------------------------------------------- contact loads
@@ -248,6 +274,10 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         yc = r11 * r
         ys = r12 * r
         yk = math.sqrt(yc * yc + ys * ys)
+        if yk < 1e-12 * r:
+            # ring parallel to the surface: a round-off tilt would orient its partial
+            # contact arc at random, so it is either wholly in or wholly out
+            yk = 0.0
         phiy = math.atan2(ys, yc)
         low = y0 - yk
         if low < clearance:
@@ -288,7 +318,9 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
                 if ns > 0:
                     for c in range(ncoef):
                         poly[c] = coef[lay, c]
-                    a_, b_, c_ = _poly_arc_integrals(poly, deg, av, kv, phi0, slo, shi, ns, se, scj, sdj)
+                    a_, b_, c_ = _poly_arc_integrals(
+                        poly, deg, av, kv, phi0, slo, shi, ns, se, scj, sdj
+                    )
                     s0 += a_
                     sc += b_
                     ss += c_

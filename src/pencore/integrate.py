@@ -21,12 +21,36 @@ centre-of-mass velocity turns towards the surface while in the target and
 
 from __future__ import annotations
 
+import hashlib
 import math
+from pathlib import Path
 
 import numba as nb
 import numpy as np
 
+from . import dynamics
 from .dynamics import rhs
+
+
+def _invalidate_stale_cache() -> None:
+    """numba keys a cached function on its own file only; ``integrate`` inlines the
+    kernel of :mod:`pencore.dynamics`, so drop its cache when that kernel has changed."""
+    here = Path(__file__)
+    cache_dir = here.parent / "__pycache__"
+    digest = hashlib.sha256(Path(dynamics.__file__).read_bytes()).hexdigest()
+    stamp = cache_dir / "integrate.kernel-hash"
+    try:
+        if stamp.exists() and stamp.read_text() == digest:
+            return
+        for f in cache_dir.glob("integrate.*.nb[ic]"):
+            f.unlink()
+        cache_dir.mkdir(exist_ok=True)
+        stamp.write_text(digest)
+    except OSError:  # read-only install: numba falls back to compiling in memory
+        pass
+
+
+_invalidate_stale_cache()
 
 OUTCOMES = ("stopped", "exited", "time_limit", "reversed", "step_limit")
 _D = 1.0 / (2.0 + math.sqrt(2.0))

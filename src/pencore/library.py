@@ -275,11 +275,18 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
         shank = d.get("shank", [])
         if isinstance(shank, dict):
             shank = [shank]
+        if not isinstance(shank, list) or not all(isinstance(c, dict) for c in shank):
+            raise InputError(
+                f"{what}: 'shank' must be a list of mappings with length and density, "
+                f"got {shank!r}"
+            )
         cyl = tuple(
             Cylinder(_num(c, "length", what + " shank"), _num(c, "density", what + " shank"))
             for c in shank
         )
-        return Projectile(name, diameter, nose, cyl, source=str(d.get("source", "user file")))
+        p = Projectile(name, diameter, nose, cyl, source=str(d.get("source", "user file")))
+        p.mass_properties()  # a body with no volume fails here, not later in a run
+        return p
     except GeometryError as exc:
         raise InputError(f"{what}: {exc}") from None
 
@@ -320,6 +327,8 @@ def target_from_dict(d: dict[str, Any]) -> Target:
     what = f"target {name!r}"
     try:
         if "layers" in d:
+            if not isinstance(d["layers"], list) or not d["layers"]:
+                raise InputError(f"{what}: 'layers' must be a non-empty list, got {d['layers']!r}")
             layers = []
             for k, lay in enumerate(d["layers"]):
                 if not isinstance(lay, dict) or "medium" not in lay:
@@ -328,6 +337,8 @@ def target_from_dict(d: dict[str, Any]) -> Target:
                 layers.append(Layer(_medium_from(lay["medium"], what), th))
             return Target(name, tuple(layers))
         return Target(name, (Layer(_medium_from(d, what)),))
+    except InputError:
+        raise
     except TargetError as exc:
         raise InputError(str(exc)) from None
     except (TypeError, ValueError) as exc:
@@ -336,9 +347,11 @@ def target_from_dict(d: dict[str, Any]) -> Target:
 
 def _load_yaml(path: Path, what: str) -> dict[str, Any]:
     try:
-        text = path.read_text()
+        text = path.read_text(encoding="utf-8")
     except OSError as exc:
         raise InputError(f"cannot read {what} file {str(path)!r}: {exc.strerror}") from None
+    except UnicodeDecodeError:
+        raise InputError(f"{what} file {str(path)!r} is not a UTF-8 text (YAML) file") from None
     try:
         data = yaml.safe_load(text)
     except yaml.YAMLError as exc:

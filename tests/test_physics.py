@@ -1,0 +1,223 @@
+"""The solver against closed forms, symmetries, energy and its own convergence."""
+
+import math
+
+import numpy as np
+import pytest
+import xarray as xr
+from scipy.interpolate import CubicHermiteSpline
+
+import pencore
+from pencore import closedform
+from pencore.dynamics import contact_loads
+from pencore.geometry import ConeNose, Cylinder, OgiveNose, Projectile
+from pencore.library import MEDIA
+from pencore.solver import _axis_quaternion, prepare
+from pencore.target import Layer, Medium, Target
+
+SOIL = MEDIA["soil"]
+# Symmetries hold exactly for the equations but only to the integration error for two
+# runs whose adaptive step sequences differ at round-off level; they are checked with
+# tight steps so that a defect in the physics (not the tolerance) would show.
+TIGHT = dict(rtol=1e-8, max_travel=0.01)
+NOSES = {
+    "ogive_crh3": OgiveNose(3.0, 7850.0),
+    "hemisphere": OgiveNose(0.5, 7850.0),
+    "cone_30": ConeNose(math.radians(30.0), 7850.0),
+}
+
+
+def _body(nose):
+    return Projectile("t", 0.095, nose, (Cylinder(0.5, 5150.0),))
+
+
+def _embedded_state(velocity):
+    """Axis along -y, moving along the axis, centre of mass 3 m deep."""
+    y = np.zeros(14)
+    y[3:7] = _axis_quaternion(0.0)
+    y[1] = -3.0
+    y[8] = -velocity
+    return y
+
+
+@pytest.mark.parametrize("name", list(NOSES))
+@pytest.mark.parametrize("velocity", [100.0, 800.0, 2000.0])
+def test_axial_force_equals_nose_factor_closed_form(name, velocity):
+    p = _body(NOSES[name])
+    pr = prepare(p, "soil")
+    fb, mb, _ = contact_loads(_embedded_state(velocity), pr.rings, pr.bounds, pr.coef, pr.fric,
+                              pr.numerics.eps, 0)
+    exact = closedform.axial_force(p, SOIL, velocity)
+    assert -fb[0] == pytest.approx(exact, rel=5e-3)
+    # no lateral force or moment at zero angle of attack
+    assert abs(fb[1]) + abs(fb[2]) < 1e-6 * exact
+    assert np.abs(mb).max() < 1e-6 * exact
+
+
+@pytest.mark.parametrize("name", list(NOSES))
+@pytest.mark.parametrize("velocity", [280.0, 1200.0])
+def test_normal_depth_matches_closed_form(name, velocity):
+    """Reference: the exact 1-D DAFL solution (nose-entry phase integrated exactly by
+    quadrature, then the log formula), see pencore.closedform."""
+    p = _body(NOSES[name])
+    ds = pencore.simulate(p, "soil", velocity)
+    ref = closedform.depth(p, SOIL, velocity)
+    assert float(ds.penetration_depth) == pytest.approx(ref, rel=2e-3)
+    assert ds.attrs["outcome"] == "stopped"
+
+
+def test_axisymmetric_normal_impact_stays_on_axis():
+    ds = pencore.simulate("p2", "soil", 1000.0)
+    assert np.abs(ds.tip_x.values).max() < 1e-9
+    assert np.abs(ds.tip_z.values).max() < 1e-9
+    assert ds.attrs["reversed"] == 0
+
+
+def _on_grid(ds, t, name):
+    """Centre-of-mass coordinate ``cm_x``/``cm_y``/``cm_z`` at times ``t``: cubic Hermite
+    interpolation with the saved velocities (O(h^4); the two runs' step grids differ
+    at round-off level, so linear interpolation would dominate the comparison)."""
+    vel = {"cm_x": "vel_x", "cm_y": "vel_y", "cm_z": "vel_z"}[name]
+    spline = CubicHermiteSpline(ds.time.values, ds[name].values, ds[vel].values)
+    return spline(t)
+
+
+@pytest.mark.parametrize(
+    "velocity, kw",
+    [(500.0, dict(yaw=2.0)), (900.0, dict(omega=20.0)), (700.0, dict(yaw=1.0, omega=-10.0))],
+)
+def test_mirror_symmetry(velocity, kw):
+    """yaw/omega -> -yaw/-omega mirrors x. Compared at matched times before the stop
+    (the stop is detected at step ends, so the two runs may stop a step apart)."""
+    plus = pencore.simulate("p4", "soil", velocity, **TIGHT, **kw)
+    minus = pencore.simulate("p4", "soil", velocity, **TIGHT, **{k: -v for k, v in kw.items()})
+    t = plus.time.values[plus.time.values < 0.98 * minus.time.values[-1]]
+    scale = float(plus.path_length)
+    assert np.abs(_on_grid(minus, t, "cm_x") + plus.cm_x.values[: t.size]).max() < 1e-6 * scale
+    assert np.abs(_on_grid(minus, t, "cm_y") - plus.cm_y.values[: t.size]).max() < 1e-6 * scale
+    assert float(minus.path_length) == pytest.approx(scale, rel=1e-4)
+    assert abs(plus.tip_x.values[-1]) > 0.1  # the case is not trivially symmetric
+
+
+def test_rotation_about_the_normal_rotates_the_trajectory():
+    kw = dict(obliquity=30.0, yaw=2.0, omega=3.0)
+    a = pencore.simulate("p2", "soil", 800.0, **TIGHT, **kw)
+    b = pencore.simulate("p2", "soil", 800.0, azimuth=37.0, **TIGHT, **kw)
+    c, s = math.cos(math.radians(37.0)), math.sin(math.radians(37.0))
+    # compare on b's time grid (the adaptive steps differ at round-off level)
+    t = b.time.values[:-1]
+    xa, ya, za = (_on_grid(a, t, k) for k in ("cm_x", "cm_y", "cm_z"))
+    xb, yb, zb = (b[k].values[:-1] for k in ("cm_x", "cm_y", "cm_z"))
+    scale = float(a.path_length)
+    tol = 2e-6 * scale
+    assert np.abs(c * xa + s * za - xb).max() < tol
+    assert np.abs(-s * xa + c * za - zb).max() < tol
+    assert np.abs(ya - yb).max() < tol
+    assert float(b.path_length) == pytest.approx(scale, rel=2e-5)
+    assert float(b.penetration_depth) == pytest.approx(float(a.penetration_depth), rel=2e-5)
+
+
+def _energy_error(ds):
+    ke = ds.kinetic_energy.values
+    return abs(ke[0] - ke[-1] + ds.work.values[-1]) / ke[0]
+
+
+def test_energy_balance_frictionless():
+    ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0)
+    assert ds.kinetic_energy.values[-1] < 0.01 * ds.kinetic_energy.values[0]
+    assert _energy_error(ds) < 1e-3
+
+
+def test_friction_dissipates_more():
+    rough = Target.half_space(SOIL.with_friction(0.1))
+    smooth = pencore.simulate("p2", "soil", 600.0, obliquity=20.0)
+    ds = pencore.simulate("p2", rough, 600.0, obliquity=20.0)
+    assert _energy_error(ds) < 1e-3  # the work integral includes the friction stresses
+    assert float(ds.path_length) < 0.95 * float(smooth.path_length)
+    # at the same time the rough run has lost more kinetic energy
+    t = min(ds.time.values[-1], smooth.time.values[-1]) * 0.5
+    ke_rough = np.interp(t, ds.time.values, ds.kinetic_energy.values)
+    ke_smooth = np.interp(t, smooth.time.values, smooth.kinetic_energy.values)
+    assert ke_rough < ke_smooth
+
+
+def test_velocity_dependent_friction_lies_between_its_bounds():
+    hi = Target.half_space(SOIL.with_friction(0.2))
+    lo = Target.half_space(SOIL.with_friction(0.05))
+    table = Target.half_space(SOIL.with_friction([(0.0, 0.2), (100.0, 0.05)]))
+    d = [float(pencore.simulate("p2", t, 500.0).path_length) for t in (hi, table, lo)]
+    assert d[0] < d[1] < d[2]
+
+
+def test_layers_of_one_medium_equal_the_half_space():
+    layered = Target("two", (Layer(SOIL, 2.0), Layer(SOIL)))
+    a = pencore.simulate("p2", "soil", 700.0, obliquity=20.0)
+    b = pencore.simulate("p2", layered, 700.0, obliquity=20.0)
+    assert float(b.path_length) == pytest.approx(float(a.path_length), rel=1e-5)
+
+
+def test_weak_top_layer_lets_the_projectile_go_deeper():
+    weak = Medium("weak", (0.2 * SOIL.coefficients[0], 0.0, 0.2 * SOIL.coefficients[2]))
+    layered = Target("weak-over-soil", (Layer(weak, 2.0), Layer(SOIL)))
+    a = float(pencore.simulate("p2", "soil", 500.0).penetration_depth)
+    b = float(pencore.simulate("p2", layered, 500.0).penetration_depth)
+    assert b > a + 1.0
+
+
+@pytest.mark.parametrize("velocity", [1500.0, 1700.0])
+def test_convergence_under_step_halving_and_mesh_doubling(velocity):
+    """p2 at 45 deg from the Fig. 7 start (-1, 1) m: depth, path and the reversal verdict
+    do not change when the step is halved (rtol / 8 for the 2nd-order pair, max_travel / 2)
+    or the surface mesh doubled."""
+    base = dict(obliquity=45.0, start=(-1.0, 1.0, 0.0))
+    num = pencore.Numerics()
+    runs = [
+        pencore.simulate("p2", "soil", velocity, **base),
+        pencore.simulate("p2", "soil", velocity, rtol=num.rtol / 8,
+                         max_travel=num.max_travel / 2, **base),
+        pencore.simulate("p2", "soil", velocity, n_nose=2 * num.n_nose,
+                         n_shank=2 * num.n_shank, **base),
+    ]
+    ref = runs[0]
+    for r in runs[1:]:
+        assert r.attrs["reversed"] == ref.attrs["reversed"]
+        assert float(r.penetration_depth) == pytest.approx(float(ref.penetration_depth), rel=2e-3)
+        assert float(r.path_length) == pytest.approx(float(ref.path_length), rel=2e-3)
+    assert ref.attrs["reversed"] == (1 if velocity == 1700.0 else 0)
+
+
+def test_netcdf_round_trip(tmp_path):
+    ds = pencore.simulate("p2", "soil", 600.0, obliquity=30.0, yaw=1.0)
+    path = tmp_path / "run.nc"
+    ds.to_netcdf(path, engine="netcdf4")
+    back = xr.load_dataset(path, engine="netcdf4")
+    xr.testing.assert_identical(ds, back)
+
+
+def test_stop_at_reversal_ends_early():
+    full = pencore.simulate("p2", "soil", 1700.0, obliquity=45.0)
+    early = pencore.simulate("p2", "soil", 1700.0, obliquity=45.0, stop_at_reversal=True)
+    assert full.attrs["reversed"] == 1 and early.attrs["outcome"] == "reversed"
+    assert early.sizes["time"] < full.sizes["time"]
+    assert early.vel_y.values[-1] >= 0.0 > early.vel_y.values[-2]
+
+
+def test_gravity_option_pulls_down_in_free_flight():
+    a = pencore.simulate("p2", "soil", 300.0, start=(0.0, 2.0, 0.0))
+    b = pencore.simulate("p2", "soil", 300.0, start=(0.0, 2.0, 0.0), gravity=9.81)
+    assert float(b.penetration_depth) > float(a.penetration_depth)
+
+
+@pytest.mark.parametrize(
+    "kw, match",
+    [
+        (dict(velocity=-5.0), "velocity"),
+        (dict(velocity=0.0), "velocity"),
+        (dict(velocity=100.0, obliquity=95.0), "obliquity"),
+        (dict(velocity=100.0, eps=-1.0), "eps"),
+        (dict(velocity=100.0, bogus=1.0), "bogus"),
+    ],
+)
+def test_bad_arguments_raise_input_error(kw, match):
+    with pytest.raises(pencore.InputError, match=match):
+        pencore.simulate("p2", "soil", **kw)
