@@ -281,7 +281,7 @@ class Projectile:
             i_ax += (0.5 * dm * r * r).sum()
             i_disc += (0.25 * dm * r * r).sum()
         if m <= 0.0:
-            raise GeometryError(f"projectile {self.name!r} has no volume")
+            raise GeometryError("the body has no volume (a flat nose needs a shank)")
         lc = m1 / m
         i_tr = i_disc + m2 - m * lc * lc
         return MassProperties(float(m), float(lc), float(self.length), float(i_ax), float(i_tr))

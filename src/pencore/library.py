@@ -377,7 +377,11 @@ def get_projectile(spec: str | Projectile | dict[str, Any]) -> Projectile:
     if spec in named:
         return named[spec]
     if _looks_like_path(spec) or Path(spec).is_file():
-        return projectile_from_dict(_load_yaml(Path(spec), "projectile"))
+        data = _load_yaml(Path(spec), "projectile")
+        try:
+            return projectile_from_dict(data)
+        except InputError as exc:
+            raise InputError(f"projectile file {spec!r}: {exc}") from None
     raise InputError(
         f"unknown projectile {spec!r}; use one of {', '.join(sorted(named))} or a YAML file"
     )
@@ -395,5 +399,9 @@ def get_target(spec: str | Target | Medium | dict[str, Any]) -> Target:
     if spec in MEDIA:
         return Target.half_space(MEDIA[spec])
     if _looks_like_path(spec) or Path(spec).is_file():
-        return target_from_dict(_load_yaml(Path(spec), "target"))
+        data = _load_yaml(Path(spec), "target")
+        try:
+            return target_from_dict(data)
+        except InputError as exc:
+            raise InputError(f"target file {spec!r}: {exc}") from None
     raise InputError(f"unknown target {spec!r}; use one of {', '.join(MEDIA)} or a YAML file")
