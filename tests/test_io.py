@@ -1,0 +1,108 @@
+"""pencore.io: provenance, compression, atomic writes, downsampling."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import pencore
+from pencore.io import config_hash, downsample, read_netcdf, write_netcdf
+
+
+def _trajectory(n: int = 1000) -> xr.Dataset:
+    t = np.linspace(0.0, 1.0, n)
+    y = -np.sin(np.pi * t) * (1 + 0.1 * t)  # deepest point not on the regular grid
+    return xr.Dataset(
+        {
+            "tip_y": ("time", y, {"units": "m", "long_name": "nose tip y"}),
+            "count": ("time", np.arange(n), {"units": "1", "long_name": "index"}),
+            "penetration_depth": ((), float(-y.min()), {"units": "m", "long_name": "depth"}),
+        },
+        coords={"time": ("time", t, {"units": "s", "long_name": "time"})},
+        attrs={"flag": True, "items": ["a", 1], "none": None},
+    )
+
+
+def test_round_trip_with_provenance(tmp_path):
+    ds = _trajectory()
+    cfg = {"b": [1, 2], "a": {"x": 1.5}}
+    path = write_netcdf(ds, tmp_path / "sub" / "t.nc", config_slice=cfg, study="test/study")
+    back = read_netcdf(path)
+    xr.testing.assert_allclose(back[["tip_y", "penetration_depth"]],
+                               ds[["tip_y", "penetration_depth"]])
+    assert back["time"].dtype.kind == "f" and back["time"].attrs["units"] == "s"
+    a = back.attrs
+    assert a["study"] == "test/study"
+    assert a["pencore_version"] == pencore.__version__
+    assert a["git_commit"] == "unknown" or len(a["git_commit"]) == 40
+    assert json.loads(a["config_json"]) == cfg
+    assert a["config_sha256"] == config_hash({"a": {"x": 1.5}, "b": [1, 2]})  # key order
+    assert a["created_utc"].endswith("Z")
+    assert a["flag"] == 1 and json.loads(a["items"]) == ["a", 1] and a["none"] == ""
+    assert ds.attrs == {"flag": True, "items": ["a", 1], "none": None}  # input untouched
+
+
+def test_float_variables_are_compressed(tmp_path):
+    path = write_netcdf(_trajectory(), tmp_path / "t.nc", config_slice={}, study="s")
+    back = xr.open_dataset(path)
+    try:
+        for name in ("tip_y", "time"):
+            assert back[name].encoding["zlib"] and back[name].encoding["complevel"] == 4
+        assert not back["count"].encoding.get("zlib", False)
+    finally:
+        back.close()
+
+
+def test_write_is_atomic(tmp_path, monkeypatch):
+    path = tmp_path / "t.nc"
+    write_netcdf(_trajectory(), path, config_slice={"v": 1}, study="s")
+    before = path.read_bytes()
+
+    def broken(self, *args, **kwargs):
+        raise OSError("disk full")
+
+    monkeypatch.setattr(xr.Dataset, "to_netcdf", broken)
+    with pytest.raises(OSError, match="disk full"):
+        write_netcdf(_trajectory(10), path, config_slice={"v": 2}, study="s")
+    assert path.read_bytes() == before
+    assert [p.name for p in tmp_path.iterdir()] == ["t.nc"]  # no temporary left
+
+
+def test_written_file_is_world_readable(tmp_path):
+    path = write_netcdf(_trajectory(), tmp_path / "t.nc", config_slice={}, study="s")
+    assert path.stat().st_mode & 0o044  # not the 0600 of a raw temporary file
+
+
+def test_read_missing_file(tmp_path):
+    with pytest.raises(FileNotFoundError, match="no netCDF file"):
+        read_netcdf(tmp_path / "missing.nc")
+
+
+def test_downsample_keeps_ends_and_deepest_point():
+    ds = _trajectory(1001)
+    thin = downsample(ds, 50)
+    assert 50 <= thin.sizes["time"] <= 52
+    assert thin["time"][0] == ds["time"][0] and thin["time"][-1] == ds["time"][-1]
+    assert float(-thin["tip_y"].min()) == float(ds["penetration_depth"])
+    assert np.all(np.diff(thin["time"].values) > 0)
+    assert thin.attrs["downsampled_from"] == 1001
+    assert float(thin["penetration_depth"]) == float(ds["penetration_depth"])
+
+
+def test_downsample_leaves_short_or_timeless_datasets():
+    ds = _trajectory(30)
+    assert downsample(ds, 50) is ds
+    grid = xr.Dataset({"d": (("case", "velocity"), np.ones((2, 3)))})
+    assert downsample(grid, 2) is grid
+    with pytest.raises(ValueError, match="n >= 2"):
+        downsample(ds, 1)
+
+
+def test_downsample_real_trajectory():
+    ds = pencore.simulate("p2", "soil", 278.0, 30.0)
+    thin = downsample(ds, 40)
+    assert thin.sizes["time"] <= 42
+    assert float(-thin["tip_y"].min()) == pytest.approx(float(ds["penetration_depth"]))
