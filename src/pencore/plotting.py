@@ -1,0 +1,195 @@
+"""Figures of the studies (matplotlib, Agg canvas, PNG + PDF).
+
+Figures are built with the object-oriented API on an Agg canvas, never through pyplot, so
+plotting works headless, keeps no global state, and can run in parallel jobs. Each
+``plot_*`` function takes the study's dataset and returns a
+:class:`matplotlib.figure.Figure`; :func:`save_figure` writes it to one or more files
+(the format follows the suffix).
+
+Notation follows the paper: impact velocity ``V_i``, angle of obliquity ``phi_1``, yaw
+angle ``phi_2``, calibre radius head ``CRH``.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+
+__all__ = ["new_figure", "save_figure", "plot_table2", "plot_fig5", "plot_verification"]
+
+_TARGET_TITLES = {
+    "concrete": "Concrete (Forrestal et al. 1994)",
+    "aluminium": "Aluminium 6061-T6511 (Piekutowski et al. 1999)",
+    "soil": "Soil (Forrestal & Luk 1992)",
+}
+_VI = r"Impact velocity $V_i$ (m/s)"
+_DEPTH = "Penetration depth (m)"
+
+
+def new_figure(width: float = 6.4, height: float = 4.4) -> Figure:
+    """An empty figure on an Agg canvas (size in inches)."""
+    fig = Figure(figsize=(width, height), layout="constrained")
+    FigureCanvasAgg(fig)
+    return fig
+
+
+def save_figure(fig: Figure, *paths: str | os.PathLike[str], dpi: int = 150) -> list[Path]:
+    """Save ``fig`` to every path (format from the suffix, e.g. ``.png``, ``.pdf``).
+
+    Parent directories are created. Returns the paths written.
+    """
+    if not paths:
+        raise ValueError("save_figure needs at least one path")
+    out = []
+    for p in paths:
+        p = Path(p)
+        p.parent.mkdir(parents=True, exist_ok=True)
+        fig.savefig(p, dpi=dpi, metadata=_metadata(p))
+        out.append(p)
+    return out
+
+
+def _metadata(p: Path) -> dict[str, str | None]:
+    # no creation dates: identical inputs give identical PDFs
+    if p.suffix.lower() == ".pdf":
+        return {"Creator": "pencore", "CreationDate": None}
+    if p.suffix.lower() == ".png":
+        return {"Software": "pencore"}
+    return {}
+
+
+def _crh_label(crh: float) -> str:
+    if not np.isfinite(crh):
+        return ""
+    if abs(crh - 0.5) < 1e-12:
+        return "CRH = 0.5 (hemisphere)"
+    return f"CRH = {crh:g}"
+
+
+# ----------------------------------------------------------------------------- Table 2
+
+
+def plot_table2(ds: xr.Dataset) -> Figure:
+    """Measured, paper-predicted and pencore depths of the Table 2 soil tests (bars)."""
+    fig = new_figure(7.0, 4.2)
+    ax = fig.add_subplot()
+    tests = ds["test"].values
+    x = np.arange(tests.size)
+    w = 0.27
+    p = ds.attrs.get("chosen_projectile", "?")
+    m = str(ds.attrs.get("chosen_depth_measure", "?")).replace("_", " ")
+    bars = [
+        ("measured_depth", "Experiment (Forrestal & Luk 1992)", "0.35"),
+        ("paper_predicted_depth", "Li & Flores-Johnson (2011), Table 2", "tab:blue"),
+        ("pencore_depth", f"pencore, projectile #{p[1:] if p.startswith('p') else p}, {m}",
+         "tab:orange"),
+    ]
+    for k, (var, label, colour) in enumerate(bars):
+        vals = ds[var].values
+        ax.bar(x + (k - 1) * w, vals, w, label=label, color=colour)
+        for xi, v in zip(x + (k - 1) * w, vals, strict=True):
+            ax.annotate(f"{v:.2f}", (xi, v), ha="center", va="bottom", fontsize=7,
+                        xytext=(0, 1), textcoords="offset points")
+    labels = [
+        f"#{int(t)}\n$V_i$={v:g} m/s\n$\\varphi_1$={o:g}°, $\\varphi_2$={y:g}°"
+        for t, v, o, y in zip(tests, ds["velocity"].values, ds["obliquity"].values,
+                              ds["yaw"].values, strict=True)
+    ]
+    ax.set_xticks(x, labels, fontsize=8)
+    ax.set_xlabel("Test (paper Table 2)")
+    ax.set_ylabel(_DEPTH)
+    ax.set_ylim(0, 1.08 * float(np.nanmax([ds[v].values.max() for v, _, _ in bars])))
+    fig.legend(loc="outside upper center", ncol=2, fontsize=8, frameon=False)
+    return fig
+
+
+# ----------------------------------------------------------------------------- Fig. 5
+
+
+def plot_fig5(ds: xr.Dataset) -> Figure:
+    """Depth against impact velocity, one panel per target (paper Fig. 5).
+
+    Thin lines with dots: pencore; wide pale lines: the closed form; open symbols: experiments
+    (from the dataset's ``experiment`` dimension, when it has points).
+    """
+    targets = list(dict.fromkeys(str(t) for t in ds["target"].values))
+    fig = new_figure(4.0 * len(targets) + 0.6, 4.2)
+    axes = fig.subplots(1, len(targets), squeeze=False)[0]
+    colours = ["tab:blue", "tab:red", "tab:green", "tab:purple", "tab:brown", "tab:olive"]
+    markers = ["o", "s", "^", "D", "v", "P"]
+    n_exp = ds.sizes.get("experiment", 0)
+    for ax, tgt in zip(axes, targets, strict=True):
+        sel = [str(c) for c, t in zip(ds["case"].values, ds["target"].values, strict=True)
+               if str(t) == tgt]
+        for k, c in enumerate(sel):
+            sub = ds.sel(case=c)
+            col, mk = colours[k % len(colours)], markers[k % len(markers)]
+            lab = _crh_label(float(sub["crh"])) or str(sub["label"].item())
+            v = ds["velocity"].values
+            # the two agree to a fraction of a percent: closed form as a wide pale band
+            # underneath, pencore as a thin line with dots on top
+            ok = np.isfinite(sub["closedform_depth"].values)
+            ax.plot(v[ok], sub["closedform_depth"].values[ok], "-", color=col, lw=5.0,
+                    alpha=0.25, solid_capstyle="round", label=f"{lab}, closed form")
+            ok = np.isfinite(sub["pencore_depth"].values)
+            ax.plot(v[ok], sub["pencore_depth"].values[ok], "-", marker=".", color=col,
+                    lw=1.0, label=f"{lab}, pencore")
+            if n_exp:
+                e = ds["experiment_case"].values.astype(str) == c
+                if e.any():
+                    ax.plot(ds["experiment_velocity"].values[e],
+                            ds["experiment_depth"].values[e], mk, mfc="none", color=col,
+                            ls="none", label=f"{lab}, experiment")
+        ax.set_title(_TARGET_TITLES.get(tgt, tgt), fontsize=10)
+        ax.set_xlabel(_VI)
+        ax.set_ylabel(_DEPTH)
+        ax.set_xlim(left=0)
+        ax.set_ylim(bottom=0)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7, frameon=False)
+        if not n_exp:
+            ax.text(0.98, 0.02, "no experimental points supplied", transform=ax.transAxes,
+                    ha="right", va="bottom", fontsize=7, color="0.4")
+    return fig
+
+
+# ----------------------------------------------------------------------------- verification
+
+
+def plot_verification(ds: xr.Dataset, cases: Sequence[str] | None = None) -> Figure:
+    """pencore (symbols) against the closed form (lines), and their relative difference."""
+    fig = new_figure(6.4, 6.0)
+    ax1, ax2 = fig.subplots(2, 1, sharex=True, height_ratios=[2, 1])
+    colours = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown",
+               "tab:pink", "tab:gray", "tab:olive", "tab:cyan"]
+    v = ds["velocity"].values
+    for k, c in enumerate(cases or [str(c) for c in ds["case"].values]):
+        sub = ds.sel(case=c)
+        col = colours[k % len(colours)]
+        lab = f"{sub['projectile'].item()} into {sub['target'].item()}"
+        ok = np.isfinite(sub["pencore_depth"].values)
+        ax1.plot(v[ok], sub["closedform_depth"].values[ok], "-", color=col, lw=1.0)
+        ax1.plot(v[ok], sub["pencore_depth"].values[ok], "o", mfc="none", color=col,
+                 label=lab)
+        ax2.plot(v[ok], 100.0 * sub["rel_diff"].values[ok], "o-", color=col, ms=3, lw=0.8)
+    ax1.set_yscale("log")
+    ax1.set_ylabel(_DEPTH)
+    ax1.grid(alpha=0.3, which="both")
+    ax1.plot([], [], "-", color="k", lw=1.0, label="closed form (lines)")
+    ax1.legend(fontsize=7, frameon=False, ncol=2)
+    ax1.set_title("Normal frictionless impact: pencore (symbols) and closed form (lines)",
+                  fontsize=10)
+    ax2.axhline(0.0, color="k", lw=0.6)
+    ax2.set_xlabel(_VI)
+    ax2.set_ylabel("(pencore − closed form) /\nclosed form (%)")
+    ax2.grid(alpha=0.3)
+    mx = float(ds["max_abs_rel_diff"]) if "max_abs_rel_diff" in ds else np.nan
+    if np.isfinite(mx):
+        ax2.set_title(f"largest |difference| = {100 * mx:.2g} %", fontsize=9)
+    return fig
