@@ -1,0 +1,29 @@
+# Archive: `snakemake --cores 2 archive` copies every aggregated dataset registered in
+# ARCHIVE_DATASETS (results/<study>/<name>.nc) to results/archive/<study>/<name>.nc,
+# with trajectories thinned (config archive.max_points) and compressed. Not part of
+# `all`: the archive is committed and refreshed on request only.
+
+
+rule archive:
+    input:
+        lambda wildcards: [
+            path.replace("results/", "results/archive/", 1) for path in ARCHIVE_DATASETS
+        ],
+
+
+rule archive_dataset:
+    input:
+        "results/{dataset}.nc",
+    output:
+        "results/archive/{dataset}.nc",
+    localrule: True
+    wildcard_constraints:
+        dataset=r"(?!archive/)[A-Za-z0-9_./-]+",
+    params:
+        max_points=config["archive"]["max_points"],
+    log:
+        "results/logs/archive/{dataset}.log",
+    conda:
+        "../envs/pencore.yaml"
+    script:
+        "../scripts/archive.py"

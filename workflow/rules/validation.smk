@@ -1,0 +1,188 @@
+# Validation (paper Section 3) and verification studies.
+#   table2        paper Table 2, soil (Forrestal & Luk 1992): selects projectile + measure
+#   fig5          paper Fig. 5, concrete and aluminium, with the closed form
+#   verification  pencore against pencore.closedform.depth, normal impact
+# Each study's rule gets its own config slice through params, so editing one study's
+# entry reruns only that study (rerun trigger `params`).
+import pandas as pd
+
+
+VALIDATION = config["validation"]
+
+# Tabular inputs are checked at parse time, so a bad row fails before anything runs.
+validate(
+    pd.read_csv(VALIDATION["table2"]["csv"], comment="#"),
+    "../schemas/table2.schema.yaml",
+)
+validate(
+    pd.read_csv(VALIDATION["fig5"]["experiments_csv"], comment="#"),
+    "../schemas/fig5_experiments.schema.yaml",
+)
+
+
+rule table2:
+    input:
+        rows=VALIDATION["table2"]["csv"],
+    output:
+        csv=report(
+            "results/validation/table2.csv",
+            caption="../report/table2.rst",
+            category="Validation",
+            subcategory="Table 2 (soil)",
+            labels={"name": "Table 2", "type": "table"},
+        ),
+        selection=report(
+            "results/validation/table2_selection.csv",
+            caption="../report/table2_selection.rst",
+            category="Validation",
+            subcategory="Table 2 (soil)",
+            labels={"name": "Table 2 candidates", "type": "table"},
+        ),
+        nc="results/validation/table2.nc",
+    params:
+        study=canonical(VALIDATION["table2"]),
+        numerics=canonical(config["numerics"]),
+    log:
+        "results/logs/validation/table2.log",
+    benchmark:
+        "results/benchmarks/validation/table2.tsv"
+    conda:
+        "../envs/pencore.yaml"
+    script:
+        "../scripts/table2.py"
+
+
+rule fig5:
+    input:
+        experiments=VALIDATION["fig5"]["experiments_csv"],
+    output:
+        nc="results/validation/fig5.nc",
+    params:
+        study=canonical(VALIDATION["fig5"]),
+        numerics=canonical(config["numerics"]),
+    log:
+        "results/logs/validation/fig5.log",
+    benchmark:
+        "results/benchmarks/validation/fig5.tsv"
+    conda:
+        "../envs/pencore.yaml"
+    script:
+        "../scripts/fig5.py"
+
+
+rule verification:
+    output:
+        nc="results/validation/verification.nc",
+        summary="results/validation/verification.txt",
+    params:
+        study=canonical(VALIDATION["verification"]),
+        numerics=canonical(config["numerics"]),
+    log:
+        "results/logs/validation/verification.log",
+    benchmark:
+        "results/benchmarks/validation/verification.tsv"
+    conda:
+        "../envs/pencore.yaml"
+    script:
+        "../scripts/verification.py"
+
+
+# Figures: separate rules, so restyling a plot does not rerun the solver.
+rule table2_figure:
+    input:
+        nc="results/validation/table2.nc",
+    output:
+        png=report(
+            "results/validation/table2.png",
+            caption="../report/table2_figure.rst",
+            category="Validation",
+            subcategory="Table 2 (soil)",
+            labels={"name": "Table 2", "type": "figure"},
+        ),
+        pdf="results/validation/table2.pdf",
+    localrule: True
+    params:
+        kind="table2",
+    log:
+        "results/logs/validation/table2_figure.log",
+    benchmark:
+        "results/benchmarks/validation/table2_figure.tsv"
+    conda:
+        "../envs/pencore.yaml"
+    script:
+        "../scripts/plot.py"
+
+
+rule fig5_figure:
+    input:
+        nc="results/validation/fig5.nc",
+    output:
+        png=report(
+            "results/validation/fig5.png",
+            caption="../report/fig5.rst",
+            category="Validation",
+            subcategory="Fig. 5 (concrete, aluminium)",
+            labels={"name": "Fig. 5", "type": "figure"},
+        ),
+        pdf="results/validation/fig5.pdf",
+    localrule: True
+    params:
+        kind="fig5",
+    log:
+        "results/logs/validation/fig5_figure.log",
+    benchmark:
+        "results/benchmarks/validation/fig5_figure.tsv"
+    conda:
+        "../envs/pencore.yaml"
+    script:
+        "../scripts/plot.py"
+
+
+rule verification_figure:
+    input:
+        nc="results/validation/verification.nc",
+    output:
+        png=report(
+            "results/validation/verification.png",
+            caption="../report/verification.rst",
+            category="Verification",
+            subcategory="Closed form, normal impact",
+            labels={"name": "Verification", "type": "figure"},
+        ),
+        pdf="results/validation/verification.pdf",
+    localrule: True
+    params:
+        kind="verification",
+    log:
+        "results/logs/validation/verification_figure.log",
+    benchmark:
+        "results/benchmarks/validation/verification_figure.tsv"
+    conda:
+        "../envs/pencore.yaml"
+    script:
+        "../scripts/plot.py"
+
+
+ALL_TARGETS.extend(
+    [
+        "results/validation/table2.csv",
+        "results/validation/table2_selection.csv",
+        "results/validation/table2.nc",
+        "results/validation/table2.png",
+        "results/validation/table2.pdf",
+        "results/validation/fig5.nc",
+        "results/validation/fig5.png",
+        "results/validation/fig5.pdf",
+        "results/validation/verification.nc",
+        "results/validation/verification.txt",
+        "results/validation/verification.png",
+        "results/validation/verification.pdf",
+    ]
+)
+ARCHIVE_DATASETS.extend(
+    [
+        "results/validation/table2.nc",
+        "results/validation/fig5.nc",
+        "results/validation/verification.nc",
+    ]
+)

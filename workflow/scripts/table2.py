@@ -1,0 +1,52 @@
+"""Rule table2 (paper Table 2, soil): thin adapter to pencore.studies.validation.table2."""
+
+import pandas as pd
+from _common import start_log
+
+from pencore.io import file_sha256, write_netcdf
+from pencore.studies.validation import table2
+
+smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
+log = start_log(smk.log[0], "table2")
+
+study = dict(smk.params.study)
+rows = pd.read_csv(smk.input.rows, comment="#")
+log.info("%d tests from %s; candidates %s x %s", len(rows), smk.input.rows,
+         study["projectiles"], study["depth_measures"])
+table, ds = table2(
+    rows,
+    smk.params.numerics,
+    projectiles=study["projectiles"],
+    target=study["target"],
+    measures=study["depth_measures"],
+)
+
+selection = ds["selection_score"].to_dataframe().reset_index()
+selection = selection.rename(columns={"selection_score": "rms_rel_diff_vs_paper"})
+selection["selected"] = (selection["projectile"] == ds.attrs["chosen_projectile"]) & (
+    selection["depth_measure"] == ds.attrs["chosen_depth_measure"]
+)
+selection["candidate"] = selection["depth_measure"].isin(study["depth_measures"])
+for t in ds["test"].values:
+    col = ds["depth_candidates"].sel(test=t).to_dataframe().reset_index()
+    selection[f"depth_m_test{int(t)}"] = col["depth_candidates"].to_numpy()
+
+table.to_csv(smk.output.csv, index=False, float_format="%.6g")
+selection.to_csv(smk.output.selection, index=False, float_format="%.6g")
+write_netcdf(
+    ds,
+    smk.output.nc,
+    config_slice={
+        "validation.table2": study,
+        "numerics": dict(smk.params.numerics),
+        "inputs": {smk.input.rows: file_sha256(smk.input.rows)},
+    },
+    study="validation/table2",
+)
+log.info("selected %s", ds.attrs["selection_rule"])
+log.info("-> projectile %s, depth measure %s (RMS relative difference %.4f)",
+         ds.attrs["chosen_projectile"], ds.attrs["chosen_depth_measure"],
+         ds.attrs["chosen_rms_rel_diff"])
+log.info("candidates (RMS relative difference from the paper's predicted column):\n%s",
+         selection.to_string(index=False))
+log.info("table:\n%s", table.to_string(index=False))

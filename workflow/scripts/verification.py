@@ -1,0 +1,25 @@
+"""Rule verification: thin adapter to pencore.studies.validation.verification."""
+
+from pathlib import Path
+
+from _common import start_log
+
+from pencore.io import write_netcdf
+from pencore.studies.validation import velocity_grid, verification, verification_summary
+
+smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
+log = start_log(smk.log[0], "verification")
+
+study = dict(smk.params.study)
+ds = verification(study["cases"], velocity_grid(**study["velocities_m_s"]),
+                  smk.params.numerics)
+write_netcdf(
+    ds,
+    smk.output.nc,
+    config_slice={"validation.verification": study, "numerics": dict(smk.params.numerics)},
+    study="validation/verification",
+)
+summary = verification_summary(ds)
+Path(smk.output.summary).write_text(summary + "\n")
+print(summary)
+log.info("pencore against the closed form:\n%s", summary)
