@@ -1,0 +1,360 @@
+"""The Snakemake workflow: DAG, lint, config schema, an end-to-end run, the archive.
+
+The end-to-end run copies the workflow into a temporary directory and runs the small
+configuration ``.test/config.yaml`` there (about 15 s with numba's on-disk cache), so the
+repository's own ``results/`` is never touched.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+from snakemake.exceptions import WorkflowError
+from snakemake.utils import validate
+
+import pencore
+from pencore.io import read_netcdf
+from pencore.library import projectile_names, target_names
+from pencore.studies import resolve_numerics
+
+REPO = Path(__file__).resolve().parents[1]
+SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
+STUDY_RULES = ("table2", "fig5", "verification")
+FIGURE_RULES = ("table2_figure", "fig5_figure", "verification_figure")
+
+
+def _copy_workflow(dest: Path) -> Path:
+    shutil.copy2(REPO / "Snakefile", dest / "Snakefile")
+    for d in ("workflow", "config", ".test"):
+        shutil.copytree(REPO / d, dest / d)
+    return dest
+
+
+def _snakemake(cwd: Path, *args: str, timeout: float = 600) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [sys.executable, "-m", "snakemake", *args],
+        cwd=cwd, capture_output=True, text=True, timeout=timeout,
+    )
+
+
+def _shipped_config() -> dict:
+    return yaml.safe_load((REPO / "config" / "config.yaml").read_text())
+
+
+# ----------------------------------------------------------------------------- DAG, lint
+
+
+@pytest.fixture(scope="module")
+def workdir(tmp_path_factory) -> Path:
+    return _copy_workflow(tmp_path_factory.mktemp("workflow"))
+
+
+def test_dry_run_lists_every_study(workdir):
+    r = _snakemake(workdir, "-n", "--cores", "1")
+    assert r.returncode == 0, r.stderr + r.stdout
+    out = r.stdout + r.stderr
+    for rule in (*STUDY_RULES, *FIGURE_RULES, "all"):
+        assert f"rule {rule}:" in out, f"rule {rule} missing from the dry run"
+    # the archive is refreshed on request only, never by `all`
+    assert "archive_dataset" not in out
+
+
+def test_dry_run_with_workflow_profiles(workdir):
+    r = _snakemake(workdir, "-n", "--workflow-profile", "workflow/profiles/default")
+    assert r.returncode == 0, r.stderr + r.stdout
+    assert "Using workflow specific profile workflow/profiles/default" in r.stdout + r.stderr
+
+
+def test_profile_keys_are_snakemake_options():
+    help_text = _snakemake(REPO, "--help").stdout
+    for name in ("default", "slurm"):
+        prof = yaml.safe_load((REPO / "workflow" / "profiles" / name / "config.yaml").read_text())
+        for key in prof:
+            assert f"--{key}" in help_text, f"profile {name}: {key!r} is not a snakemake option"
+
+
+def test_archive_target_dry_run(workdir):
+    r = _snakemake(workdir, "-n", "--cores", "1", "archive")
+    assert r.returncode == 0, r.stderr + r.stdout
+    for study in STUDY_RULES:
+        assert f"results/archive/validation/{study}.nc" in r.stdout
+
+
+def test_lint_clean(workdir):
+    r = _snakemake(workdir, "--lint")
+    assert r.returncode == 0, r.stdout + r.stderr
+
+
+# ----------------------------------------------------------------------------- schema
+
+
+def _validate(cfg: dict) -> dict:
+    validate(cfg, str(SCHEMA))
+    return cfg
+
+
+def test_shipped_and_test_configs_validate():
+    _validate(_shipped_config())
+    _validate(yaml.safe_load((REPO / ".test" / "config.yaml").read_text()))
+
+
+def test_schema_fills_defaults_of_an_empty_config():
+    cfg = _validate({})
+    assert cfg["numerics"] and all(v is None for v in cfg["numerics"].values())
+    assert resolve_numerics(cfg["numerics"]) == pencore.Numerics()
+    assert cfg["validation"]["table2"]["projectiles"] == ["p1", "p2", "p3", "p4"]
+    assert cfg["validation"]["fig5"]["cases"][0]["projectile"] == "concrete_crh3"
+    assert cfg["section4"] == {}
+
+
+def _bad(mutate) -> str:
+    cfg = _shipped_config()
+    mutate(cfg)
+    with pytest.raises(WorkflowError) as err:
+        _validate(cfg)
+    return str(err.value)
+
+
+def test_schema_rejects_unknown_projectile():
+    msg = _bad(lambda c: c["validation"]["table2"].update(projectiles=["p2", "p9"]))
+    assert "'p9' is not one of" in msg
+
+
+def test_schema_rejects_unknown_case_projectile():
+    msg = _bad(lambda c: c["validation"]["fig5"]["cases"][0].update(projectile="bullet"))
+    assert "'bullet' is not one of" in msg
+
+
+def test_schema_rejects_negative_velocity():
+    msg = _bad(lambda c: c["validation"]["verification"]["velocities_m_s"].update(min=-100))
+    assert "-100 is less than or equal to the minimum of 0" in msg
+    msg = _bad(lambda c: c["validation"]["fig5"]["cases"][1].update(v_max=-1))
+    assert "-1 is less than or equal to the minimum of 0" in msg
+
+
+def test_schema_rejects_missing_key():
+    msg = _bad(lambda c: c["validation"]["fig5"]["cases"][0].pop("target"))
+    assert "'target' is a required property" in msg
+    msg = _bad(lambda c: c["validation"]["verification"]["velocities_m_s"].pop("n"))
+    assert "'n' is a required property" in msg
+
+
+def test_schema_rejects_unknown_keys_but_leaves_section4_open():
+    msg = _bad(lambda c: c["validation"]["table2"].update(projectile="p2"))
+    assert "'projectile' was unexpected" in msg
+    msg = _bad(lambda c: c["numerics"].update(rtoll=1e-6))
+    assert "'rtoll' was unexpected" in msg
+    cfg = _shipped_config()
+    cfg["section4"] = {"fig7": {"velocities": [1641, 1650]}, "anything": True}
+    _validate(cfg)
+
+
+def _walk_properties(node: dict, path: str = ""):
+    for key, sub in node.get("properties", {}).items():
+        yield f"{path}.{key}", sub
+        yield from _walk_properties(sub, f"{path}.{key}")
+    for key, sub in node.get("$defs", {}).items():
+        yield from _walk_properties(sub, f"$defs.{key}")
+
+
+def test_schema_every_key_has_type_description_default():
+    schema = yaml.safe_load(SCHEMA.read_text())
+    defs = schema["$defs"]
+    for path, sub in _walk_properties(schema):
+        ref = sub.get("$ref")
+        target = defs[ref.rsplit("/", 1)[-1]] if ref else sub
+        assert "type" in target, f"{path} has no type"
+        assert "description" in sub or "description" in target, f"{path} has no description"
+        assert "default" in sub, f"{path} has no default"
+
+
+def test_schema_names_match_pencore():
+    schema = yaml.safe_load(SCHEMA.read_text())
+    assert sorted(schema["$defs"]["projectile"]["enum"]) == projectile_names()
+    assert sorted(schema["$defs"]["target"]["enum"]) == target_names()
+    assert set(schema["properties"]["numerics"]["properties"]) == set(
+        pencore.Numerics.__dataclass_fields__
+    )
+
+
+def test_table2_csv_matches_paper_guide():
+    rows = pd.read_csv(REPO / "config" / "table2.csv")
+    assert rows["test"].tolist() == [2, 3, 4, 5, 6]
+    assert rows["paper_predicted_depth_m"].tolist() == [4.25, 4.21, 4.25, 4.22, 4.21]
+    assert rows["measured_depth_m"].tolist() == [4.98, 5.18, 5.18, 5.02, 4.82]
+    assert rows["source"].str.startswith("paper").all()
+    # the paper quotes a largest experiment-prediction difference of 18.7 %
+    rel = (rows["paper_predicted_depth_m"] - rows["measured_depth_m"]) / rows["measured_depth_m"]
+    assert abs(rel).max() == pytest.approx(0.187, abs=5e-4)
+
+
+def test_fig5_experiments_ship_without_invented_points():
+    exp = pd.read_csv(REPO / "config" / "fig5_experiments.csv")
+    assert list(exp.columns) == ["target", "projectile", "velocity_m_s", "depth_m", "source"]
+    assert exp.empty
+
+
+# ----------------------------------------------------------------------------- end to end
+
+
+@pytest.fixture(scope="module")
+def e2e(tmp_path_factory) -> Path:
+    wd = _copy_workflow(tmp_path_factory.mktemp("e2e"))
+    r = _snakemake(wd, "--cores", "2", "--configfile", ".test/config.yaml")
+    assert r.returncode == 0, r.stderr[-4000:]
+    return wd
+
+
+def _check_cf(ds):
+    for name, var in ds.data_vars.items():
+        if var.dtype.kind == "f":
+            assert "units" in var.attrs, f"{name} has no units"
+            assert "long_name" in var.attrs, f"{name} has no long_name"
+    for key in ("study", "pencore_version", "git_commit", "config_json", "config_sha256",
+                "created_utc", "numerics_json"):
+        assert key in ds.attrs, f"missing provenance attribute {key}"
+    assert ds.attrs["pencore_version"] == pencore.__version__
+    json.loads(ds.attrs["config_json"])
+
+
+@pytest.mark.slow
+def test_e2e_table2(e2e):
+    ds = read_netcdf(e2e / "results/validation/table2.nc")
+    _check_cf(ds)
+    assert ds.sizes["test"] == 5
+    assert list(ds["projectile"].values) == ["p1", "p2"]
+    assert set(ds["depth_measure"].values) == {"path_length", "vertical_depth"}
+    assert ds["pencore_depth"].attrs["units"] == "m"
+    # the paper's predicted column is reproduced by projectile #2 and the path length
+    assert ds.attrs["chosen_projectile"] == "p2"
+    assert ds.attrs["chosen_depth_measure"] == "path_length"
+    np.testing.assert_allclose(ds["pencore_depth"], ds["paper_predicted_depth"], rtol=0.05)
+    # physics bounds: the path is at least the vertical depth; normal shots agree
+    assert (ds["pencore_path_length"] >= ds["pencore_vertical_depth"] - 1e-9).all()
+    normal = (ds["obliquity"] == 0) & (ds["yaw"] == 0)
+    np.testing.assert_allclose(ds["pencore_path_length"].where(normal, drop=True),
+                               ds["pencore_vertical_depth"].where(normal, drop=True),
+                               rtol=1e-9)
+    # oblique shots (30 deg) go about cos(30) as deep as they travel
+    oblique = ds.sel(test=[3, 4])
+    ratio = oblique["pencore_vertical_depth"] / oblique["pencore_path_length"]
+    assert ((ratio > 0.8) & (ratio < 0.92)).all()
+    table = pd.read_csv(e2e / "results/validation/table2.csv")
+    for col in ("test", "velocity_m_s", "obliquity_deg", "yaw_deg", "measured_depth_m",
+                "paper_predicted_depth_m", "pencore_depth_m", "pencore_vertical_depth_m",
+                "pencore_path_length_m", "rel_diff_vs_paper", "rel_diff_vs_measured",
+                "projectile", "depth_measure", "source"):
+        assert col in table.columns
+    np.testing.assert_allclose(table["pencore_depth_m"], ds["pencore_depth"], rtol=1e-5)
+    sel = pd.read_csv(e2e / "results/validation/table2_selection.csv")
+    assert sel["selected"].sum() == 1
+    assert sel.loc[sel["selected"], "rms_rel_diff_vs_paper"].item() == pytest.approx(
+        sel["rms_rel_diff_vs_paper"].min())
+
+
+@pytest.mark.slow
+def test_e2e_fig5_and_verification(e2e):
+    f5 = read_netcdf(e2e / "results/validation/fig5.nc")
+    _check_cf(f5)
+    assert dict(f5.sizes) == {"case": 2, "velocity": 3, "experiment": 1}
+    pen, cf = f5["pencore_depth"], f5["closedform_depth"]
+    assert ((pen > 0.5 * cf) & (pen < 2.0 * cf)).all()
+    assert float(abs(f5["rel_diff"]).max()) < 1e-2
+    assert (pen.diff("velocity") > 0).all(), "depth must grow with impact velocity"
+    assert f5["experiment_case"].values.tolist() == ["concrete_crh3"]
+    assert float(f5["experiment_pencore_depth"][0]) == pytest.approx(
+        float(pen.sel(case="concrete_crh3", velocity=600.0)), rel=1e-9)
+
+    ver = read_netcdf(e2e / "results/validation/verification.nc")
+    _check_cf(ver)
+    assert dict(ver.sizes) == {"case": 2, "velocity": 3}
+    pen, cf = ver["pencore_depth"], ver["closedform_depth"]
+    assert ((pen > 0.5 * cf) & (pen < 2.0 * cf)).all()
+    assert float(ver["max_abs_rel_diff"]) == pytest.approx(float(abs(ver["rel_diff"]).max()))
+    assert float(ver["max_abs_rel_diff"]) < 1e-2
+    assert "largest |pencore - closed form|" in (
+        e2e / "results/validation/verification.txt").read_text()
+
+
+@pytest.mark.slow
+def test_e2e_figures_logs_benchmarks(e2e):
+    res = e2e / "results"
+    for name in STUDY_RULES:
+        for ext in ("png", "pdf"):
+            assert (res / f"validation/{name}.{ext}").stat().st_size > 5_000
+        assert (res / f"logs/validation/{name}.log").is_file()
+        bench = pd.read_csv(res / f"benchmarks/validation/{name}.tsv", sep="\t")
+        assert bench["s"].iloc[0] > 0
+
+
+@pytest.mark.slow
+def test_e2e_rerun_is_targeted(e2e):
+    r = _snakemake(e2e, "-n", "--cores", "1", "--configfile", ".test/config.yaml")
+    assert r.returncode == 0
+    assert "Nothing to be done" in r.stdout + r.stderr
+    cfg = yaml.safe_load((e2e / ".test/config.yaml").read_text())
+    cfg["validation"]["verification"]["velocities_m_s"]["n"] = 4
+    (e2e / "alt.yaml").write_text(yaml.safe_dump(cfg))
+    r = _snakemake(e2e, "-n", "--cores", "1", "--configfile", "alt.yaml")
+    out = r.stdout + r.stderr
+    assert r.returncode == 0, out
+    assert "rule verification:" in out and "params have changed" in out
+    for other in ("table2", "fig5", "table2_figure", "fig5_figure"):
+        assert f"rule {other}:" not in out
+
+
+@pytest.mark.slow
+def test_e2e_report(e2e):
+    r = _snakemake(e2e, "--configfile", ".test/config.yaml", "--report", "results/report.html")
+    assert r.returncode == 0, r.stderr[-3000:]
+    assert (e2e / "results/report.html").stat().st_size > 100_000
+
+
+# ----------------------------------------------------------------------------- archive
+
+ARCHIVE = REPO / "results" / "archive"
+#: Relative tolerance between an archived number and a fresh run: the solver is
+#: deterministic, so this only absorbs changes of numerics defaults below 0.1 %.
+ARCHIVE_RTOL = 1e-3
+
+
+def test_archive_is_small_and_has_provenance():
+    files = sorted(ARCHIVE.rglob("*.nc"))
+    assert {f.relative_to(ARCHIVE).as_posix() for f in files} >= {
+        f"validation/{s}.nc" for s in STUDY_RULES
+    }
+    assert sum(f.stat().st_size for f in files) < 20e6
+    for f in files:
+        ds = read_netcdf(f)
+        assert ds.attrs["config_sha256"] == ds.attrs["source_config_sha256"]
+        for k in ("study", "git_commit", "config_json", "pencore_version"):
+            assert k in ds.attrs
+
+
+def test_archived_table2_matches_fresh_run():
+    ds = read_netcdf(ARCHIVE / "validation" / "table2.nc")
+    proj, measure = ds.attrs["chosen_projectile"], ds.attrs["chosen_depth_measure"]
+    variable = {"path_length": "path_length", "vertical_depth": "penetration_depth"}[measure]
+    numerics = resolve_numerics(_validate(_shipped_config())["numerics"])
+    row = ds.sel(test=3)  # the oblique shot: exercises the full 3-D motion
+    fresh = pencore.simulate(proj, ds.attrs["target"], float(row["velocity"]),
+                             float(row["obliquity"]), float(row["yaw"]), numerics=numerics)
+    assert float(fresh[variable]) == pytest.approx(float(row["pencore_depth"]),
+                                                   rel=ARCHIVE_RTOL)
+
+
+def test_archived_config_is_the_shipped_one():
+    ds = read_netcdf(ARCHIVE / "validation" / "table2.nc")
+    cfg = _validate(_shipped_config())
+    archived = json.loads(ds.attrs["config_json"])
+    assert archived["validation.table2"] == cfg["validation"]["table2"]
+    assert archived["numerics"] == cfg["numerics"]
+
