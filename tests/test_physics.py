@@ -221,3 +221,12 @@ def test_gravity_option_pulls_down_in_free_flight():
 def test_bad_arguments_raise_input_error(kw, match):
     with pytest.raises(pencore.InputError, match=match):
         pencore.simulate("p2", "soil", **kw)
+
+
+def test_friction_table_zero_at_both_ends_still_acts():
+    """A mu(V_tau) table that is zero at both ends but not in between must still load."""
+    hump = Target.half_space(SOIL.with_friction([(0.0, 0.0), (200.0, 0.2), (400.0, 0.0)]))
+    smooth = pencore.simulate("p2", "soil", 500.0)
+    ds = pencore.simulate("p2", hump, 500.0)
+    assert float(ds.path_length) < 0.9 * float(smooth.path_length)
+    assert _energy_error(ds) < 1e-3

@@ -351,7 +351,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
             mom[1] += w * q * ss
             mom[2] -= w * q * sc
             # --- friction, Gauss quadrature on the loaded arcs
-            if n_gauss > 0 and fric[lay, fric.shape[1] - 1, 1] + fric[lay, 0, 1] > 0.0:
+            if n_gauss > 0 and fric[lay, :, 1].max() > 0.0:
                 level = -eps if eps > 0.0 else 0.0
                 nv = _level_arc(av, kv, phi0, level, True, vlo, vhi)
                 ns = _intersect(blo, bhi, nbase, vlo, vhi, nv, slo, shi)
