@@ -42,6 +42,7 @@ rule table2:
     params:
         study=canonical(VALIDATION["table2"]),
         numerics=canonical(config["numerics"]),
+        code=PENCORE_CODE,
     log:
         "results/logs/validation/table2.log",
     benchmark:
@@ -60,6 +61,7 @@ rule fig5:
     params:
         study=canonical(VALIDATION["fig5"]),
         numerics=canonical(config["numerics"]),
+        code=PENCORE_CODE,
     log:
         "results/logs/validation/fig5.log",
     benchmark:
@@ -77,6 +79,7 @@ rule verification:
     params:
         study=canonical(VALIDATION["verification"]),
         numerics=canonical(config["numerics"]),
+        code=PENCORE_CODE,
     log:
         "results/logs/validation/verification.log",
     benchmark:
