@@ -6,6 +6,8 @@
 # Physics lives in the pencore package; rules call it through thin workflow/scripts/.
 from snakemake.utils import min_version, validate
 
+from pencore.io import package_source_hash
+
 min_version("9.0")
 
 
@@ -22,6 +24,10 @@ report: "workflow/report/workflow.rst"
 # aggregated datasets to commit under results/archive/ to ARCHIVE_DATASETS (rule archive).
 ALL_TARGETS = []
 ARCHIVE_DATASETS = []
+# SHA-256 of pencore's source, given to every solver rule as params.code: Snakemake's
+# `code` trigger sees only a rule's own script, so without it a change in the physics
+# would not rerun the studies that depend on it.
+PENCORE_CODE = package_source_hash()
 
 
 include: "workflow/rules/common.smk"

@@ -14,24 +14,3 @@ def canonical(value):
     return value
 
 
-def pencore_code_hash():
-    """SHA-256 of the pencore package's Python source.
-
-    Given to every solver rule as ``params.code``: Snakemake's ``code`` trigger sees only
-    a rule's own script, so without this a change in the physics would not rerun the
-    studies that depend on it.
-    """
-    import hashlib
-    from pathlib import Path
-
-    import pencore
-
-    digest = hashlib.sha256()
-    root = Path(pencore.__file__).parent
-    for path in sorted(root.rglob("*.py")):
-        digest.update(path.relative_to(root).as_posix().encode())
-        digest.update(path.read_bytes())
-    return digest.hexdigest()
-
-
-PENCORE_CODE = pencore_code_hash()
