@@ -129,3 +129,16 @@ def test_vcr_bracket_is_real():
     hi_run = pencore.simulate("p2", "soil", r.hi, 60.0, stop_at_reversal=True)
     assert lo_run.attrs["reversed"] == 0
     assert hi_run.attrs["reversed"] == 1
+
+
+def test_normal_impact_angles():
+    assert C.YAW_CONVENTIONS == ("axis_tilted", "velocity_tilted")
+    assert C.normal_impact_angles(0.1, "axis_tilted") == (0.1, -0.1)
+    assert C.normal_impact_angles(0.1, "velocity_tilted") == (0.0, 0.1)
+    # axis_tilted: velocity angle obliquity + yaw is exactly normal
+    obl, yaw = C.normal_impact_angles(0.7)
+    assert obl + yaw == 0.0 and obl == 0.7
+    with pytest.raises(InputError, match="convention"):
+        C.normal_impact_angles(0.1, "sideways")
+    with pytest.raises(InputError, match="convention"):
+        C.vci("p4", "soil", 0.1, 200.0, 3000.0, threshold_deg=5.0, convention="x")

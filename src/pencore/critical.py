@@ -10,6 +10,9 @@ verdict switches from False to True:
 * ``vci`` (Figs 13-15): the lowest normal-impact speed at which, for a small yaw, the
   final deviation (:func:`pencore.analysis.final_deviation`) exceeds a chosen threshold
   or the projectile turns back. The paper does not state its threshold; the caller must.
+  Nor does it say which of the velocity or the axis is normal in a "normal impact with
+  yaw": :func:`normal_impact_angles` maps the two readings (:data:`YAW_CONVENTIONS`)
+  onto ``simulate``'s obliquity and yaw.
 
 :func:`find_threshold` does the search on any verdict: it checks both ends of the
 bracket, optionally scans it coarsely to detect a non-monotone verdict, and bisects to a
@@ -40,6 +43,8 @@ __all__ = [
     "vcr",
     "omega_c",
     "vci",
+    "YAW_CONVENTIONS",
+    "normal_impact_angles",
 ]
 
 #: Default (and widest recommended) bracket width for critical velocities (m/s).
@@ -48,6 +53,9 @@ VELOCITY_TOL = 5.0
 OMEGA_TOL = 0.5
 #: Scan points used by :func:`vcr`, :func:`omega_c` and :func:`vci` before bisecting.
 DEFAULT_SCAN = 5
+
+#: Readings of "normal impact with yaw" (:func:`normal_impact_angles`).
+YAW_CONVENTIONS = ("axis_tilted", "velocity_tilted")
 
 #: Possible values of :attr:`CriticalResult.status`.
 STATUSES = ("ok", "non_monotone", "below_range", "above_range", "max_iter")
@@ -309,14 +317,42 @@ def omega_c(projectile: Any, target: Any, velocity: float, lo: float, hi: float,
     return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan)
 
 
+def normal_impact_angles(yaw: float, convention: str = "axis_tilted") -> tuple[float, float]:
+    """``(obliquity, yaw)`` arguments of :func:`pencore.simulate` for a normal impact with
+    yaw ``yaw`` (deg).
+
+    The yaw phi2 is the velocity angle minus the axis angle (paper Fig. 10); for a
+    "normal impact with yaw" (paper Figs 13-15) either can be the normal one:
+
+    ``"axis_tilted"``
+        The velocity is along the target normal and the axis is tilted by ``yaw``:
+        ``obliquity = +yaw``, ``yaw = -yaw``. This reading reproduces the paper's
+        deviations for projectile #4 at 0.1 deg (0.16 deg at 280 m/s, 0.24 deg at
+        1000 m/s; pencore 0.163 and 0.256).
+    ``"velocity_tilted"``
+        The axis is along the normal and the velocity is tilted by ``yaw``:
+        ``obliquity = 0``, ``yaw = yaw`` (pencore 0.063 and 0.156 deg for the same cases).
+    """
+    if convention not in YAW_CONVENTIONS:
+        raise InputError(
+            f"yaw convention must be one of {', '.join(YAW_CONVENTIONS)}, got {convention!r}"
+        )
+    yaw = float(yaw)
+    if convention == "axis_tilted":
+        return yaw, -yaw
+    return 0.0, yaw
+
+
 def vci(projectile: Any, target: Any, yaw: float, lo: float, hi: float,
         threshold_deg: float, tol: float = VELOCITY_TOL, *, omega: float = 0.0,
-        fraction: float = DEFAULT_SPEED_FRACTION, scan: int | None = DEFAULT_SCAN,
-        max_iter: int = 60, **simulate_kwargs: Any) -> CriticalResult:
+        fraction: float = DEFAULT_SPEED_FRACTION, convention: str = "axis_tilted",
+        scan: int | None = DEFAULT_SCAN, max_iter: int = 60,
+        **simulate_kwargs: Any) -> CriticalResult:
     """Critical impact velocity for instability Vci (m/s), normal impact with small yaw.
 
-    Verdict at speed ``v``: the run ``simulate(projectile, target, v, obliquity=0, yaw,
-    omega, stop_at_reversal=True)`` reversed, OR its final deviation
+    Verdict at speed ``v``: the run ``simulate(projectile, target, v, obliquity, yaw',
+    omega, stop_at_reversal=True)``, with ``(obliquity, yaw') =``
+    :func:`normal_impact_angles` ``(yaw, convention)``, reversed, OR its final deviation
     (:func:`pencore.analysis.final_deviation` with ``fraction``: the velocity angle from
     the normal at the last state with speed >= ``fraction`` x impact speed) exceeds
     ``threshold_deg``. The paper gives no threshold (it calls 0.16-0.24 deg "not really
@@ -332,15 +368,20 @@ def vci(projectile: Any, target: Any, yaw: float, lo: float, hi: float,
         Deviation (deg) above which the run counts as unstable, > 0.
     fraction : float
         Speed fraction of the final-deviation definition.
+    convention : {"axis_tilted", "velocity_tilted"}
+        Which of the axis or the velocity is tilted by ``yaw`` (the other is normal); see
+        :func:`normal_impact_angles`. Default ``"axis_tilted"`` (velocity normal), the
+        reading that reproduces the paper's Fig. 13 deviations.
     Other arguments as :func:`vcr`.
     """
     if not (math.isfinite(threshold_deg) and threshold_deg > 0.0):
         raise InputError(f"threshold_deg must be a positive angle, got {threshold_deg!r}")
+    obl, yaw_sim = normal_impact_angles(yaw, convention)
     numerics, overrides, sim = _split(dict(simulate_kwargs), _FIXED)
     pr = prepare(projectile, target, numerics, **overrides)
 
     def verdict(v: float) -> bool:
-        ds = simulate(pr.projectile, pr.target, v, 0.0, yaw, omega,
+        ds = simulate(pr.projectile, pr.target, v, obl, yaw_sim, omega,
                       stop_at_reversal=True, prepared=pr, **sim)
         if int(ds.attrs["reversed"]) == 1:
             return True
