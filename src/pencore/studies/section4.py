@@ -76,6 +76,11 @@ __all__ = [
     "combine",
     "trend",
     "paper_comparison",
+    "STUDIES",
+    "SPLIT_STUDIES",
+    "parts_of",
+    "from_config",
+    "gather",
 ]
 
 #: The paper's projectiles (Table 3), in order of rising Lc/L.
@@ -178,7 +183,8 @@ def _start(start: Sequence[float] | None) -> tuple[float, float, float] | None:
 
 
 def _signed_deviation(ds: xr.Dataset) -> np.ndarray:
-    return np.degrees(np.arctan2(ds["vel_x"].values, -ds["vel_y"].values))
+    """In-plane velocity angle from -y, positive towards +x, unwrapped (degree)."""
+    return np.degrees(np.unwrap(np.arctan2(ds["vel_x"].values, -ds["vel_y"].values)))
 
 
 # ----------------------------------------------------------------------------- trajectories
@@ -256,7 +262,7 @@ def stack_trajectories(runs: Mapping[tuple[int, ...], xr.Dataset],
             if k != "deviation_signed"}
     data["deviation_signed"] = (tdims, hist["deviation_signed"], _attrs(
         "degree", "in-plane angle from the normal -y to the centre of mass velocity, "
-        "positive towards +x"))
+        "positive towards +x (unwrapped)"))
     fd = f"at the last state with speed >= {speed_fraction:g} x impact speed"
     data.update({
         "outcome": (dims, outcome, {"long_name": "how the run ended (stopped, exited, ...)",
@@ -635,16 +641,24 @@ def vci_study(projectiles: Sequence[str], yaws: Sequence[float],
               convention: str = "axis_tilted", lo: float = 100.0, hi: float = 4000.0,
               tol: float = VELOCITY_TOL, scan: int | None = 9,
               speed_fraction: float = analysis.DEFAULT_SPEED_FRACTION,
+              primary_threshold: float | None = None,
               numerics: Numerics | Mapping[str, Any] | None = None) -> xr.Dataset:
     """Critical impact velocity for instability Vci on ``(projectile, yaw, threshold)``.
 
     Each cell is :func:`pencore.critical.vci`: the lowest normal-impact speed at which a
     run with the given yaw turns back or ends with a deviation above ``threshold``
-    (deg). The tip starts touching the surface.
+    (deg). The tip starts touching the surface. ``primary_threshold`` (deg; default the
+    middle of ``thresholds``) is the one the figure and the comparison lead with; the
+    others show how Vci moves with the choice.
     """
     names = list(projectiles)
     yw = _axis(yaws, "yaws")
-    th = _axis(thresholds, "thresholds")
+    th = np.sort(_axis(thresholds, "thresholds"))
+    if primary_threshold is None:
+        primary_threshold = float(th[(th.size - 1) // 2])
+    if not np.any(np.isclose(th, primary_threshold)):
+        raise InputError(f"primary threshold {primary_threshold} is not one of the "
+                         f"thresholds {list(th)}")
     critical.normal_impact_angles(0.0, convention)
     num = resolve_numerics(numerics)
     res = np.empty((len(names), yw.size, th.size), dtype=object)
@@ -667,6 +681,7 @@ def vci_study(projectiles: Sequence[str], yaws: Sequence[float],
         "title": "Paper Fig. 15: critical impact velocity for instability V_ci",
         "target": target,
         "yaw_convention": convention,
+        "primary_threshold_deg": float(primary_threshold),
         "search_range_m_s": np.array([float(lo), float(hi)]),
         "tolerance_m_s": float(tol),
         "scan_points": -1 if scan is None else int(scan),
@@ -920,8 +935,15 @@ def _row(quantity: str, paper: Any, pencore: Any, units: str, note: str, kind: s
         diff = "agrees" if str(paper) == str(pencore) else "differs"
     else:
         diff = ""
-    return dict(quantity=quantity, paper_value=paper, pencore_value=pencore,
-                difference=diff, units=units, note=note, kind=kind, source=source)
+    return dict(quantity=quantity, paper_value=_round(paper), pencore_value=_round(pencore),
+                difference=_round(diff), units=units, note=note, kind=kind, source=source)
+
+
+def _round(x: Any, digits: int = 6) -> Any:
+    """Floats to ``digits`` significant digits (the table is for reading)."""
+    if isinstance(x, float | np.floating) and math.isfinite(float(x)):
+        return float(f"{float(x):.{digits}g}")
+    return x
 
 
 def _is_num(x: Any) -> bool:
@@ -952,7 +974,8 @@ def _pencore_rel(pencore: Any, paper: float) -> str:
 
 
 def paper_comparison(*, fig7: xr.Dataset | None = None, fig8: xr.Dataset | None = None,
-                     fig9: xr.Dataset | None = None, fig12: xr.Dataset | None = None,
+                     fig9: xr.Dataset | None = None, fig11: xr.Dataset | None = None,
+                     fig12: xr.Dataset | None = None,
                      fig13: xr.Dataset | None = None, fig15: xr.Dataset | None = None,
                      fig16: xr.Dataset | None = None,
                      start_height: xr.Dataset | None = None,
@@ -1054,6 +1077,20 @@ def paper_comparison(*, fig7: xr.Dataset | None = None, fig8: xr.Dataset | None 
                  f"{float(spread.max()):.2f} deg)", "trend", "results/fig9/turning_angle.nc"))
 
     # ---- Figs 11-12
+    if fig11 is not None:
+        for y in fig11["yaw"].values:
+            if float(y) == 0.0:
+                continue
+            expect = "+x" if y < 0 else "-x"
+            sub = fig11.sel(yaw=y)
+            add(_row(f"Fig. 11 (#4, {fig11.attrs.get('velocity_fixed', 1000):g} m/s, "
+                     f"{fig11.attrs.get('obliquity_fixed', 30):g} deg): nose direction at "
+                     f"the end, yaw {y:g} deg", expect, str(sub["nose_direction"].item()), "",
+                     "paper: implied by the text (negative yaw keeps the nose +x, positive "
+                     "yaw can turn it to -x); pencore: sign of the axis x component at the "
+                     f"end of the run ({sub['outcome'].item()}, final theta "
+                     f"{float(sub['final_theta']):.0f} deg)", "verdict",
+                     "results/fig11/trajectories.nc: nose_direction"))
     if fig12 is not None:
         tr = trend(_search_lines(fig12, "vcr", "yaw"), "falls")
         add(_row("Fig. 12: Vcr against yaw", "falls", tr.verdict, "", tr.note(), "trend",
@@ -1203,3 +1240,166 @@ def _nose_rows(ds: xr.Dataset) -> list[dict[str, Any]]:
                      "yes" if n_minus and n_big == n_minus else "no", "",
                      f"{n_minus} -x case(s), {n_big} of them at yaw > 1 deg", "verdict", src))
     return rows
+
+
+# ----------------------------------------------------------------------------- configuration
+
+#: Studies that :func:`from_config` runs; those in :data:`SPLIT_STUDIES` run per job
+#: part (a projectile, or a projectile and an obliquity) and are joined by :func:`gather`.
+STUDIES = ("fig7", "fig8", "fig9", "fig11", "fig12", "fig13", "fig15", "fig16",
+           "start_height", "fig18")
+SPLIT_STUDIES = {"fig8": ("projectile",), "fig12": ("projectile", "obliquity"),
+                 "fig15": ("projectile",), "fig18": ("projectile",)}
+
+
+def _range(d: Mapping[str, Any]) -> tuple[float, float]:
+    lo, hi = float(d["min"]), float(d["max"])
+    if not lo < hi:
+        raise InputError(f"range needs min < max, got {dict(d)}")
+    return lo, hi
+
+
+def _values(v: Any) -> list[float]:
+    """A list of numbers, or a ``{min, max, step}`` grid."""
+    if isinstance(v, Mapping):
+        return [float(x) for x in grid(v["min"], v["max"], v["step"])]
+    return [float(x) for x in v]
+
+
+def parts_of(study: str, cfg: Mapping[str, Any]) -> list[dict[str, Any]]:
+    """Job parts of a split study: ``[{"projectile": "p1"}, ...]`` or with
+    ``"obliquity"`` too (deg), from the study's configuration ``cfg``."""
+    if study not in SPLIT_STUDIES:
+        raise InputError(f"{study!r} is not split into parts")
+    projs = list(cfg["projectiles"])
+    if study == "fig12":
+        return [{"projectile": p, "obliquity": o} for p in projs
+                for o in _values(cfg["obliquity_deg"])]
+    return [{"projectile": p} for p in projs]
+
+
+def from_config(study: str, cfg: Mapping[str, Any], shared: Mapping[str, Any],
+                numerics: Numerics | Mapping[str, Any] | None = None, *,
+                projectile: str | None = None, obliquity: float | None = None
+                ) -> xr.Dataset:
+    """Run one study (or one part of a split study) from its configuration entries.
+
+    Parameters
+    ----------
+    study : str
+        One of :data:`STUDIES`.
+    cfg : mapping
+        The study's entry of the ``section4`` configuration block (keys as in
+        ``config/config.yaml``; units in the key names).
+    shared : mapping
+        The block's shared keys (``target``, ``velocity_tol_m_s``, ``omega_tol_rad_s``,
+        ``scan_points``, ``trajectory_samples``, ``speed_fraction``, ``yaw_convention``,
+        ``start_height_m``); only those the study uses are read.
+    numerics : Numerics or mapping, optional
+        Overrides of pencore's numerical defaults.
+    projectile, obliquity
+        The part of a split study (:data:`SPLIT_STUDIES`) to run.
+    """
+    if study not in STUDIES:
+        raise InputError(f"unknown Section 4 study {study!r}; known: {', '.join(STUDIES)}")
+    if study in SPLIT_STUDIES and projectile is None:
+        raise InputError(f"study {study!r} runs per projectile: give projectile=")
+    target = shared.get("target", "soil")
+    n_time = int(shared.get("trajectory_samples", 500))
+    frac = float(shared.get("speed_fraction", analysis.DEFAULT_SPEED_FRACTION))
+    vtol = float(shared.get("velocity_tol_m_s", VELOCITY_TOL))
+    wtol = float(shared.get("omega_tol_rad_s", OMEGA_TOL))
+    scan = shared.get("scan_points", 9)
+    scan = None if scan is None else int(scan)
+    height = float(shared.get("start_height_m", 0.0))
+    num = resolve_numerics(numerics)
+    start = cfg.get("start_m")
+
+    if study == "fig7":
+        return fig7(cfg["projectile"], target, float(cfg["obliquity_deg"]),
+                    _values(cfg["velocities_m_s"]), start=start, numerics=num,
+                    n_time=n_time)
+    if study == "fig8":
+        lo, hi = _range(cfg["velocity_range_m_s"])
+        return fig8([projectile], _values(cfg["obliquity_deg"]), target=target, lo=lo,
+                    hi=hi, tol=vtol, scan=scan, start=start, numerics=num,
+                    low_speeds=_values(cfg.get("low_velocities_m_s", [])))
+    if study == "fig9":
+        return fig9(list(cfg["projectiles"]), target,
+                    obliquity=float(cfg["obliquity_deg"]),
+                    velocity=float(cfg["velocity_m_s"]), start=start,
+                    fractions=_values(cfg["bracket_fractions"]), numerics=num,
+                    n_time=n_time)
+    if study == "fig11":
+        ds = trajectory_set(cfg["projectile"], target, "yaw", _values(cfg["yaw_deg"]),
+                            velocity=float(cfg["velocity_m_s"]),
+                            obliquity=float(cfg["obliquity_deg"]), start=start,
+                            numerics=num, n_time=n_time, speed_fraction=frac)
+        ds.attrs["title"] = "Paper Fig. 11: trajectories of #4 at 30 deg with yaw -1 and +1"
+        return ds
+    if study == "fig12":
+        if obliquity is None:
+            raise InputError("study 'fig12' runs per (projectile, obliquity): give obliquity=")
+        lo, hi = _range(cfg["velocity_range_m_s"])
+        ds = vcr_study([projectile], [float(obliquity)], _values(cfg["yaw_deg"]),
+                       target=target, lo=lo, hi=hi, tol=vtol, scan=scan, start=start,
+                       numerics=num, nose=True,
+                       low_speeds=_values(cfg.get("low_velocities_m_s", [])))
+        ds.attrs["title"] = "Paper Figs 11-12: V_cr against yaw, final nose direction"
+        return ds
+    if study == "fig13":
+        return fig13(cfg["projectile"], target, float(cfg["yaw_deg"]),
+                     _values(cfg["velocities_m_s"]), numerics=num, n_time=n_time,
+                     speed_fraction=frac)
+    if study == "fig15":
+        lo, hi = _range(cfg["velocity_range_m_s"])
+        ths = sorted(set(_values(cfg["thresholds_deg"])) | {float(cfg["threshold_deg"])})
+        return vci_study([projectile], _values(cfg["yaw_deg"]), ths, target=target,
+                         convention=shared.get("yaw_convention", "axis_tilted"), lo=lo,
+                         hi=hi, tol=vtol, scan=scan, speed_fraction=frac,
+                         primary_threshold=float(cfg["threshold_deg"]), numerics=num)
+    if study == "fig16":
+        return fig16(cfg["projectile"], target, float(cfg["velocity_m_s"]),
+                     _values(cfg["omega_rad_s"]), start_height=height, numerics=num,
+                     n_time=n_time, speed_fraction=frac)
+    if study == "start_height":
+        return start_height_study(cfg["projectile"], target, float(cfg["velocity_m_s"]),
+                                  _values(cfg["omega_rad_s"]),
+                                  _values(cfg["start_heights_m"]), numerics=num,
+                                  speed_fraction=frac)
+    # fig18
+    lo, hi = _range(cfg["omega_range_rad_s"])
+    return omega_c_study([projectile], _values(cfg["velocities_m_s"]), target=target, lo=lo,
+                         hi=hi, tol=wtol, scan=scan, start_height=height, numerics=num)
+
+
+def gather(study: str, parts: Sequence[xr.Dataset]) -> xr.Dataset:
+    """Join the parts of a split study (:data:`SPLIT_STUDIES`) into one dataset.
+
+    Parts may come in any order; projectiles keep their first-seen order, obliquities are
+    sorted.
+    """
+    if study not in SPLIT_STUDIES:
+        raise InputError(f"{study!r} is not split into parts")
+    parts = list(parts)
+    if not parts:
+        raise InputError("no parts to gather")
+    projs = list(dict.fromkeys(str(p["projectile"].values[0]) for p in parts))
+    by_p: dict[str, list[xr.Dataset]] = {p: [] for p in projs}
+    for p in parts:
+        by_p[str(p["projectile"].values[0])].append(p)
+    rows = []
+    for p in projs:
+        ps = by_p[p]
+        if study == "fig12":
+            ps = sorted(ps, key=lambda d: float(d["obliquity"].values[0]))
+            rows.append(combine(ps, "obliquity") if len(ps) > 1 else ps[0])
+        else:
+            if len(ps) != 1:
+                raise InputError(f"{len(ps)} parts for projectile {p}; expected 1")
+            rows.append(ps[0])
+    out = combine(rows, "projectile") if len(rows) > 1 else rows[0]
+    for k in ("study", "config_json", "config_sha256", "created_utc", "git_commit",
+              "git_dirty"):
+        out.attrs.pop(k, None)
+    return out
