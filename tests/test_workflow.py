@@ -112,7 +112,8 @@ def test_schema_fills_defaults_of_an_empty_config():
     assert resolve_numerics(cfg["numerics"]) == pencore.Numerics()
     assert cfg["validation"]["table2"]["projectiles"] == ["p1", "p2", "p3", "p4"]
     assert cfg["validation"]["fig5"]["cases"][0]["projectile"] == "concrete_crh3"
-    assert cfg["section4"] == {}
+    assert cfg["section4"]["yaw_convention"] == "axis_tilted"
+    assert cfg["section4"]["fig8"]["projectiles"] == ["p1", "p2", "p3", "p4"]
 
 
 def _bad(mutate) -> str:
@@ -147,14 +148,15 @@ def test_schema_rejects_missing_key():
     assert "'n' is a required property" in msg
 
 
-def test_schema_rejects_unknown_keys_but_leaves_section4_open():
+def test_schema_rejects_unknown_keys():
     msg = _bad(lambda c: c["validation"]["table2"].update(projectile="p2"))
     assert "'projectile' was unexpected" in msg
     msg = _bad(lambda c: c["numerics"].update(rtoll=1e-6))
     assert "'rtoll' was unexpected" in msg
-    cfg = _shipped_config()
-    cfg["section4"] = {"fig7": {"velocities": [1641, 1650]}, "anything": True}
-    _validate(cfg)
+    msg = _bad(lambda c: c["section4"]["fig7"].update(velocities=[1641, 1650]))
+    assert "'velocities' was unexpected" in msg
+    msg = _bad(lambda c: c["section4"].update(yaw_convention="sideways"))
+    assert "'sideways' is not one of" in msg
 
 
 def _walk_properties(node: dict, path: str = ""):
