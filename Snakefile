@@ -32,6 +32,7 @@ PENCORE_CODE = package_source_hash()
 
 include: "workflow/rules/common.smk"
 include: "workflow/rules/validation.smk"
+include: "workflow/rules/section4.smk"
 include: "workflow/rules/archive.smk"
 
 

@@ -69,9 +69,10 @@ def _path(ax, sub: xr.Dataset, point: str = "tip", **kw) -> None:
 
 
 def _search_errorbars(ax, x: np.ndarray, sub: xr.Dataset, name: str, colour: str,
-                      marker: str, label: str, range_hi: float | None = None,
-                      range_lo: float | None = None) -> None:
-    """Converged values with their brackets; out-of-range searches as arrows at the edge."""
+                      marker: str, label: str, jitter: float = 0.0) -> None:
+    """Converged values with their brackets; out-of-range searches as open triangles at
+    the edge of the search range, shifted by ``jitter`` along x so that several
+    projectiles stay visible."""
     status = sub["status"].values.astype(str)
     val = sub[name].values
     lo, hi = sub[f"{name}_lo"].values, sub[f"{name}_hi"].values
@@ -86,10 +87,17 @@ def _search_errorbars(ax, x: np.ndarray, sub: xr.Dataset, name: str, colour: str
         ax.plot(x[nm], val[nm], marker=marker, ms=10, mfc="none", color=colour, ls="none")
     above = status == "above_range"
     if above.any():
-        ax.plot(x[above], lo[above], marker="^", ms=7, mfc="none", color=colour, ls="none")
+        ax.plot(x[above] + jitter, lo[above], marker="^", ms=7, mfc="none", color=colour,
+                ls="none")
     below = status == "below_range"
     if below.any():
-        ax.plot(x[below], hi[below], marker="v", ms=7, mfc="none", color=colour, ls="none")
+        ax.plot(x[below] + jitter, hi[below], marker="v", ms=7, mfc="none", color=colour,
+                ls="none")
+
+
+def _jitter(x: np.ndarray, k: int, n: int) -> float:
+    span = float(np.ptp(x)) if np.size(x) > 1 else 1.0
+    return (k - 0.5 * (n - 1)) * 0.012 * span
 
 
 def _legend_search(ax) -> None:
@@ -137,10 +145,12 @@ def plot_fig8(ds: xr.Dataset) -> Figure:
     fig = new_figure(6.4, 4.6)
     ax = fig.add_subplot()
     obl = ds["obliquity"].values
+    n = ds.sizes["projectile"]
     for k, p in enumerate(ds["projectile"].values):
         sub = ds.sel(projectile=p)
         _search_errorbars(ax, obl, sub, "vcr", _c(k), _MARKERS[k % len(_MARKERS)],
-                          f"{_pname(p)}, $L_c/L$ = {float(sub['lc_over_l']):.3f}")
+                          f"{_pname(p)}, $L_c/L$ = {float(sub['lc_over_l']):.3f}",
+                          _jitter(obl, k, n))
     ax.errorbar([45.0], [1645.5], yerr=[[4.5], [4.5]], fmt="*", ms=11, color="k",
                 label="paper, #2 at 45° (1641 < $V_{cr}$ ≤ 1650)")
     _legend_search(ax)
@@ -240,7 +250,8 @@ def plot_fig12(ds: xr.Dataset) -> Figure:
         for k, p in enumerate(ds["projectile"].values):
             sub = ds.sel(projectile=p, obliquity=ob)
             _search_errorbars(ax, yaw, sub, "vcr", _c(k), _MARKERS[k % len(_MARKERS)],
-                              f"{_pname(p)}, $L_c/L$ = {float(sub['lc_over_l']):.3f}")
+                              f"{_pname(p)}, $L_c/L$ = {float(sub['lc_over_l']):.3f}",
+                              _jitter(yaw, k, ds.sizes["projectile"]))
             if "nose_direction" in sub:
                 nd = sub["nose_direction"].values.astype(str)
                 m = nd == "-x"
@@ -306,7 +317,8 @@ def plot_fig15(ds: xr.Dataset, threshold: float | None = None) -> Figure:
             sub = ds.sel(yaw=y, threshold=t)
             if j == j0:
                 _search_errorbars(ax, lcl, sub, "vci", _c(k), _MARKERS[k % len(_MARKERS)],
-                                  f"$\\varphi_2$ = {y:g}°, threshold {t:g}°")
+                                  f"$\\varphi_2$ = {y:g}°, threshold {t:g}°",
+                                  _jitter(lcl, k, ds.sizes["yaw"]))
             else:
                 v = sub["vci"].values
                 ok = np.isfinite(v)
@@ -398,7 +410,8 @@ def plot_fig18(ds: xr.Dataset) -> Figure:
     for k, p in enumerate(ds["projectile"].values):
         sub = ds.sel(projectile=p)
         _search_errorbars(ax, v, sub, "omega_c", _c(k), _MARKERS[k % len(_MARKERS)],
-                          f"{_pname(p)}, $L_c/L$ = {float(sub['lc_over_l']):.3f}")
+                          f"{_pname(p)}, $L_c/L$ = {float(sub['lc_over_l']):.3f}",
+                          _jitter(v, k, ds.sizes["projectile"]))
     ax.errorbar([1000.0], [22.5], yerr=[[2.5], [2.5]], fmt="*", ms=11, color="k",
                 label="paper, #2 at 1000 m/s (20 < ω_c ≤ 25)")
     _legend_search(ax)

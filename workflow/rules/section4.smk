@@ -1,0 +1,149 @@
+# Section 4 studies of the paper (Figs 7-18) and the comparison table.
+#   s4_study             one dataset: results/<study>/<name>.nc (fig7, fig9, fig11, fig13,
+#                        fig16 and its start-height study)
+#   s4_part              the heavy searches split into independent jobs (both cores busy):
+#                        fig8, fig15, fig18 per projectile; fig12 per (projectile, obliquity)
+#   s4_gather            joins the parts: results/fig8/vcr.nc, results/fig12/vcr_yaw.nc,
+#                        results/fig15/vci.nc, results/fig18/omega_c.nc
+#   s4_<study>_figure    PNG + PDF from the dataset (restyling does not rerun the solver)
+#   s4_paper_comparison  results/paper_comparison.csv: the paper's numbers beside pencore's
+# Physics in pencore.studies.section4 (from_config, gather, paper_comparison); figures in
+# pencore.plotting_section4. Each rule gets only the config entries it reads (params), so
+# editing one study reruns only that study.
+include: "section4_common.smk"
+
+
+# ----------------------------------------------------------------------------- datasets
+
+
+rule s4_study:
+    output:
+        nc="results/{study}/{name}.nc",
+    wildcard_constraints:
+        study="fig7|fig9|fig11|fig13|fig16",
+        name="trajectories|turning_angle|start_height",
+    params:
+        kind=lambda wc: "start_height" if wc.name == "start_height" else wc.study,
+        config=lambda wc: s4_params("start_height" if wc.name == "start_height" else wc.study),
+        code=PENCORE_CODE,
+    log:
+        "results/logs/section4/{study}_{name}.log",
+    benchmark:
+        "results/benchmarks/section4/{study}_{name}.tsv"
+    conda:
+        "../envs/pencore.yaml"
+    script:
+        "../scripts/section4_study.py"
+
+
+rule s4_part:
+    output:
+        nc="results/{study}/parts/{part}.nc",
+    wildcard_constraints:
+        study="fig8|fig12|fig15|fig18",
+        part=r"p[0-9]+(?:_[-0-9.]+)?",
+    params:
+        kind=lambda wc: wc.study,
+        config=lambda wc: s4_params(wc.study),
+        code=PENCORE_CODE,
+    log:
+        "results/logs/section4/{study}_part_{part}.log",
+    benchmark:
+        "results/benchmarks/section4/{study}_part_{part}.tsv"
+    conda:
+        "../envs/pencore.yaml"
+    script:
+        "../scripts/section4_study.py"
+
+
+rule s4_gather:
+    input:
+        parts=lambda wc: s4_parts(wc.study),
+    output:
+        nc="results/{study}/{name}.nc",
+    wildcard_constraints:
+        study="fig8|fig12|fig15|fig18",
+        name="vcr|vcr_yaw|vci|omega_c",
+    localrule: True
+    params:
+        kind=lambda wc: wc.study,
+        config=lambda wc: s4_params(wc.study),
+        code=PENCORE_CODE,
+    log:
+        "results/logs/section4/{study}_{name}_gather.log",
+    benchmark:
+        "results/benchmarks/section4/{study}_{name}_gather.tsv"
+    conda:
+        "../envs/pencore.yaml"
+    script:
+        "../scripts/section4_gather.py"
+
+
+# ----------------------------------------------------------------------------- figures
+
+
+for _kind, (_entry, _dataset) in S4_DATASETS.items():
+
+    rule:
+        name:
+            f"s4_{_kind}_figure"
+        input:
+            nc=_dataset,
+        output:
+            png=report(
+                s4_figure_path(_kind, "png"),
+                caption=f"../report/section4_{_kind}.rst",
+                category="Section 4",
+                subcategory=S4_FIGURE_TITLES[_kind],
+                labels={"name": S4_FIGURE_TITLES[_kind], "type": "figure"},
+            ),
+            pdf=s4_figure_path(_kind, "pdf"),
+        localrule: True
+        params:
+            kind=_kind,
+        log:
+            f"results/logs/section4/{_kind}_figure.log",
+        benchmark:
+            f"results/benchmarks/section4/{_kind}_figure.tsv"
+        conda:
+            "../envs/pencore.yaml"
+        script:
+            "../scripts/section4_figure.py"
+
+
+# ----------------------------------------------------------------------------- comparison
+
+
+rule s4_paper_comparison:
+    input:
+        table2="results/validation/table2.csv",
+        **{kind: dataset for kind, (_, dataset) in S4_DATASETS.items()},
+    output:
+        csv=report(
+            "results/paper_comparison.csv",
+            caption="../report/paper_comparison.rst",
+            category="Section 4",
+            subcategory="Comparison with the paper",
+            labels={"name": "paper comparison", "type": "table"},
+        ),
+    localrule: True
+    params:
+        yaw_convention=S4["yaw_convention"],
+        vci_threshold=S4["fig15"]["threshold_deg"],
+        code=PENCORE_CODE,
+    log:
+        "results/logs/section4/paper_comparison.log",
+    benchmark:
+        "results/benchmarks/section4/paper_comparison.tsv"
+    conda:
+        "../envs/pencore.yaml"
+    script:
+        "../scripts/section4_compare.py"
+
+
+ALL_TARGETS.extend(
+    [dataset for _, dataset in S4_DATASETS.values()]
+    + [s4_figure_path(kind, ext) for kind in S4_DATASETS for ext in ("png", "pdf")]
+    + ["results/paper_comparison.csv"]
+)
+ARCHIVE_DATASETS.extend([dataset for _, dataset in S4_DATASETS.values()])

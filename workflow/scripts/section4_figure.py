@@ -1,0 +1,14 @@
+"""Rules s4_<study>_figure: dataset -> pencore.plotting_section4 -> PNG and PDF."""
+
+from _common import start_log
+
+from pencore.io import read_netcdf
+from pencore.plotting_section4 import PLOTS, save_figure
+
+smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
+log = start_log(smk.log[0], f"plot_{smk.params.kind}")
+
+ds = read_netcdf(smk.input.nc)
+fig = PLOTS[smk.params.kind](ds)
+written = save_figure(fig, smk.output.png, smk.output.pdf)
+log.info("wrote %s", ", ".join(map(str, written)))
