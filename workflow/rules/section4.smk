@@ -141,9 +141,26 @@ rule s4_paper_comparison:
         "../scripts/section4_compare.py"
 
 
+# the comparison table is versioned beside the archived datasets (rule `archive`)
+rule s4_archive_comparison:
+    input:
+        "results/paper_comparison.csv",
+    output:
+        "results/archive/paper_comparison.csv",
+    localrule: True
+    log:
+        "results/logs/archive/paper_comparison.log",
+    conda:
+        "../envs/pencore.yaml"
+    shell:
+        "cp {input} {output} > {log} 2>&1"
+
+
 ALL_TARGETS.extend(
     [dataset for _, dataset in S4_DATASETS.values()]
     + [s4_figure_path(kind, ext) for kind in S4_DATASETS for ext in ("png", "pdf")]
     + ["results/paper_comparison.csv"]
 )
-ARCHIVE_DATASETS.extend([dataset for _, dataset in S4_DATASETS.values()])
+ARCHIVE_DATASETS.extend(
+    [dataset for _, dataset in S4_DATASETS.values()] + ["results/paper_comparison.csv"]
+)
