@@ -362,6 +362,15 @@ def _load_yaml(path: Path, what: str) -> dict[str, Any]:
     return data
 
 
+def _from_yaml_file(spec: str, what: str, build: Any) -> Any:
+    """Load a YAML file and build from it; errors name the file."""
+    data = _load_yaml(Path(spec), what)
+    try:
+        return build(data)
+    except InputError as exc:
+        raise InputError(f"{what} file {spec!r}: {exc}") from None
+
+
 def _looks_like_path(s: str) -> bool:
     return s.endswith((".yaml", ".yml")) or "/" in s
 
@@ -377,11 +386,7 @@ def get_projectile(spec: str | Projectile | dict[str, Any]) -> Projectile:
     if spec in named:
         return named[spec]
     if _looks_like_path(spec) or Path(spec).is_file():
-        data = _load_yaml(Path(spec), "projectile")
-        try:
-            return projectile_from_dict(data)
-        except InputError as exc:
-            raise InputError(f"projectile file {spec!r}: {exc}") from None
+        return _from_yaml_file(spec, "projectile", projectile_from_dict)
     raise InputError(
         f"unknown projectile {spec!r}; use one of {', '.join(sorted(named))} or a YAML file"
     )
@@ -399,9 +404,5 @@ def get_target(spec: str | Target | Medium | dict[str, Any]) -> Target:
     if spec in MEDIA:
         return Target.half_space(MEDIA[spec])
     if _looks_like_path(spec) or Path(spec).is_file():
-        data = _load_yaml(Path(spec), "target")
-        try:
-            return target_from_dict(data)
-        except InputError as exc:
-            raise InputError(f"target file {spec!r}: {exc}") from None
+        return _from_yaml_file(spec, "target", target_from_dict)
     raise InputError(f"unknown target {spec!r}; use one of {', '.join(MEDIA)} or a YAML file")
