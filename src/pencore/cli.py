@@ -197,23 +197,9 @@ def _check_output(out: str) -> Path:
     return path
 
 
-def _write_atomic(ds: Any, path: Path) -> None:
-    """Write ``ds`` to ``path`` via a temporary file in the same directory."""
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    os.close(fd)
-    try:
-        ds.to_netcdf(tmp, engine="netcdf4")
-        # mkstemp makes the file 0600; give it the usual permissions of a new file
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
-        raise
+def _cli_inputs(args: argparse.Namespace) -> dict[str, Any]:
+    """The command-line arguments that made a run, for the file's provenance."""
+    return {k: v for k, v in vars(args).items() if k not in ("func", "command")}
 
 
 def _resolve(kind: str, spec: str, getter: Callable[[str], Any]) -> Any:
@@ -241,6 +227,7 @@ def _fmt_slope(s: float) -> str:
 
 
 def _cmd_simulate(args: argparse.Namespace) -> int:
+    from .io import write_netcdf
     from .library import get_projectile, get_target
     from .solver import simulate
 
@@ -256,7 +243,8 @@ def _cmd_simulate(args: argparse.Namespace) -> int:
     total = time.perf_counter() - t0
     if out is not None:
         try:
-            _write_atomic(ds, out)
+            write_netcdf(ds, out, config_slice={"cli": _cli_inputs(args)},
+                         study="cli/simulate")
         except OSError as exc:
             raise _Failure(f"cannot write output file {str(out)!r}: {exc}", 1) from None
     a = ds.attrs
