@@ -261,7 +261,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
     vhi = np.empty(_MAXI)
     slo = np.empty(_MAXI)
     shi = np.empty(_MAXI)
-    gx, gw = _gauss_table(n_gauss)
+    gx, gw = _leggauss(n_gauss)
 
     for i in range(rings.shape[0]):
         x1 = rings[i, 0]
@@ -363,17 +363,10 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
 
 
 @nb.njit(cache=True)
-def _gauss_table(n):
-    if n <= 0:
-        return np.zeros(1), np.zeros(1)
-    return _leggauss(n)
-
-
-@nb.njit(cache=True)
 def _leggauss(n):
-    """Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n)."""
-    x = np.empty(n)
-    w = np.empty(n)
+    """Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n); empty for n <= 0."""
+    x = np.empty(max(n, 0))
+    w = np.empty(max(n, 0))
     for i in range(n):
         z = math.cos(math.pi * (i + 0.75) / (n + 0.5))
         for _ in range(100):

@@ -21,7 +21,7 @@ from __future__ import annotations
 import json
 import math
 import time
-from dataclasses import asdict, dataclass, field, replace
+from dataclasses import asdict, dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -211,7 +211,6 @@ class _Prepared:
     mass: float
     inertia: np.ndarray
     lc: float
-    extra: dict[str, Any] = field(default_factory=dict)
 
 
 def prepare(projectile: Any, target: Any, numerics: Numerics | None = None,
