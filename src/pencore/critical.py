@@ -255,6 +255,14 @@ def _split(kwargs: dict[str, Any], fixed: set[str]) -> tuple[Numerics | None, di
     return numerics, overrides, kwargs
 
 
+def _turns_back(pr: Any, sim: dict[str, Any], velocity: float, obliquity: float,
+                yaw: float, omega: float) -> bool:
+    """Run to the first reversal (or the end) and say whether the projectile turned back."""
+    ds = simulate(pr.projectile, pr.target, velocity, obliquity, yaw, omega,
+                  stop_at_reversal=True, prepared=pr, **sim)
+    return int(ds.attrs["reversed"]) == 1
+
+
 def vcr(projectile: Any, target: Any, obliquity: float, yaw: float = 0.0,
         lo: float = 100.0, hi: float = 4000.0, tol: float = VELOCITY_TOL, *,
         omega: float = 0.0, scan: int | None = DEFAULT_SCAN, max_iter: int = 60,
@@ -288,9 +296,7 @@ def vcr(projectile: Any, target: Any, obliquity: float, yaw: float = 0.0,
     pr = prepare(projectile, target, numerics, **overrides)
 
     def verdict(v: float) -> bool:
-        ds = simulate(pr.projectile, pr.target, v, obliquity, yaw, omega,
-                      stop_at_reversal=True, prepared=pr, **sim)
-        return int(ds.attrs["reversed"]) == 1
+        return _turns_back(pr, sim, v, obliquity, yaw, omega)
 
     return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan)
 
@@ -310,9 +316,7 @@ def omega_c(projectile: Any, target: Any, velocity: float, lo: float, hi: float,
     pr = prepare(projectile, target, numerics, **overrides)
 
     def verdict(w: float) -> bool:
-        ds = simulate(pr.projectile, pr.target, velocity, obliquity, yaw, w,
-                      stop_at_reversal=True, prepared=pr, **sim)
-        return int(ds.attrs["reversed"]) == 1
+        return _turns_back(pr, sim, velocity, obliquity, yaw, w)
 
     return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan)
 
