@@ -43,8 +43,9 @@ def quantities(num: pencore.Numerics) -> dict[str, float]:
     d = pencore.simulate("p2", "soil", 280.0, prepared=p2)
     o = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0, prepared=p2)
     y = pencore.simulate("p4", "soil", 1000.0, obliquity=0.1, yaw=-0.1, prepared=p4)
-    v = critical.vcr("p2", "soil", 45.0, lo=1300.0, hi=1900.0, tol=1.0, numerics=num,
-                     start=(-1.0, 1.0, 0.0))
+    v = critical.vcr(
+        "p2", "soil", 45.0, lo=1300.0, hi=1900.0, tol=1.0, numerics=num, start=(-1.0, 1.0, 0.0)
+    )
     return {
         "depth_280": float(d.penetration_depth),
         "path_45_1000": float(o.path_length),
@@ -60,19 +61,33 @@ def main() -> None:
     for name, values in SWEEPS.items():
         for val in values:
             if name == "mesh_factor":
-                num = dataclasses.replace(DEFAULT, n_nose=int(DEFAULT.n_nose * val),
-                                          n_shank=int(DEFAULT.n_shank * val))
+                num = dataclasses.replace(
+                    DEFAULT, n_nose=int(DEFAULT.n_nose * val), n_shank=int(DEFAULT.n_shank * val)
+                )
             else:
                 num = dataclasses.replace(DEFAULT, **{name: val})
             t0 = time.perf_counter()
             q = quantities(num)
-            q.update(parameter=name, value=val, seconds=time.perf_counter() - t0,
-                     depth_280_vs_exact=q["depth_280"] / ref_depth - 1.0)
+            q.update(
+                parameter=name,
+                value=val,
+                seconds=time.perf_counter() - t0,
+                depth_280_vs_exact=q["depth_280"] / ref_depth - 1.0,
+            )
             rows.append(q)
             print(q, flush=True)
     df = pd.DataFrame(rows)
-    cols = ["parameter", "value", "depth_280", "depth_280_vs_exact", "path_45_1000",
-            "turn_45_1000", "dev_p4_1000", "vcr_p2_45", "seconds"]
+    cols = [
+        "parameter",
+        "value",
+        "depth_280",
+        "depth_280_vs_exact",
+        "path_45_1000",
+        "turn_45_1000",
+        "dev_p4_1000",
+        "vcr_p2_45",
+        "seconds",
+    ]
     df = df[cols]
     out = Path(__file__).parent / "results"
     out.mkdir(exist_ok=True)

@@ -54,14 +54,16 @@ def test_arc_constant_curvature_tangent_slope_no_inflection():
     np.testing.assert_allclose(kappa[2:-2], 1.0 / r, rtol=2e-3)  # one-sided at the ends
     np.testing.assert_allclose(kappa, 1.0 / r, rtol=2e-2)
     # compare directions (the slope itself is huge where the path is nearly vertical)
-    np.testing.assert_allclose(np.arctan(A.slope(x, y, t)), np.arctan(-1.0 / np.tan(phi)),
-                               atol=1e-4)
+    np.testing.assert_allclose(
+        np.arctan(A.slope(x, y, t)), np.arctan(-1.0 / np.tan(phi)), atol=1e-4
+    )
     assert len(A.inflection_points(x, y, t)) == 0
     assert len(A.inflection_points(x, y)) == 0
     # clockwise traversal flips the sign
     t_back = t[-1] - t[::-1]
-    np.testing.assert_allclose(A.signed_curvature(x[::-1], y[::-1], t_back)[2:-2], -1.0 / r,
-                               rtol=2e-3)
+    np.testing.assert_allclose(
+        A.signed_curvature(x[::-1], y[::-1], t_back)[2:-2], -1.0 / r, rtol=2e-3
+    )
 
 
 def test_arc_with_exact_velocities():
@@ -139,22 +141,32 @@ def _line_arc_line(r=2.0, turn_deg=30.0, speed=500.0, n=(120, 300, 150), theta0=
     turn = math.radians(turn_deg)
     sg = math.copysign(1.0, turn)
     L1, L2, L3 = 1.5, r * abs(turn), 2.0
-    s = np.concatenate((
-        _jittered(0.0, L1, n[0], seed=6)[:-1],
-        _jittered(L1, L1 + L2, n[1], seed=7)[:-1],
-        _jittered(L1 + L2, L1 + L2 + L3, n[2], seed=8),
-    ))
+    s = np.concatenate(
+        (
+            _jittered(0.0, L1, n[0], seed=6)[:-1],
+            _jittered(L1, L1 + L2, n[1], seed=7)[:-1],
+            _jittered(L1 + L2, L1 + L2 + L3, n[2], seed=8),
+        )
+    )
     heading = np.where(s < L1, a0, np.where(s < L1 + L2, a0 + sg * (s - L1) / r, a0 + turn))
     x0, y0 = -1.0, 1.0
     xa, ya = x0 + L1 * math.cos(a0), y0 + L1 * math.sin(a0)
     cx, cy = xa - sg * r * math.sin(a0), ya + sg * r * math.cos(a0)  # centre of the arc
     xb, yb = cx + sg * r * math.sin(a0 + turn), cy - sg * r * math.cos(a0 + turn)
-    x = np.where(s < L1, x0 + s * math.cos(a0),
-                 np.where(s < L1 + L2, cx + sg * r * np.sin(heading),
-                          xb + (s - L1 - L2) * math.cos(a0 + turn)))
-    y = np.where(s < L1, y0 + s * math.sin(a0),
-                 np.where(s < L1 + L2, cy - sg * r * np.cos(heading),
-                          yb + (s - L1 - L2) * math.sin(a0 + turn)))
+    x = np.where(
+        s < L1,
+        x0 + s * math.cos(a0),
+        np.where(
+            s < L1 + L2, cx + sg * r * np.sin(heading), xb + (s - L1 - L2) * math.cos(a0 + turn)
+        ),
+    )
+    y = np.where(
+        s < L1,
+        y0 + s * math.sin(a0),
+        np.where(
+            s < L1 + L2, cy - sg * r * np.cos(heading), yb + (s - L1 - L2) * math.sin(a0 + turn)
+        ),
+    )
     t = s / speed
     theta = theta0 + np.degrees(heading - a0)  # axis angle from -y grows as the path turns
     vx, vy = speed * np.cos(heading), speed * np.sin(heading)
@@ -164,8 +176,9 @@ def _line_arc_line(r=2.0, turn_deg=30.0, speed=500.0, n=(120, 300, 150), theta0=
 def test_line_arc_line_fixture_is_consistent():
     for turn in (30.0, -20.0):
         d = _line_arc_line(turn_deg=turn)
-        np.testing.assert_allclose(A.slope(d["x"], d["y"], d["t"])[2:-2],
-                                   (d["vy"] / d["vx"])[2:-2], rtol=2e-2, atol=2e-3)
+        np.testing.assert_allclose(
+            A.slope(d["x"], d["y"], d["t"])[2:-2], (d["vy"] / d["vx"])[2:-2], rtol=2e-2, atol=2e-3
+        )
 
 
 def test_turning_angle_line_arc_line():
@@ -187,8 +200,13 @@ def test_turning_angle_line_arc_line():
 def test_turning_angle_from_dataset_and_opposite_turn():
     d = _line_arc_line(turn_deg=-20.0)
     ds = xr.Dataset(
-        {"cm_x": ("time", d["x"]), "cm_y": ("time", d["y"]), "vel_x": ("time", d["vx"]),
-         "vel_y": ("time", d["vy"]), "theta": ("time", d["theta"])},
+        {
+            "cm_x": ("time", d["x"]),
+            "cm_y": ("time", d["y"]),
+            "vel_x": ("time", d["vx"]),
+            "vel_y": ("time", d["vy"]),
+            "theta": ("time", d["theta"]),
+        },
         coords={"time": d["t"]},
         attrs={"impact_velocity_m_s": 500.0},
     )
@@ -248,11 +266,18 @@ def _run_like(vx, vy, axis_x=None, reversed_=0, v0=None):
     vx, vy = np.asarray(vx, float), np.asarray(vy, float)
     ax = np.zeros(n) if axis_x is None else np.asarray(axis_x, float)
     return xr.Dataset(
-        {"vel_x": ("time", vx), "vel_y": ("time", vy), "vel_z": ("time", np.zeros(n)),
-         "speed": ("time", np.hypot(vx, vy)), "axis_x": ("time", ax)},
+        {
+            "vel_x": ("time", vx),
+            "vel_y": ("time", vy),
+            "vel_z": ("time", np.zeros(n)),
+            "speed": ("time", np.hypot(vx, vy)),
+            "axis_x": ("time", ax),
+        },
         coords={"time": np.arange(n, dtype=float)},
-        attrs={"reversed": reversed_,
-               "impact_velocity_m_s": float(np.hypot(vx[0], vy[0]) if v0 is None else v0)},
+        attrs={
+            "reversed": reversed_,
+            "impact_velocity_m_s": float(np.hypot(vx[0], vy[0]) if v0 is None else v0),
+        },
     )
 
 
@@ -264,8 +289,7 @@ def test_final_deviation_uses_last_fast_state():
     assert A.final_deviation(ds, fraction=0.05) == pytest.approx(30.0)
     assert A.final_deviation(ds, fraction=0.0) == pytest.approx(80.0)
     assert A.final_state_index(ds["speed"].values) == 3
-    assert A.final_deviation_arrays(speed * np.sin(ang), -speed * np.cos(ang)) == \
-        pytest.approx(0.5)
+    assert A.final_deviation_arrays(speed * np.sin(ang), -speed * np.cos(ang)) == pytest.approx(0.5)
 
 
 def test_nose_direction_and_reversed():

@@ -22,7 +22,10 @@ def run_cli(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[
     """Run ``python -m pencore.cli`` in a fresh interpreter."""
     return subprocess.run(
         [sys.executable, "-m", "pencore.cli", *args],
-        capture_output=True, text=True, cwd=cwd, timeout=300,
+        capture_output=True,
+        text=True,
+        cwd=cwd,
+        timeout=300,
     )
 
 
@@ -73,8 +76,10 @@ def test_bad_numbers(tmp_path, capsys, option, value, needles):
 
 def test_yaw_beyond_horizon_comes_from_library(tmp_path, capsys):
     out = tmp_path / "out.nc"
-    assert main([*BASE, "--velocity", "280", "--obliquity", "60", "--yaw", "40",
-                 "--out", str(out)]) == 2
+    assert (
+        main([*BASE, "--velocity", "280", "--obliquity", "60", "--yaw", "40", "--out", str(out)])
+        == 2
+    )
     assert_one_line_error(capsys.readouterr().err, "yaw", "40")
     assert not out.exists()
 
@@ -90,35 +95,71 @@ def _projectile_yaml(crh: str) -> str:
 @pytest.mark.parametrize(
     ("kind", "make", "needles"),
     [
-        ("projectile", lambda d: write(d / "crh.yaml", _projectile_yaml("0.3")),
-         ["CRH", "0.3", "0.5"]),
+        (
+            "projectile",
+            lambda d: write(d / "crh.yaml", _projectile_yaml("0.3")),
+            ["CRH", "0.3", "0.5"],
+        ),
         ("projectile", lambda d: "p9", ["'p9'", "p1", "p4"]),
         ("target", lambda d: "mud", ["'mud'", "soil", "concrete", "aluminium"]),
         ("projectile", lambda d: str(d / "missing.yaml"), ["missing.yaml"]),
         ("target", lambda d: str(d / "missing.yaml"), ["missing.yaml"]),
-        ("projectile", lambda d: write(d / "bad.yaml", "name: [unclosed\n"),
-         ["bad.yaml", "YAML"]),
+        ("projectile", lambda d: write(d / "bad.yaml", "name: [unclosed\n"), ["bad.yaml", "YAML"]),
         ("target", lambda d: write(d / "list.yaml", "- 1\n- 2\n"), ["list.yaml", "mapping"]),
-        ("projectile", lambda d: write(d / "nodiam.yaml", "name: q\nnose: {kind: flat}\n"),
-         ["diameter"]),
-        ("projectile", lambda d: (d / "bin.yaml").write_bytes(b"\xff\xfe\x00") and d / "bin.yaml",
-         ["bin.yaml"]),
-        ("projectile", lambda d: write(d / "shank.yaml", "name: q\ndiameter: 0.1\n"
-                                       "nose: {kind: ogive, crh: 3, density: 7850}\nshank: 5\n"),
-         ["shank.yaml"]),
-        ("projectile", lambda d: write(d / "novol.yaml", "name: q\ndiameter: 0.1\n"
-                                       "nose: {kind: flat, density: 7850}\n"),
-         ["novol.yaml", "volume"]),
+        (
+            "projectile",
+            lambda d: write(d / "nodiam.yaml", "name: q\nnose: {kind: flat}\n"),
+            ["diameter"],
+        ),
+        (
+            "projectile",
+            lambda d: (d / "bin.yaml").write_bytes(b"\xff\xfe\x00") and d / "bin.yaml",
+            ["bin.yaml"],
+        ),
+        (
+            "projectile",
+            lambda d: write(
+                d / "shank.yaml",
+                "name: q\ndiameter: 0.1\nnose: {kind: ogive, crh: 3, density: 7850}\nshank: 5\n",
+            ),
+            ["shank.yaml"],
+        ),
+        (
+            "projectile",
+            lambda d: write(
+                d / "novol.yaml", "name: q\ndiameter: 0.1\nnose: {kind: flat, density: 7850}\n"
+            ),
+            ["novol.yaml", "volume"],
+        ),
     ],
-    ids=["crh", "unknown-projectile", "unknown-target", "missing-projectile-file",
-         "missing-target-file", "invalid-yaml", "non-mapping-yaml", "missing-key",
-         "binary-file", "bad-shank", "no-volume"],
+    ids=[
+        "crh",
+        "unknown-projectile",
+        "unknown-target",
+        "missing-projectile-file",
+        "missing-target-file",
+        "invalid-yaml",
+        "non-mapping-yaml",
+        "missing-key",
+        "binary-file",
+        "bad-shank",
+        "no-volume",
+    ],
 )
 def test_bad_projectile_or_target(tmp_path, capsys, kind, make, needles):
     spec = str(make(tmp_path))
     out = tmp_path / "out.nc"
-    argv = ["simulate", "--projectile", "p2", "--target", "soil", "--velocity", "280",
-            "--out", str(out)]
+    argv = [
+        "simulate",
+        "--projectile",
+        "p2",
+        "--target",
+        "soil",
+        "--velocity",
+        "280",
+        "--out",
+        str(out),
+    ]
     argv[argv.index(f"--{kind}") + 1] = spec
     assert main(argv) == 2
     assert_one_line_error(capsys.readouterr().err, *needles)
@@ -233,8 +274,15 @@ def test_simulate_writes_netcdf(tmp_path):
     match = DEPTH_RE.search(res.stdout)
     assert match, res.stdout
     printed = match.group(1)
-    for label in ("tip path length below surface:", "outcome:", "reversed:",
-                  "final slope dy/dx:", "final deviation from normal:", "run time:", "steps:"):
+    for label in (
+        "tip path length below surface:",
+        "outcome:",
+        "reversed:",
+        "final slope dy/dx:",
+        "final deviation from normal:",
+        "run time:",
+        "steps:",
+    ):
         assert label in res.stdout
     assert re.search(r"^final deviation from normal:\s+\S+ deg$", res.stdout, re.MULTILINE)
     assert re.search(r"^run time:\s+\S+ s", res.stdout, re.MULTILINE)
@@ -252,8 +300,26 @@ def test_simulate_writes_netcdf(tmp_path):
 @pytest.mark.slow
 def test_simulate_all_options_in_process(tmp_path, capsys):
     out = tmp_path / "y.nc"
-    rc = main([*BASE, "--velocity", "280", "--obliquity", "30", "--yaw", "5", "--omega", "10",
-               "--start", "0", "0.01", "0", "--stop-at-reversal", "--out", str(out)])
+    rc = main(
+        [
+            *BASE,
+            "--velocity",
+            "280",
+            "--obliquity",
+            "30",
+            "--yaw",
+            "5",
+            "--omega",
+            "10",
+            "--start",
+            "0",
+            "0.01",
+            "0",
+            "--stop-at-reversal",
+            "--out",
+            str(out),
+        ]
+    )
     assert rc == 0
     text = capsys.readouterr().out
     printed = DEPTH_RE.search(text).group(1)
@@ -272,9 +338,24 @@ def test_simulate_all_options_in_process(tmp_path, capsys):
     ("argv", "needles"),
     [
         (["--help"], ["m/s", "deg", "rad/s", "(m)", "simulate", "fit-table3", "list"]),
-        (["simulate", "--help"], ["m/s", "deg", "rad/s", "in m", "--velocity", "--obliquity",
-                                  "--yaw", "--omega", "--start", "--stop-at-reversal",
-                                  "--out", "--projectile", "--target"]),
+        (
+            ["simulate", "--help"],
+            [
+                "m/s",
+                "deg",
+                "rad/s",
+                "in m",
+                "--velocity",
+                "--obliquity",
+                "--yaw",
+                "--omega",
+                "--start",
+                "--stop-at-reversal",
+                "--out",
+                "--projectile",
+                "--target",
+            ],
+        ),
         (["fit-table3", "--help"], ["kg", "m"]),
         (["list", "--help"], ["kg", "mm", "Pa"]),
     ],

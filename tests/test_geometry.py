@@ -50,8 +50,13 @@ def test_hemisphere_mass_properties():
 def test_ogive_volume_matches_independent_quadrature():
     nose = OgiveNose(3.0, 1.0)
     p = Projectile("ogive", 2 * A, nose)
-    vol, _ = quad(lambda s: math.pi * float(nose.radius(np.array(s), A)) ** 2, 0, p.nose_length,
-                  epsabs=0, epsrel=1e-12)
+    vol, _ = quad(
+        lambda s: math.pi * float(nose.radius(np.array(s), A)) ** 2,
+        0,
+        p.nose_length,
+        epsabs=0,
+        epsrel=1e-12,
+    )
     assert p.mass_properties().mass == pytest.approx(vol, rel=1e-9)
 
 
@@ -62,8 +67,8 @@ def test_composite_centre_of_mass_moves_back_with_denser_shank():
 
 
 @pytest.mark.parametrize(
-    "nose", [OgiveNose(3.0, RHO), OgiveNose(0.5, RHO), ConeNose(math.radians(30), RHO),
-             FlatNose(RHO)]
+    "nose",
+    [OgiveNose(3.0, RHO), OgiveNose(0.5, RHO), ConeNose(math.radians(30), RHO), FlatNose(RHO)],
 )
 def test_surface_area_converges_to_exact(nose):
     p = Projectile("p", 2 * A, nose, (Cylinder(0.3, RHO),))

@@ -31,8 +31,9 @@ def test_round_trip_with_provenance(tmp_path):
     cfg = {"b": [1, 2], "a": {"x": 1.5}}
     path = write_netcdf(ds, tmp_path / "sub" / "t.nc", config_slice=cfg, study="test/study")
     back = read_netcdf(path)
-    xr.testing.assert_allclose(back[["tip_y", "penetration_depth"]],
-                               ds[["tip_y", "penetration_depth"]])
+    xr.testing.assert_allclose(
+        back[["tip_y", "penetration_depth"]], ds[["tip_y", "penetration_depth"]]
+    )
     assert back["time"].dtype.kind == "f" and back["time"].attrs["units"] == "s"
     a = back.attrs
     assert a["study"] == "test/study"

@@ -45,8 +45,9 @@ def _embedded_state(velocity):
 def test_axial_force_equals_nose_factor_closed_form(name, velocity):
     p = _body(NOSES[name])
     pr = prepare(p, "soil")
-    fb, mb, _ = contact_loads(_embedded_state(velocity), pr.rings, pr.bounds, pr.coef, pr.fric,
-                              pr.numerics.eps, 0)
+    fb, mb, _ = contact_loads(
+        _embedded_state(velocity), pr.rings, pr.bounds, pr.coef, pr.fric, pr.numerics.eps, 0
+    )
     exact = closedform.axial_force(p, SOIL, velocity)
     assert -fb[0] == pytest.approx(exact, rel=5e-3)
     # no lateral force or moment at zero angle of attack
@@ -173,10 +174,12 @@ def test_convergence_under_step_halving_and_mesh_doubling(velocity):
     num = pencore.Numerics()
     runs = [
         pencore.simulate("p2", "soil", velocity, **base),
-        pencore.simulate("p2", "soil", velocity, rtol=num.rtol / 8,
-                         max_travel=num.max_travel / 2, **base),
-        pencore.simulate("p2", "soil", velocity, n_nose=2 * num.n_nose,
-                         n_shank=2 * num.n_shank, **base),
+        pencore.simulate(
+            "p2", "soil", velocity, rtol=num.rtol / 8, max_travel=num.max_travel / 2, **base
+        ),
+        pencore.simulate(
+            "p2", "soil", velocity, n_nose=2 * num.n_nose, n_shank=2 * num.n_shank, **base
+        ),
     ]
     ref = runs[0]
     for r in runs[1:]:

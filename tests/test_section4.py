@@ -82,18 +82,23 @@ def _search(values, tol=5.0):
         if np.isnan(v):
             out.append(CriticalResult(NAN, 4000.0, NAN, 2, True, "above_range", "", (), tol))
         else:
-            out.append(CriticalResult(v, v - tol / 2, v + tol / 2, 9, True, "ok", "", (),
-                                      tol))
+            out.append(CriticalResult(v, v - tol / 2, v + tol / 2, 9, True, "ok", "", (), tol))
     return np.array(out, dtype=object).reshape(np.shape(values))
 
 
 def _fig8(vcr):
     """Synthetic Fig. 8 dataset on (projectile, obliquity) from an array of Vcr."""
     obl = np.array([15.0, 45.0, 75.0])
-    data = S._search_vars(_search(vcr), "vcr", "m s-1", "critical reverse velocity",
-                          ("projectile", "obliquity"))
-    return xr.Dataset(data, coords={**S.projectile_coords(["p2", "p4"]),
-                                    "obliquity": ("obliquity", obl, {"units": "degree"})})
+    data = S._search_vars(
+        _search(vcr), "vcr", "m s-1", "critical reverse velocity", ("projectile", "obliquity")
+    )
+    return xr.Dataset(
+        data,
+        coords={
+            **S.projectile_coords(["p2", "p4"]),
+            "obliquity": ("obliquity", obl, {"units": "degree"}),
+        },
+    )
 
 
 def _rows(df, start):
@@ -103,8 +108,14 @@ def _rows(df, start):
 def test_comparison_fig8_trends_follow_the_data():
     falls = _fig8(np.array([[3000.0, 1574.0, 600.0], [2100.0, 1100.0, 400.0]]))
     df = S.paper_comparison(fig8=falls, table3=False)
-    assert list(df.columns[:6]) == ["quantity", "paper_value", "pencore_value", "difference",
-                                    "units", "note"]
+    assert list(df.columns[:6]) == [
+        "quantity",
+        "paper_value",
+        "pencore_value",
+        "difference",
+        "units",
+        "note",
+    ]
     got = dict(zip(df["quantity"], df["pencore_value"], strict=True))
     assert got["Fig. 8: Vcr against obliquity"] == "holds"
     assert got["Fig. 8: Vcr against Lc/L"] == "holds"
@@ -114,9 +125,12 @@ def test_comparison_fig8_trends_follow_the_data():
     assert vcr["units"] == "m s-1" and vcr["kind"] == "value"
     # the same table from data where Vcr rises with obliquity and with Lc/L
     rises = _fig8(np.array([[600.0, 1574.0, 3000.0], [700.0, 2000.0, 3500.0]]))
-    got = dict(zip(*S.paper_comparison(fig8=rises, table3=False)[["quantity",
-                                                                   "pencore_value"]].T.values,
-                   strict=True))
+    got = dict(
+        zip(
+            *S.paper_comparison(fig8=rises, table3=False)[["quantity", "pencore_value"]].T.values,
+            strict=True,
+        )
+    )
     assert got["Fig. 8: Vcr against obliquity"] == "does not hold"
     assert got["Fig. 8: Vcr against Lc/L"] == "does not hold"
     # a search above its range is reported as a bound, not a number
@@ -127,24 +141,40 @@ def test_comparison_fig8_trends_follow_the_data():
 
 def test_comparison_fig9_fig18_and_verdict_rows():
     fig9 = xr.Dataset(
-        {"delta_theta": (("projectile", "bracket_fraction"),
-                         np.array([[1.1, 1.2], [1.2, 1.3], [1.3, 1.4], [1.7, 1.8]]),
-                         {"units": "degree", "long_name": "turning angle"})},
-        coords={**S.projectile_coords(["p1", "p2", "p3", "p4"]),
-                "bracket_fraction": ("bracket_fraction", [0.02, 0.05])},
-        attrs={"primary_bracket_fraction": 0.05})
+        {
+            "delta_theta": (
+                ("projectile", "bracket_fraction"),
+                np.array([[1.1, 1.2], [1.2, 1.3], [1.3, 1.4], [1.7, 1.8]]),
+                {"units": "degree", "long_name": "turning angle"},
+            )
+        },
+        coords={
+            **S.projectile_coords(["p1", "p2", "p3", "p4"]),
+            "bracket_fraction": ("bracket_fraction", [0.02, 0.05]),
+        },
+        attrs={"primary_bracket_fraction": 0.05},
+    )
     df = S.paper_comparison(fig9=fig9, table3=False)
     assert df["pencore_value"].tolist() == ["holds"]
     fig9["delta_theta"] = fig9["delta_theta"][::-1].assign_coords(
-        projectile=fig9["projectile"], lc_over_l=fig9["lc_over_l"])
+        projectile=fig9["projectile"], lc_over_l=fig9["lc_over_l"]
+    )
     assert S.paper_comparison(fig9=fig9, table3=False)["pencore_value"].tolist() == [
-        "does not hold"]
+        "does not hold"
+    ]
 
     # Fig. 18: p2 never turns back in range, p4 falls with Vi
-    data = S._search_vars(_search(np.array([[NAN, NAN], [62.0, 20.0]])), "omega_c",
-                          "rad s-1", "omega_c", ("projectile", "velocity"))
-    fig18 = xr.Dataset(data, coords={**S.projectile_coords(["p2", "p4"]),
-                                     "velocity": ("velocity", [500.0, 1000.0])})
+    data = S._search_vars(
+        _search(np.array([[NAN, NAN], [62.0, 20.0]])),
+        "omega_c",
+        "rad s-1",
+        "omega_c",
+        ("projectile", "velocity"),
+    )
+    fig18 = xr.Dataset(
+        data,
+        coords={**S.projectile_coords(["p2", "p4"]), "velocity": ("velocity", [500.0, 1000.0])},
+    )
     df = S.paper_comparison(fig18=fig18, table3=False)
     got = dict(zip(df["quantity"], df["pencore_value"], strict=True))
     assert got["omega_c of #2 at 1000 m/s (Figs 16-17)"] == "> 4000"
@@ -152,9 +182,13 @@ def test_comparison_fig9_fig18_and_verdict_rows():
     assert got["Fig. 18: omega_c against Lc/L"] == "holds"
 
     # Fig. 7 verdicts: a dataset where 1641 turns back disagrees with the paper
-    fig7 = xr.Dataset({"reversed": ("velocity", np.array([1, 1, 1], dtype=np.int8)),
-                       "x_linear": ("velocity", [6.9, 7.0, 7.1])},
-                      coords={"velocity": [1641.0, 1650.0, 1700.0]})
+    fig7 = xr.Dataset(
+        {
+            "reversed": ("velocity", np.array([1, 1, 1], dtype=np.int8)),
+            "x_linear": ("velocity", [6.9, 7.0, 7.1]),
+        },
+        coords={"velocity": [1641.0, 1650.0, 1700.0]},
+    )
     df = S.paper_comparison(fig7=fig7, table3=False)
     verdicts = df[df["kind"] == "verdict"].set_index("quantity")["difference"]
     assert verdicts.str.contains("1641").index.size == 3
@@ -165,13 +199,20 @@ def test_comparison_fig9_fig18_and_verdict_rows():
 def test_comparison_nose_direction_statements():
     dims = ("projectile", "obliquity", "yaw")
     yaw = np.array([-1.0, 0.0, 2.0])
-    nd = np.array([[["+x", "+x", "-x"], ["+x", "+x", "+x"]],
-                   [["+x", "+x", "-x"], ["+x", "+x", "-x"]]], dtype=object)
+    nd = np.array(
+        [[["+x", "+x", "-x"], ["+x", "+x", "+x"]], [["+x", "+x", "-x"], ["+x", "+x", "-x"]]],
+        dtype=object,
+    )
     data = S._search_vars(_search(np.full((2, 2, 3), 1000.0)), "vcr", "m s-1", "Vcr", dims)
     data["nose_direction"] = (dims, nd)
-    ds = xr.Dataset(data, coords={**S.projectile_coords(["p2", "p4"]),
-                                  "obliquity": ("obliquity", [30.0, 60.0]),
-                                  "yaw": ("yaw", yaw)})
+    ds = xr.Dataset(
+        data,
+        coords={
+            **S.projectile_coords(["p2", "p4"]),
+            "obliquity": ("obliquity", [30.0, 60.0]),
+            "yaw": ("yaw", yaw),
+        },
+    )
     got = {r["quantity"]: r["pencore_value"] for r in S._nose_rows(ds)}
     assert got["Fig. 12: nose points +x at Vcr for every negative yaw"] == "yes"
     assert got["Fig. 12: flip to -x more likely at 30 than 60 deg"] == "yes"  # 2 vs 1
@@ -184,10 +225,19 @@ def test_comparison_nose_direction_statements():
 
 
 def test_comparison_table2_and_table3_rows():
-    t2 = pd.DataFrame({"test": [2], "velocity_m_s": [280.0], "obliquity_deg": [0.0],
-                       "yaw_deg": [0.0], "measured_depth_m": [4.98],
-                       "paper_predicted_depth_m": [4.25], "pencore_depth_m": [4.15],
-                       "projectile": ["p2"], "depth_measure": ["path_length"]})
+    t2 = pd.DataFrame(
+        {
+            "test": [2],
+            "velocity_m_s": [280.0],
+            "obliquity_deg": [0.0],
+            "yaw_deg": [0.0],
+            "measured_depth_m": [4.98],
+            "paper_predicted_depth_m": [4.25],
+            "pencore_depth_m": [4.15],
+            "projectile": ["p2"],
+            "depth_measure": ["path_length"],
+        }
+    )
     df = S.paper_comparison(table2=t2)
     row = _rows(df, "Table 2 test 2").iloc[0]
     assert row["difference"] == pytest.approx(-0.10) and row["units"] == "m"
@@ -211,7 +261,8 @@ def test_grid_start_and_parts():
         S.start_from_height(-1)
     cfg = {"projectiles": ["p2", "p4"], "obliquity_deg": [30.0, 60.0]}
     assert S.parts_of("fig12", cfg) == [
-        {"projectile": p, "obliquity": o} for p in ("p2", "p4") for o in (30.0, 60.0)]
+        {"projectile": p, "obliquity": o} for p in ("p2", "p4") for o in (30.0, 60.0)
+    ]
     assert S.parts_of("fig8", cfg) == [{"projectile": "p2"}, {"projectile": "p4"}]
     with pytest.raises(InputError):
         S.from_config("fig99", {}, {})
@@ -221,10 +272,13 @@ def test_grid_start_and_parts():
 
 def test_stack_trajectories_shared_axis():
     pr = pencore.prepare("p2", "soil")
-    runs = {(i,): pencore.simulate("p2", "soil", v, 45.0, prepared=pr)
-            for i, v in enumerate((300.0, 600.0))}
-    ds = S.stack_trajectories(runs, {"velocity": (np.array([300.0, 600.0]),
-                                                  {"units": "m s-1"})}, n_time=80)
+    runs = {
+        (i,): pencore.simulate("p2", "soil", v, 45.0, prepared=pr)
+        for i, v in enumerate((300.0, 600.0))
+    }
+    ds = S.stack_trajectories(
+        runs, {"velocity": (np.array([300.0, 600.0]), {"units": "m s-1"})}, n_time=80
+    )
     assert ds["tip_x"].dims == ("velocity", "time")
     assert 80 <= ds.sizes["time"] <= 82  # + each run's last time
     for name, var in ds.data_vars.items():
@@ -236,19 +290,28 @@ def test_stack_trajectories_shared_axis():
         assert float(row["tip_y"].sel(time=t_end)) == pytest.approx(float(run["tip_y"][-1]))
         assert np.isnan(row["tip_y"].where(ds["time"] > t_end, drop=True)).all()
         assert float(row["penetration_depth"]) == float(run["penetration_depth"])
-        assert float(row["final_deviation"]) == pytest.approx(
-            pencore.analysis.final_deviation(run))
+        assert float(row["final_deviation"]) == pytest.approx(pencore.analysis.final_deviation(run))
 
 
 def test_gather_joins_parts_in_any_order():
     def part(p, o):
-        data = S._search_vars(_search(np.array([[[1000.0 + o]]])), "vcr", "m s-1", "Vcr",
-                              ("projectile", "obliquity", "yaw"))
-        return xr.Dataset(data, coords={**S.projectile_coords([p]),
-                                        "obliquity": ("obliquity", [o]),
-                                        "yaw": ("yaw", [0.0])})
-    ds = S.gather("fig12", [part("p4", 60.0), part("p2", 60.0), part("p4", 30.0),
-                            part("p2", 30.0)])
+        data = S._search_vars(
+            _search(np.array([[[1000.0 + o]]])),
+            "vcr",
+            "m s-1",
+            "Vcr",
+            ("projectile", "obliquity", "yaw"),
+        )
+        return xr.Dataset(
+            data,
+            coords={
+                **S.projectile_coords([p]),
+                "obliquity": ("obliquity", [o]),
+                "yaw": ("yaw", [0.0]),
+            },
+        )
+
+    ds = S.gather("fig12", [part("p4", 60.0), part("p2", 60.0), part("p4", 30.0), part("p2", 30.0)])
     assert ds["vcr"].dims == ("projectile", "obliquity", "yaw")
     assert ds["projectile"].values.tolist() == ["p4", "p2"]
     assert ds["obliquity"].values.tolist() == [30.0, 60.0]
@@ -258,14 +321,28 @@ def test_gather_joins_parts_in_any_order():
 
 # ----------------------------------------------------------------------------- end to end
 
-S4_FIGURES = ("fig7/trajectories", "fig8/vcr", "fig9/turning_angle", "fig11/trajectories",
-              "fig12/vcr_yaw", "fig13/trajectories", "fig15/vci", "fig16/trajectories",
-              "fig16/start_height", "fig18/omega_c")
+S4_FIGURES = (
+    "fig7/trajectories",
+    "fig8/vcr",
+    "fig9/turning_angle",
+    "fig11/trajectories",
+    "fig12/vcr_yaw",
+    "fig13/trajectories",
+    "fig15/vci",
+    "fig16/trajectories",
+    "fig16/start_height",
+    "fig18/omega_c",
+)
 
 
 def _snakemake(cwd: Path, *args: str, timeout: float = 600) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "snakemake", *args], cwd=cwd,
-                          capture_output=True, text=True, timeout=timeout)
+    return subprocess.run(
+        [sys.executable, "-m", "snakemake", *args],
+        cwd=cwd,
+        capture_output=True,
+        text=True,
+        timeout=timeout,
+    )
 
 
 @pytest.fixture(scope="module")
@@ -275,7 +352,8 @@ def s4run(tmp_path_factory) -> Path:
     for d in ("workflow", "config", ".test"):
         shutil.copytree(REPO / d, wd / d)
     targets = ["results/paper_comparison.csv"] + [
-        f"results/{f}.{ext}" for f in S4_FIGURES for ext in ("png", "pdf")]
+        f"results/{f}.{ext}" for f in S4_FIGURES for ext in ("png", "pdf")
+    ]
     r = _snakemake(wd, *targets, "--cores", "2", "--configfile", ".test/config.yaml")
     assert r.returncode == 0, r.stderr[-4000:]
     return wd
@@ -331,12 +409,22 @@ def test_e2e_datasets_dims_units_provenance(s4run):
 @pytest.mark.slow
 def test_e2e_comparison_figures_logs_benchmarks(s4run):
     df = pd.read_csv(s4run / "results/paper_comparison.csv")
-    assert list(df.columns[:6]) == ["quantity", "paper_value", "pencore_value", "difference",
-                                    "units", "note"]
+    assert list(df.columns[:6]) == [
+        "quantity",
+        "paper_value",
+        "pencore_value",
+        "difference",
+        "units",
+        "note",
+    ]
     trends = df[df["kind"] == "trend"]
     assert len(trends) >= 8
-    assert set(trends["pencore_value"]) <= {"holds", "partly holds", "does not hold",
-                                            "undetermined"}
+    assert set(trends["pencore_value"]) <= {
+        "holds",
+        "partly holds",
+        "does not hold",
+        "undetermined",
+    }
     assert df["quantity"].str.startswith("Table 2").sum() == 5
     assert df["quantity"].str.contains("axis_tilted").any()
     assert df["quantity"].str.contains("velocity_tilted").any()
@@ -357,8 +445,9 @@ def test_e2e_rerun_is_targeted(s4run):
     cfg = yaml.safe_load((s4run / ".test/config.yaml").read_text())
     cfg["section4"]["fig9"]["bracket_fractions"] = [0.05, 0.1]
     (s4run / "alt.yaml").write_text(yaml.safe_dump(cfg))
-    r = _snakemake(s4run, "results/paper_comparison.csv", "-n", "--cores", "1",
-                   "--configfile", "alt.yaml")
+    r = _snakemake(
+        s4run, "results/paper_comparison.csv", "-n", "--cores", "1", "--configfile", "alt.yaml"
+    )
     out = r.stdout + r.stderr
     assert r.returncode == 0, out
     assert "wildcards: study=fig9, name=turning_angle" in out
@@ -397,8 +486,9 @@ def test_archived_section4_datasets_and_comparison():
         if "time" in ds.dims:
             assert ds.sizes["time"] <= 1000, name
     df = pd.read_csv(ARCHIVE / "paper_comparison.csv")
-    assert {"quantity", "paper_value", "pencore_value", "difference", "units",
-            "note"} <= set(df.columns)
+    assert {"quantity", "paper_value", "pencore_value", "difference", "units", "note"} <= set(
+        df.columns
+    )
     # the facts the reproduction is built on (see config/config.yaml)
     phi = df.set_index("quantity")["pencore_value"]
     key = "Fig. 13: deviation phi of #4, yaw 0.1 deg, Vi = 280 m/s, axis_tilted (configured)"

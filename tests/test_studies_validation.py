@@ -10,11 +10,17 @@ from pencore.library import InputError
 from pencore.studies import resolve_numerics
 from pencore.studies.validation import fig5, table2, velocity_grid, verification
 
-ROWS = pd.DataFrame({
-    "test": [2, 3], "velocity_m_s": [280.0, 278.0], "obliquity_deg": [0.0, 30.0],
-    "yaw_deg": [0.0, 0.0], "measured_depth_m": [4.98, 5.18],
-    "paper_predicted_depth_m": [4.25, 4.21], "source": ["paper", "paper"],
-})
+ROWS = pd.DataFrame(
+    {
+        "test": [2, 3],
+        "velocity_m_s": [280.0, 278.0],
+        "obliquity_deg": [0.0, 30.0],
+        "yaw_deg": [0.0, 0.0],
+        "measured_depth_m": [4.98, 5.18],
+        "paper_predicted_depth_m": [4.25, 4.21],
+        "source": ["paper", "paper"],
+    }
+)
 
 
 def test_table2_selects_the_closest_candidate():
@@ -62,12 +68,20 @@ CASES = [
 
 
 def test_fig5_ranges_and_experiments():
-    exp = pd.DataFrame({"target": ["concrete"], "projectile": ["concrete_crh3"],
-                        "velocity_m_s": [400.0], "depth_m": [0.7], "source": ["assumed"]})
+    exp = pd.DataFrame(
+        {
+            "target": ["concrete"],
+            "projectile": ["concrete_crh3"],
+            "velocity_m_s": [400.0],
+            "depth_m": [0.7],
+            "source": ["assumed"],
+        }
+    )
     ds = fig5(CASES, [400.0, 800.0], experiments=exp)
     assert np.isnan(float(ds["pencore_depth"].sel(case="c3", velocity=800.0)))
     assert float(ds["experiment_pencore_depth"][0]) == pytest.approx(
-        float(ds["pencore_depth"].sel(case="c3", velocity=400.0)))
+        float(ds["pencore_depth"].sel(case="c3", velocity=400.0))
+    )
     assert ds["crh"].values.tolist() == [3.0, 0.5]
     bad = exp.assign(projectile="p2")
     with pytest.raises(InputError, match="matches no Fig. 5 case"):

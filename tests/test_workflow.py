@@ -41,7 +41,10 @@ def _copy_workflow(dest: Path) -> Path:
 def _snakemake(cwd: Path, *args: str, timeout: float = 600) -> subprocess.CompletedProcess:
     return subprocess.run(
         [sys.executable, "-m", "snakemake", *args],
-        cwd=cwd, capture_output=True, text=True, timeout=timeout,
+        cwd=cwd,
+        capture_output=True,
+        text=True,
+        timeout=timeout,
     )
 
 
@@ -220,8 +223,15 @@ def _check_cf(ds):
         if var.dtype.kind == "f":
             assert "units" in var.attrs, f"{name} has no units"
             assert "long_name" in var.attrs, f"{name} has no long_name"
-    for key in ("study", "pencore_version", "git_commit", "config_json", "config_sha256",
-                "created_utc", "numerics_json"):
+    for key in (
+        "study",
+        "pencore_version",
+        "git_commit",
+        "config_json",
+        "config_sha256",
+        "created_utc",
+        "numerics_json",
+    ):
         assert key in ds.attrs, f"missing provenance attribute {key}"
     assert ds.attrs["pencore_version"] == pencore.__version__
     json.loads(ds.attrs["config_json"])
@@ -242,24 +252,39 @@ def test_e2e_table2(e2e):
     # physics bounds: the path is at least the vertical depth; normal shots agree
     assert (ds["pencore_path_length"] >= ds["pencore_vertical_depth"] - 1e-9).all()
     normal = (ds["obliquity"] == 0) & (ds["yaw"] == 0)
-    np.testing.assert_allclose(ds["pencore_path_length"].where(normal, drop=True),
-                               ds["pencore_vertical_depth"].where(normal, drop=True),
-                               rtol=1e-9)
+    np.testing.assert_allclose(
+        ds["pencore_path_length"].where(normal, drop=True),
+        ds["pencore_vertical_depth"].where(normal, drop=True),
+        rtol=1e-9,
+    )
     # oblique shots (30 deg) go about cos(30) as deep as they travel
     oblique = ds.sel(test=[3, 4])
     ratio = oblique["pencore_vertical_depth"] / oblique["pencore_path_length"]
     assert ((ratio > 0.8) & (ratio < 0.92)).all()
     table = pd.read_csv(e2e / "results/validation/table2.csv")
-    for col in ("test", "velocity_m_s", "obliquity_deg", "yaw_deg", "measured_depth_m",
-                "paper_predicted_depth_m", "pencore_depth_m", "pencore_vertical_depth_m",
-                "pencore_path_length_m", "rel_diff_vs_paper", "rel_diff_vs_measured",
-                "projectile", "depth_measure", "source"):
+    for col in (
+        "test",
+        "velocity_m_s",
+        "obliquity_deg",
+        "yaw_deg",
+        "measured_depth_m",
+        "paper_predicted_depth_m",
+        "pencore_depth_m",
+        "pencore_vertical_depth_m",
+        "pencore_path_length_m",
+        "rel_diff_vs_paper",
+        "rel_diff_vs_measured",
+        "projectile",
+        "depth_measure",
+        "source",
+    ):
         assert col in table.columns
     np.testing.assert_allclose(table["pencore_depth_m"], ds["pencore_depth"], rtol=1e-5)
     sel = pd.read_csv(e2e / "results/validation/table2_selection.csv")
     assert sel["selected"].sum() == 1
     assert sel.loc[sel["selected"], "rms_rel_diff_vs_paper"].item() == pytest.approx(
-        sel["rms_rel_diff_vs_paper"].min())
+        sel["rms_rel_diff_vs_paper"].min()
+    )
 
 
 @pytest.mark.slow
@@ -273,7 +298,8 @@ def test_e2e_fig5_and_verification(e2e):
     assert (pen.diff("velocity") > 0).all(), "depth must grow with impact velocity"
     assert f5["experiment_case"].values.tolist() == ["concrete_crh3"]
     assert float(f5["experiment_pencore_depth"][0]) == pytest.approx(
-        float(pen.sel(case="concrete_crh3", velocity=600.0)), rel=1e-9)
+        float(pen.sel(case="concrete_crh3", velocity=600.0)), rel=1e-9
+    )
 
     ver = read_netcdf(e2e / "results/validation/verification.nc")
     _check_cf(ver)
@@ -282,8 +308,10 @@ def test_e2e_fig5_and_verification(e2e):
     assert ((pen > 0.5 * cf) & (pen < 2.0 * cf)).all()
     assert float(ver["max_abs_rel_diff"]) == pytest.approx(float(abs(ver["rel_diff"]).max()))
     assert float(ver["max_abs_rel_diff"]) < 1e-2
-    assert "largest |pencore - closed form|" in (
-        e2e / "results/validation/verification.txt").read_text()
+    assert (
+        "largest |pencore - closed form|"
+        in (e2e / "results/validation/verification.txt").read_text()
+    )
 
 
 @pytest.mark.slow
@@ -347,10 +375,15 @@ def test_archived_table2_matches_fresh_run():
     variable = {"path_length": "path_length", "vertical_depth": "penetration_depth"}[measure]
     numerics = resolve_numerics(_validate(_shipped_config())["numerics"])
     row = ds.sel(test=3)  # the oblique shot: exercises the full 3-D motion
-    fresh = pencore.simulate(proj, ds.attrs["target"], float(row["velocity"]),
-                             float(row["obliquity"]), float(row["yaw"]), numerics=numerics)
-    assert float(fresh[variable]) == pytest.approx(float(row["pencore_depth"]),
-                                                   rel=ARCHIVE_RTOL)
+    fresh = pencore.simulate(
+        proj,
+        ds.attrs["target"],
+        float(row["velocity"]),
+        float(row["obliquity"]),
+        float(row["yaw"]),
+        numerics=numerics,
+    )
+    assert float(fresh[variable]) == pytest.approx(float(row["pencore_depth"]), rel=ARCHIVE_RTOL)
 
 
 def test_archived_config_is_the_shipped_one():
@@ -359,4 +392,3 @@ def test_archived_config_is_the_shipped_one():
     archived = json.loads(ds.attrs["config_json"])
     assert archived["validation.table2"] == cfg["validation"]["table2"]
     assert archived["numerics"] == cfg["numerics"]
-

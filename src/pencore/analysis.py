@@ -127,8 +127,9 @@ def _grad(f: np.ndarray, p: np.ndarray) -> np.ndarray:
     return np.gradient(f, p, edge_order=2 if f.size >= 3 else 1)
 
 
-def _first_derivs(x: np.ndarray, y: np.ndarray, p: np.ndarray, vx: Any, vy: Any
-                  ) -> tuple[np.ndarray, np.ndarray]:
+def _first_derivs(
+    x: np.ndarray, y: np.ndarray, p: np.ndarray, vx: Any, vy: Any
+) -> tuple[np.ndarray, np.ndarray]:
     if (vx is None) != (vy is None):
         raise ValueError("give both vx and vy, or neither")
     if vx is None:
@@ -192,8 +193,9 @@ def slope_ds(ds: xr.Dataset, point: str = "cm") -> np.ndarray:
     return slope(x, y, ds["time"].values)
 
 
-def signed_curvature(x: Any, y: Any, t: Any = None, *, vx: Any = None, vy: Any = None
-                     ) -> np.ndarray:
+def signed_curvature(
+    x: Any, y: Any, t: Any = None, *, vx: Any = None, vy: Any = None
+) -> np.ndarray:
     """Signed curvature of a plane path, ``(x' y'' - y' x'') / (x'^2 + y'^2)^(3/2)``.
 
     Parameters
@@ -296,9 +298,15 @@ def _crossings(kappa: np.ndarray, floor: float) -> list[tuple[int, float, int]]:
     return out
 
 
-def inflection_points(x: Any, y: Any, t: Any = None, *,
-                      rel_threshold: float = DEFAULT_REL_THRESHOLD,
-                      vx: Any = None, vy: Any = None) -> Inflections:
+def inflection_points(
+    x: Any,
+    y: Any,
+    t: Any = None,
+    *,
+    rel_threshold: float = DEFAULT_REL_THRESHOLD,
+    vx: Any = None,
+    vy: Any = None,
+) -> Inflections:
     """Points where ``d2y/dx2`` (the path curvature) changes sign.
 
     The sign of ``d2y/dx2`` is that of the parametric cross product ``x' y'' - y' x''``
@@ -349,8 +357,9 @@ def inflection_points(x: Any, y: Any, t: Any = None, *,
     def at(f: np.ndarray) -> np.ndarray:
         return f[ii] + w * (f[ii + 1] - f[ii]) if ii.size else np.zeros(0)
 
-    return Inflections(ii, at(p), at(x), at(y), np.array([c[2] for c in cr], dtype=int),
-                       peak, floor)
+    return Inflections(
+        ii, at(p), at(x), at(y), np.array([c[2] for c in cr], dtype=int), peak, floor
+    )
 
 
 def _window_end(speed: np.ndarray, impact_speed: float, speed_fraction: float) -> int:
@@ -361,9 +370,13 @@ def _window_end(speed: np.ndarray, impact_speed: float, speed_fraction: float) -
     return int(ok[-1]) if ok.size else -1
 
 
-def inflection_points_ds(ds: xr.Dataset, *, point: str = "cm",
-                         rel_threshold: float = DEFAULT_REL_THRESHOLD,
-                         speed_fraction: float = DEFAULT_SPEED_FRACTION) -> Inflections:
+def inflection_points_ds(
+    ds: xr.Dataset,
+    *,
+    point: str = "cm",
+    rel_threshold: float = DEFAULT_REL_THRESHOLD,
+    speed_fraction: float = DEFAULT_SPEED_FRACTION,
+) -> Inflections:
     """:func:`inflection_points` of a run's centre-of-mass (exact velocities) or tip path,
     over the samples up to the last one with speed >= ``speed_fraction`` x impact speed
     (the curvature of a nearly stopped projectile is not part of the trajectory)."""
@@ -372,8 +385,14 @@ def inflection_points_ds(ds: xr.Dataset, *, point: str = "cm",
     t = ds["time"].values[sl]
     x, y = (a[sl] for a in _point_arrays(ds, point))
     if point == "cm":
-        return inflection_points(x, y, t, rel_threshold=rel_threshold,
-                                 vx=ds["vel_x"].values[sl], vy=ds["vel_y"].values[sl])
+        return inflection_points(
+            x,
+            y,
+            t,
+            rel_threshold=rel_threshold,
+            vx=ds["vel_x"].values[sl],
+            vy=ds["vel_y"].values[sl],
+        )
     return inflection_points(x, y, t, rel_threshold=rel_threshold)
 
 
@@ -423,12 +442,20 @@ class TurningAngle:
 _NAN = float("nan")
 
 
-def turning_angle_arrays(t: Any, x: Any, y: Any, theta: Any, *, vx: Any = None,
-                         vy: Any = None, impact_speed: float | None = None,
-                         method: str = "bracket",
-                         fraction: float = DEFAULT_BRACKET_FRACTION,
-                         speed_fraction: float = DEFAULT_SPEED_FRACTION,
-                         rel_threshold: float = DEFAULT_REL_THRESHOLD) -> TurningAngle:
+def turning_angle_arrays(
+    t: Any,
+    x: Any,
+    y: Any,
+    theta: Any,
+    *,
+    vx: Any = None,
+    vy: Any = None,
+    impact_speed: float | None = None,
+    method: str = "bracket",
+    fraction: float = DEFAULT_BRACKET_FRACTION,
+    speed_fraction: float = DEFAULT_SPEED_FRACTION,
+    rel_threshold: float = DEFAULT_REL_THRESHOLD,
+) -> TurningAngle:
     """Turning angle of Eq. 12 from arrays; see :func:`turning_angle` for the definition.
 
     Parameters
@@ -459,8 +486,9 @@ def turning_angle_arrays(t: Any, x: Any, y: Any, theta: Any, *, vx: Any = None,
     end = _window_end(speed, v0, speed_fraction)
 
     def fail(reason: str, **known: float) -> TurningAngle:
-        vals = dict(theta_1=_NAN, theta_2=_NAN, t_1=_NAN, t_2=_NAN, x_1=_NAN, y_1=_NAN,
-                    x_2=_NAN, y_2=_NAN)
+        vals = dict(
+            theta_1=_NAN, theta_2=_NAN, t_1=_NAN, t_2=_NAN, x_1=_NAN, y_1=_NAN, x_2=_NAN, y_2=_NAN
+        )
         vals.update(known)
         return TurningAngle(_NAN, method=method, reason=reason, **vals)
 
@@ -471,8 +499,10 @@ def turning_angle_arrays(t: Any, x: Any, y: Any, theta: Any, *, vx: Any = None,
 
     def point(i: int, w: float) -> dict[str, float]:
         """Interpolated values at fraction w of the interval [i, i+1]."""
+
         def lerp(f: np.ndarray) -> float:
             return float(f[i] + w * (f[i + 1] - f[i]))
+
         return dict(t=lerp(tt), x=lerp(x), y=lerp(y), theta=lerp(th))
 
     if method == "sign_change":
@@ -509,21 +539,36 @@ def turning_angle_arrays(t: Any, x: Any, y: Any, theta: Any, *, vx: Any = None,
                 f"|curvature| is still >= {fraction:g} of its peak at the last sample "
                 f"analysed (speed >= {speed_fraction:g} x impact speed): the curved part "
                 "does not end, so Point 2 is not in the record",
-                theta_1=p1["theta"], t_1=p1["t"], x_1=p1["x"], y_1=p1["y"],
+                theta_1=p1["theta"],
+                t_1=p1["t"],
+                x_1=p1["x"],
+                y_1=p1["y"],
             )
         w2 = (a[i2] - thr) / (a[i2] - a[i2 + 1])
         pts = [p1, point(i2, float(w2))]
     p1, p2 = pts
     return TurningAngle(
-        p2["theta"] - p1["theta"], p1["theta"], p2["theta"], p1["t"], p2["t"],
-        p1["x"], p1["y"], p2["x"], p2["y"], method,
+        p2["theta"] - p1["theta"],
+        p1["theta"],
+        p2["theta"],
+        p1["t"],
+        p2["t"],
+        p1["x"],
+        p1["y"],
+        p2["x"],
+        p2["y"],
+        method,
     )
 
 
-def turning_angle(data: xr.Dataset | Mapping[str, Any], *, method: str = "bracket",
-                  fraction: float = DEFAULT_BRACKET_FRACTION,
-                  speed_fraction: float = DEFAULT_SPEED_FRACTION,
-                  rel_threshold: float = DEFAULT_REL_THRESHOLD) -> TurningAngle:
+def turning_angle(
+    data: xr.Dataset | Mapping[str, Any],
+    *,
+    method: str = "bracket",
+    fraction: float = DEFAULT_BRACKET_FRACTION,
+    speed_fraction: float = DEFAULT_SPEED_FRACTION,
+    rel_threshold: float = DEFAULT_REL_THRESHOLD,
+) -> TurningAngle:
     """Total turning angle ``delta_theta_12 = theta_2 - theta_1`` (paper Eq. 12, Fig. 9).
 
     ``theta`` is the angle from the target normal to the projectile axis (degree), read at
@@ -567,27 +612,39 @@ def turning_angle(data: xr.Dataset | Mapping[str, Any], *, method: str = "bracke
     TurningAngle
         ``delta_theta`` (degree) with the two points, or NaN and ``reason``.
     """
-    kw = dict(method=method, fraction=fraction, speed_fraction=speed_fraction,
-              rel_threshold=rel_threshold)
+    kw = dict(
+        method=method, fraction=fraction, speed_fraction=speed_fraction, rel_threshold=rel_threshold
+    )
     if isinstance(data, xr.Dataset):
         return turning_angle_arrays(
-            data["time"].values, data["cm_x"].values, data["cm_y"].values,
-            data["theta"].values, vx=data["vel_x"].values, vy=data["vel_y"].values,
-            impact_speed=_impact_speed(data), **kw,
+            data["time"].values,
+            data["cm_x"].values,
+            data["cm_y"].values,
+            data["theta"].values,
+            vx=data["vel_x"].values,
+            vy=data["vel_y"].values,
+            impact_speed=_impact_speed(data),
+            **kw,
         )
     missing = {"t", "x", "y", "theta"} - set(data)
     if missing:
         raise ValueError(f"mapping needs keys t, x, y, theta; missing {sorted(missing)}")
-    return turning_angle_arrays(data["t"], data["x"], data["y"], data["theta"],
-                                vx=data.get("vx"), vy=data.get("vy"),
-                                impact_speed=data.get("impact_speed"), **kw)
+    return turning_angle_arrays(
+        data["t"],
+        data["x"],
+        data["y"],
+        data["theta"],
+        vx=data.get("vx"),
+        vy=data.get("vy"),
+        impact_speed=data.get("impact_speed"),
+        **kw,
+    )
 
 
 # ------------------------------------------------------------------ deviation, direction
 
 
-def deviation_from_normal(vx: Any, vy: Any, vz: Any = 0.0, *, signed: bool = False
-                          ) -> Any:
+def deviation_from_normal(vx: Any, vy: Any, vz: Any = 0.0, *, signed: bool = False) -> Any:
     """Angle (degree) between a velocity and the inward target normal ``-y``.
 
     For motion towards ``+x`` and down (``vx > 0``, ``vy < 0``, ``vz = 0``) this is the
@@ -617,8 +674,9 @@ def deviation_from_normal(vx: Any, vy: Any, vz: Any = 0.0, *, signed: bool = Fal
     return float(out) if out.ndim == 0 else out
 
 
-def final_state_index(speed: Any, impact_speed: float | None = None,
-                      fraction: float = DEFAULT_SPEED_FRACTION) -> int:
+def final_state_index(
+    speed: Any, impact_speed: float | None = None, fraction: float = DEFAULT_SPEED_FRACTION
+) -> int:
     """Index of the last saved state whose speed is >= ``fraction`` x impact speed.
 
     ``impact_speed`` (m/s) defaults to ``speed[0]``; -1 if no state qualifies.
@@ -628,9 +686,15 @@ def final_state_index(speed: Any, impact_speed: float | None = None,
     return _window_end(sp, v0, fraction)
 
 
-def final_deviation_arrays(vx: Any, vy: Any, vz: Any = None, *,
-                           fraction: float = DEFAULT_SPEED_FRACTION,
-                           impact_speed: float | None = None, signed: bool = False) -> float:
+def final_deviation_arrays(
+    vx: Any,
+    vy: Any,
+    vz: Any = None,
+    *,
+    fraction: float = DEFAULT_SPEED_FRACTION,
+    impact_speed: float | None = None,
+    signed: bool = False,
+) -> float:
     """:func:`final_deviation` from velocity histories (m/s); ``impact_speed`` defaults to
     the first speed. NaN if no state is fast enough."""
     vx, vy = _as_1d("vx", vx), _as_1d("vy", vy)
@@ -642,8 +706,9 @@ def final_deviation_arrays(vx: Any, vy: Any, vz: Any = None, *,
     return float(deviation_from_normal(vx[i], vy[i], vz[i], signed=signed))
 
 
-def final_deviation(ds: xr.Dataset, fraction: float = DEFAULT_SPEED_FRACTION, *,
-                    signed: bool = False) -> float:
+def final_deviation(
+    ds: xr.Dataset, fraction: float = DEFAULT_SPEED_FRACTION, *, signed: bool = False
+) -> float:
     """Deviation of the trajectory from the normal at the end of the curved part (degree).
 
     Defined as :func:`deviation_from_normal` of the centre-of-mass velocity at the last
@@ -663,9 +728,14 @@ def final_deviation(ds: xr.Dataset, fraction: float = DEFAULT_SPEED_FRACTION, *,
     signed : bool
         Signed in-plane angle (positive towards +x) instead of the unsigned one.
     """
-    return final_deviation_arrays(ds["vel_x"].values, ds["vel_y"].values, ds["vel_z"].values,
-                                  fraction=fraction, impact_speed=_impact_speed(ds),
-                                  signed=signed)
+    return final_deviation_arrays(
+        ds["vel_x"].values,
+        ds["vel_y"].values,
+        ds["vel_z"].values,
+        fraction=fraction,
+        impact_speed=_impact_speed(ds),
+        signed=signed,
+    )
 
 
 def nose_direction(data: xr.Dataset | Any) -> str:

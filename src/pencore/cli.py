@@ -108,8 +108,12 @@ def build_parser() -> argparse.ArgumentParser:
         epilog=_SIM_SUMMARY,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    parser.add_argument("--version", action="version", version=f"{PROG} {__version__}",
-                        help="print the pencore version and exit")
+    parser.add_argument(
+        "--version",
+        action="version",
+        version=f"{PROG} {__version__}",
+        help="print the pencore version and exit",
+    )
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
 
     sim = sub.add_parser(
@@ -121,35 +125,75 @@ def build_parser() -> argparse.ArgumentParser:
         "from the target normal (deg), run time (s) and number of steps. The target is "
         "y <= 0 and the projectile moves towards +x and -y.",
     )
-    sim.add_argument("--projectile", required=True, metavar="NAME|FILE",
-                     help="projectile name (see 'pencore list'; lengths in m, masses in "
-                     "kg) or a projectile YAML file (diameter and lengths in m, densities "
-                     "in kg/m^3)")
-    sim.add_argument("--target", required=True, metavar="NAME|FILE",
-                     help="target name (soil, concrete, aluminium) or a target YAML file "
-                     "(resistance coefficients in Pa, Pa s/m, Pa s^2/m^2, ...)")
-    sim.add_argument("--velocity", required=True, type=_velocity, metavar="M_S",
-                     help="impact speed in m/s; must be > 0 and finite")
-    sim.add_argument("--obliquity", type=_obliquity, default=0.0, metavar="DEG",
-                     help="obliquity in deg: angle between the projectile axis and the "
-                     "target normal, towards +x; 0 <= DEG < 90 (default: 0 deg)")
-    sim.add_argument("--yaw", type=_finite("deg"), default=0.0, metavar="DEG",
-                     help="yaw in deg: velocity angle minus axis angle; |obliquity + yaw| "
-                     "must stay below 90 deg (default: 0 deg)")
-    sim.add_argument("--omega", type=_finite("rad/s"), default=0.0, metavar="RAD_S",
-                     help="initial angular velocity about the centre of mass, about +z, in "
-                     "rad/s; positive turns the nose towards +x (default: 0 rad/s)")
-    sim.add_argument("--start", type=_finite("m"), nargs=3, default=None,
-                     metavar=("X", "Y", "Z"),
-                     help="initial nose-tip position in m (default: tip at x = z = 0, "
-                     "body just touching the surface y = 0 m)")
-    sim.add_argument("--stop-at-reversal", action="store_true",
-                     help="end the run at the first reversal of the trajectory (dy/dx "
-                     "changes sign; outcome 'reversed')")
-    sim.add_argument("--out", metavar="FILE.nc", default=None,
-                     help="write the trajectory (time in s, positions in m, velocities in "
-                     "m/s, angles in deg, rates in rad/s) to this NetCDF file; its "
-                     "directory must exist and be writable; written atomically")
+    sim.add_argument(
+        "--projectile",
+        required=True,
+        metavar="NAME|FILE",
+        help="projectile name (see 'pencore list'; lengths in m, masses in "
+        "kg) or a projectile YAML file (diameter and lengths in m, densities "
+        "in kg/m^3)",
+    )
+    sim.add_argument(
+        "--target",
+        required=True,
+        metavar="NAME|FILE",
+        help="target name (soil, concrete, aluminium) or a target YAML file "
+        "(resistance coefficients in Pa, Pa s/m, Pa s^2/m^2, ...)",
+    )
+    sim.add_argument(
+        "--velocity",
+        required=True,
+        type=_velocity,
+        metavar="M_S",
+        help="impact speed in m/s; must be > 0 and finite",
+    )
+    sim.add_argument(
+        "--obliquity",
+        type=_obliquity,
+        default=0.0,
+        metavar="DEG",
+        help="obliquity in deg: angle between the projectile axis and the "
+        "target normal, towards +x; 0 <= DEG < 90 (default: 0 deg)",
+    )
+    sim.add_argument(
+        "--yaw",
+        type=_finite("deg"),
+        default=0.0,
+        metavar="DEG",
+        help="yaw in deg: velocity angle minus axis angle; |obliquity + yaw| "
+        "must stay below 90 deg (default: 0 deg)",
+    )
+    sim.add_argument(
+        "--omega",
+        type=_finite("rad/s"),
+        default=0.0,
+        metavar="RAD_S",
+        help="initial angular velocity about the centre of mass, about +z, in "
+        "rad/s; positive turns the nose towards +x (default: 0 rad/s)",
+    )
+    sim.add_argument(
+        "--start",
+        type=_finite("m"),
+        nargs=3,
+        default=None,
+        metavar=("X", "Y", "Z"),
+        help="initial nose-tip position in m (default: tip at x = z = 0, "
+        "body just touching the surface y = 0 m)",
+    )
+    sim.add_argument(
+        "--stop-at-reversal",
+        action="store_true",
+        help="end the run at the first reversal of the trajectory (dy/dx "
+        "changes sign; outcome 'reversed')",
+    )
+    sim.add_argument(
+        "--out",
+        metavar="FILE.nc",
+        default=None,
+        help="write the trajectory (time in s, positions in m, velocities in "
+        "m/s, angles in deg, rates in rad/s) to this NetCDF file; its "
+        "directory must exist and be writable; written atomically",
+    )
 
     sub.add_parser(
         "fit-table3",
@@ -236,24 +280,34 @@ def _cmd_simulate(args: argparse.Namespace) -> int:
     target = _resolve("target", args.target, get_target)
     t0 = time.perf_counter()
     ds = simulate(
-        projectile, target, args.velocity, args.obliquity, args.yaw, args.omega,
+        projectile,
+        target,
+        args.velocity,
+        args.obliquity,
+        args.yaw,
+        args.omega,
         start=None if args.start is None else tuple(args.start),
         stop_at_reversal=args.stop_at_reversal,
     )
     total = time.perf_counter() - t0
     if out is not None:
         try:
-            write_netcdf(ds, out, config_slice={"cli": _cli_inputs(args)},
-                         study="cli/simulate")
+            write_netcdf(ds, out, config_slice={"cli": _cli_inputs(args)}, study="cli/simulate")
         except OSError as exc:
             raise _Failure(f"cannot write output file {str(out)!r}: {exc}", 1) from None
     a = ds.attrs
     rows = [
-        ("projectile", f"{a['projectile']} ({a['mass_kg']:.4g} kg, "
-                       f"{a['length_m']:.4g} m long, Lc/L = {a['lc_over_l']:.3f})"),
+        (
+            "projectile",
+            f"{a['projectile']} ({a['mass_kg']:.4g} kg, "
+            f"{a['length_m']:.4g} m long, Lc/L = {a['lc_over_l']:.3f})",
+        ),
         ("target", str(a["target"])),
-        ("impact", f"{args.velocity:g} m/s, obliquity {args.obliquity:g} deg, "
-                   f"yaw {args.yaw:g} deg, omega {args.omega:g} rad/s"),
+        (
+            "impact",
+            f"{args.velocity:g} m/s, obliquity {args.obliquity:g} deg, "
+            f"yaw {args.yaw:g} deg, omega {args.omega:g} rad/s",
+        ),
         ("penetration depth", f"{float(ds['penetration_depth']):.6g} m"),
         ("tip path length below surface", f"{float(ds['path_length']):.6g} m"),
         ("outcome", str(a["outcome"])),
@@ -286,8 +340,9 @@ def _cmd_list(args: argparse.Namespace) -> int:
     for name in projectile_names():
         p = get_projectile(name)
         mp = p.mass_properties()
-        print(f"  {name:<18} {mp.mass:9.3f} {mp.lc_over_l:6.3f} {p.diameter * 1e3:11.2f}"
-              f"  {p.source}")
+        print(
+            f"  {name:<18} {mp.mass:9.3f} {mp.lc_over_l:6.3f} {p.diameter * 1e3:11.2f}  {p.source}"
+        )
     print()
     print("targets (normal stress = a0 + a1 Vn + a2 Vn^2; a0 Pa, a1 Pa s/m, a2 Pa s^2/m^2):")
     for name in sorted(MEDIA):

@@ -121,8 +121,15 @@ def _fmt(v: float) -> str:
     return f"{v:.6g}"
 
 
-def find_threshold(verdict: Callable[[float], bool], lo: float, hi: float, tol: float, *,
-                   max_iter: int = 60, scan: int | None = None) -> CriticalResult:
+def find_threshold(
+    verdict: Callable[[float], bool],
+    lo: float,
+    hi: float,
+    tol: float,
+    *,
+    max_iter: int = 60,
+    scan: int | None = None,
+) -> CriticalResult:
     """Lowest value in ``[lo, hi]`` where ``verdict`` switches from False to True.
 
     Parameters
@@ -175,20 +182,34 @@ def find_threshold(verdict: Callable[[float], bool], lo: float, hi: float, tol: 
             history.append((v, seen[v]))
         return seen[v]
 
-    def result(value: float, a: float, b: float, monotone: bool, status: str,
-               message: str) -> CriticalResult:
-        return CriticalResult(value, a, b, len(history), monotone, status, message,
-                              tuple(history), tol)
+    def result(
+        value: float, a: float, b: float, monotone: bool, status: str, message: str
+    ) -> CriticalResult:
+        return CriticalResult(
+            value, a, b, len(history), monotone, status, message, tuple(history), tol
+        )
 
     nan = math.nan
     if ev(lo):
-        return result(nan, nan, lo, True, "below_range",
-                      f"verdict is already True at the lower end {_fmt(lo)}: the threshold "
-                      f"is at or below {_fmt(lo)}; lower lo")
+        return result(
+            nan,
+            nan,
+            lo,
+            True,
+            "below_range",
+            f"verdict is already True at the lower end {_fmt(lo)}: the threshold "
+            f"is at or below {_fmt(lo)}; lower lo",
+        )
     if not ev(hi):
-        return result(nan, hi, nan, True, "above_range",
-                      f"verdict is still False at the upper end {_fmt(hi)}: the threshold "
-                      f"is above {_fmt(hi)} (or does not exist); raise hi")
+        return result(
+            nan,
+            hi,
+            nan,
+            True,
+            "above_range",
+            f"verdict is still False at the upper end {_fmt(hi)}: the threshold "
+            f"is above {_fmt(hi)} (or does not exist); raise hi",
+        )
 
     monotone = True
     notes = []
@@ -197,14 +218,19 @@ def find_threshold(verdict: Callable[[float], bool], lo: float, hi: float, tol: 
         grid = np.linspace(lo, hi, int(scan))
         grid[0], grid[-1] = lo, hi
         verdicts = [ev(v) for v in grid]
-        flips = [(grid[i], verdicts[i], grid[i + 1], verdicts[i + 1])
-                 for i in range(len(grid) - 1) if verdicts[i] != verdicts[i + 1]]
+        flips = [
+            (grid[i], verdicts[i], grid[i + 1], verdicts[i + 1])
+            for i in range(len(grid) - 1)
+            if verdicts[i] != verdicts[i + 1]
+        ]
         first = next(i for i in range(len(grid) - 1) if not verdicts[i] and verdicts[i + 1])
         a, b = float(grid[first]), float(grid[first + 1])
         if any(v1 and not v2 for _, v1, _, v2 in flips):
             monotone = False
-            desc = "; ".join(f"{str(v1)}->{str(v2)} between {_fmt(x1)} and {_fmt(x2)}"
-                             for x1, v1, x2, v2 in flips)
+            desc = "; ".join(
+                f"{str(v1)}->{str(v2)} between {_fmt(x1)} and {_fmt(x2)}"
+                for x1, v1, x2, v2 in flips
+            )
             notes.append(
                 f"verdict is not monotone on the {len(grid)}-point scan of "
                 f"[{_fmt(lo)}, {_fmt(hi)}]: flips {desc}; bisected only the first "
@@ -229,8 +255,9 @@ def find_threshold(verdict: Callable[[float], bool], lo: float, hi: float, tol: 
     value = 0.5 * (a + b)
     if b - a > tol:
         status = "max_iter"
-        notes.insert(0, f"bracket width {_fmt(b - a)} is still > tol {_fmt(tol)} after "
-                        f"{n_iter} bisections")
+        notes.insert(
+            0, f"bracket width {_fmt(b - a)} is still > tol {_fmt(tol)} after {n_iter} bisections"
+        )
     else:
         status = "ok" if monotone else "non_monotone"
         notes.insert(0, f"threshold in [{_fmt(a)}, {_fmt(b)}] after {n_iter} bisections")
@@ -255,18 +282,38 @@ def _split(kwargs: dict[str, Any], fixed: set[str]) -> tuple[Numerics | None, di
     return numerics, overrides, kwargs
 
 
-def _turns_back(pr: Any, sim: dict[str, Any], velocity: float, obliquity: float,
-                yaw: float, omega: float) -> bool:
+def _turns_back(
+    pr: Any, sim: dict[str, Any], velocity: float, obliquity: float, yaw: float, omega: float
+) -> bool:
     """Run to the first reversal (or the end) and say whether the projectile turned back."""
-    ds = simulate(pr.projectile, pr.target, velocity, obliquity, yaw, omega,
-                  stop_at_reversal=True, prepared=pr, **sim)
+    ds = simulate(
+        pr.projectile,
+        pr.target,
+        velocity,
+        obliquity,
+        yaw,
+        omega,
+        stop_at_reversal=True,
+        prepared=pr,
+        **sim,
+    )
     return int(ds.attrs["reversed"]) == 1
 
 
-def vcr(projectile: Any, target: Any, obliquity: float, yaw: float = 0.0,
-        lo: float = 100.0, hi: float = 4000.0, tol: float = VELOCITY_TOL, *,
-        omega: float = 0.0, scan: int | None = DEFAULT_SCAN, max_iter: int = 60,
-        **simulate_kwargs: Any) -> CriticalResult:
+def vcr(
+    projectile: Any,
+    target: Any,
+    obliquity: float,
+    yaw: float = 0.0,
+    lo: float = 100.0,
+    hi: float = 4000.0,
+    tol: float = VELOCITY_TOL,
+    *,
+    omega: float = 0.0,
+    scan: int | None = DEFAULT_SCAN,
+    max_iter: int = 60,
+    **simulate_kwargs: Any,
+) -> CriticalResult:
     """Critical reverse velocity Vcr (m/s): lowest impact speed that turns back.
 
     Verdict at speed ``v``: ``simulate(projectile, target, v, obliquity, yaw, omega,
@@ -301,10 +348,20 @@ def vcr(projectile: Any, target: Any, obliquity: float, yaw: float = 0.0,
     return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan)
 
 
-def omega_c(projectile: Any, target: Any, velocity: float, lo: float, hi: float,
-            tol: float = OMEGA_TOL, *, obliquity: float = 0.0, yaw: float = 0.0,
-            scan: int | None = DEFAULT_SCAN, max_iter: int = 60,
-            **simulate_kwargs: Any) -> CriticalResult:
+def omega_c(
+    projectile: Any,
+    target: Any,
+    velocity: float,
+    lo: float,
+    hi: float,
+    tol: float = OMEGA_TOL,
+    *,
+    obliquity: float = 0.0,
+    yaw: float = 0.0,
+    scan: int | None = DEFAULT_SCAN,
+    max_iter: int = 60,
+    **simulate_kwargs: Any,
+) -> CriticalResult:
     """Critical angular velocity omega_c (rad/s): lowest initial omega that turns back.
 
     Verdict at ``w``: ``simulate(projectile, target, velocity, obliquity, yaw, omega=w,
@@ -347,11 +404,22 @@ def normal_impact_angles(yaw: float, convention: str = "axis_tilted") -> tuple[f
     return 0.0, yaw
 
 
-def vci(projectile: Any, target: Any, yaw: float, lo: float, hi: float,
-        threshold_deg: float, tol: float = VELOCITY_TOL, *, omega: float = 0.0,
-        fraction: float = DEFAULT_SPEED_FRACTION, convention: str = "axis_tilted",
-        scan: int | None = DEFAULT_SCAN, max_iter: int = 60,
-        **simulate_kwargs: Any) -> CriticalResult:
+def vci(
+    projectile: Any,
+    target: Any,
+    yaw: float,
+    lo: float,
+    hi: float,
+    threshold_deg: float,
+    tol: float = VELOCITY_TOL,
+    *,
+    omega: float = 0.0,
+    fraction: float = DEFAULT_SPEED_FRACTION,
+    convention: str = "axis_tilted",
+    scan: int | None = DEFAULT_SCAN,
+    max_iter: int = 60,
+    **simulate_kwargs: Any,
+) -> CriticalResult:
     """Critical impact velocity for instability Vci (m/s), normal impact with small yaw.
 
     Verdict at speed ``v``: the run ``simulate(projectile, target, v, obliquity, yaw',
@@ -385,8 +453,17 @@ def vci(projectile: Any, target: Any, yaw: float, lo: float, hi: float,
     pr = prepare(projectile, target, numerics, **overrides)
 
     def verdict(v: float) -> bool:
-        ds = simulate(pr.projectile, pr.target, v, obl, yaw_sim, omega,
-                      stop_at_reversal=True, prepared=pr, **sim)
+        ds = simulate(
+            pr.projectile,
+            pr.target,
+            v,
+            obl,
+            yaw_sim,
+            omega,
+            stop_at_reversal=True,
+            prepared=pr,
+            **sim,
+        )
         if int(ds.attrs["reversed"]) == 1:
             return True
         return bool(final_deviation(ds, fraction) > threshold_deg)

@@ -356,8 +356,28 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
                 nv = _level_arc(av, kv, phi0, level, True, vlo, vhi)
                 ns = _intersect(blo, bhi, nbase, vlo, vhi, nv, slo, shi)
                 _friction_ring(
-                    f, mom, slo, shi, ns, gx, gw, x1, r, na, nr, w, v1, v2, v3, w1, w2, w3,
-                    coef, lay, fric, eps,
+                    f,
+                    mom,
+                    slo,
+                    shi,
+                    ns,
+                    gx,
+                    gw,
+                    x1,
+                    r,
+                    na,
+                    nr,
+                    w,
+                    v1,
+                    v2,
+                    v3,
+                    w1,
+                    w2,
+                    w3,
+                    coef,
+                    lay,
+                    fric,
+                    eps,
                 )
     return f, mom, clearance
 
@@ -387,8 +407,9 @@ def _leggauss(n):
 
 
 @nb.njit(cache=True)
-def _friction_ring(f, mom, lo, hi, n, gx, gw, x1, r, na, nr, w, v1, v2, v3, w1, w2, w3,
-                   coef, lay, fric, eps):
+def _friction_ring(
+    f, mom, lo, hi, n, gx, gw, x1, r, na, nr, w, v1, v2, v3, w1, w2, w3, coef, lay, fric, eps
+):
     ncoef = coef.shape[1]
     nt = fric.shape[1]
     reg = eps if eps > 0.0 else 1e-9

@@ -110,8 +110,26 @@ def _normalise(y):
 
 
 @nb.njit(cache=True)
-def integrate(y0, t_max, rtol, atol, h_init, max_travel, v_stop, stop_at_reversal, max_steps,
-              mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss):
+def integrate(
+    y0,
+    t_max,
+    rtol,
+    atol,
+    h_init,
+    max_travel,
+    v_stop,
+    stop_at_reversal,
+    max_steps,
+    mass,
+    inertia,
+    gravity,
+    rings,
+    bounds,
+    coef,
+    fric,
+    eps,
+    n_gauss,
+):
     """Integrate one trajectory.
 
     Returns
@@ -225,8 +243,9 @@ def integrate(y0, t_max, rtol, atol, h_init, max_travel, v_stop, stop_at_reversa
             f1, _ = rhs(y1, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss)
             k2 = _solve(wmat, piv, f1 - k1) + k1
             ynew = y + h * k2
-            f2, clear_new = rhs(ynew, mass, inertia, gravity, rings, bounds, coef, fric, eps,
-                                n_gauss)
+            f2, clear_new = rhs(
+                ynew, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss
+            )
             k3 = _solve(wmat, piv, f2 - _E32 * (k2 - f1) - 2.0 * (k1 - f0))
             n_rhs += 2
             err = 0.0

@@ -196,7 +196,10 @@ def _validation_projectiles() -> dict[str, Projectile]:
         nose_mass = Projectile("n", d, nose).mass_properties().mass
         ls = (13.0 - nose_mass) / (7850.0 * math.pi * (d / 2) ** 2)
         out[f"concrete_crh{tag}"] = Projectile(
-            f"concrete_crh{tag}", d, nose, (Cylinder(ls, 7850.0),),
+            f"concrete_crh{tag}",
+            d,
+            nose,
+            (Cylinder(ls, 7850.0),),
             source="assumed: 76.2 mm, 13.0 kg solid steel (Forrestal et al. 1994 class; "
             "M/(rho d^3)=15.2 in Li & Chen 2003); replace with the published geometry",
         )
@@ -207,7 +210,10 @@ def _validation_projectiles() -> dict[str, Projectile]:
         nose = OgiveNose(crh, 7850.0)
         ls = 0.071 - nose.length(d / 2)
         out[f"aluminium_crh{tag}"] = Projectile(
-            f"aluminium_crh{tag}", d, nose, (Cylinder(ls, 7850.0),),
+            f"aluminium_crh{tag}",
+            d,
+            nose,
+            (Cylinder(ls, 7850.0),),
             source="assumed: 7.1 mm diameter, 71 mm long 4340 steel rod (recalled, "
             "unverified); replace with the published geometry",
         )
@@ -219,7 +225,9 @@ def _named_projectiles() -> dict[str, Projectile]:
     fit = table3_fit()
     out = {
         key: _table3_projectile(
-            key, fit.diameter, fit.shank_length,
+            key,
+            fit.diameter,
+            fit.shank_length,
             source=f"paper Table 3 (mass, shank density, Lc/L); geometry derived by "
             f"pencore.library.table3_fit: d={fit.diameter:.5f} m, "
             f"shank={fit.shank_length:.5f} m",
@@ -277,8 +285,7 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
             shank = [shank]
         if not isinstance(shank, list) or not all(isinstance(c, dict) for c in shank):
             raise InputError(
-                f"{what}: 'shank' must be a list of mappings with length and density, "
-                f"got {shank!r}"
+                f"{what}: 'shank' must be a list of mappings with length and density, got {shank!r}"
             )
         cyl = tuple(
             Cylinder(_num(c, "length", what + " shank"), _num(c, "density", what + " shank"))
@@ -313,8 +320,9 @@ def _medium_from(x: Any, what: str) -> Medium:
         else:
             sp = tuple(float(r[0]) for r in fr)
             mu = tuple(float(r[1]) for r in fr)
-        return Medium(name, coef_f, sp, mu, float(x.get("density", "nan")),
-                      str(x.get("source", "user file")))
+        return Medium(
+            name, coef_f, sp, mu, float(x.get("density", "nan")), str(x.get("source", "user file"))
+        )
     except (TypeError, ValueError, IndexError) as exc:
         raise InputError(f"{what}: bad medium {name!r}: {exc}") from None
 

@@ -148,12 +148,14 @@ def initial_state(
 def _qmul(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     w1, x1, y1, z1 = a
     w2, x2, y2, z2 = b
-    return np.array([
-        w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
-        w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
-        w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
-        w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
-    ])
+    return np.array(
+        [
+            w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
+            w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+            w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
+            w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
+        ]
+    )
 
 
 def _check_inputs(
@@ -183,8 +185,12 @@ def _target_dict(t: Target) -> dict[str, Any]:
                 "medium": {
                     "name": lay.medium.name,
                     "coefficients": list(lay.medium.coefficients),
-                    "friction": [list(p) for p in zip(lay.medium.friction_speeds,
-                                                     lay.medium.friction_mu, strict=True)],
+                    "friction": [
+                        list(p)
+                        for p in zip(
+                            lay.medium.friction_speeds, lay.medium.friction_mu, strict=True
+                        )
+                    ],
                     "source": lay.medium.source,
                 },
             }
@@ -213,8 +219,9 @@ class _Prepared:
     lc: float
 
 
-def prepare(projectile: Any, target: Any, numerics: Numerics | None = None,
-            **overrides: Any) -> _Prepared:
+def prepare(
+    projectile: Any, target: Any, numerics: Numerics | None = None, **overrides: Any
+) -> _Prepared:
     """Resolve names and build the kernel arrays (reusable across many trajectories)."""
     num = numerics or DEFAULT_NUMERICS
     if overrides:
@@ -281,18 +288,43 @@ def simulate(
     _check_inputs(velocity, obliquity, yaw, omega, azimuth)
     pr = prepared or prepare(projectile, target, numerics, **overrides)
     num = pr.numerics
-    y0 = initial_state(pr.projectile, pr.rings, velocity, math.radians(obliquity),
-                       math.radians(yaw), omega, start, math.radians(azimuth))
+    y0 = initial_state(
+        pr.projectile,
+        pr.rings,
+        velocity,
+        math.radians(obliquity),
+        math.radians(yaw),
+        omega,
+        start,
+        math.radians(azimuth),
+    )
     length = pr.projectile.length
-    atol = num.rtol * np.array(
-        [length] * 3 + [1.0] * 4 + [velocity] * 3 + [velocity / length] * 3
-    ) * 1e-2
+    atol = (
+        num.rtol
+        * np.array([length] * 3 + [1.0] * 4 + [velocity] * 3 + [velocity / length] * 3)
+        * 1e-2
+    )
     gravity = np.array([0.0, -num.gravity, 0.0])
     t0 = time.perf_counter()
     ts, ys, outcome, rev, t_contact, n_rhs, n_rej = integrate(
-        y0, num.t_max, num.rtol, atol, 1e-7, num.max_travel, num.v_stop, stop_at_reversal,
-        num.max_steps, pr.mass, pr.inertia, gravity, pr.rings, pr.bounds, pr.coef, pr.fric,
-        num.eps, num.n_gauss if not pr.target.frictionless else 0,
+        y0,
+        num.t_max,
+        num.rtol,
+        atol,
+        1e-7,
+        num.max_travel,
+        num.v_stop,
+        stop_at_reversal,
+        num.max_steps,
+        pr.mass,
+        pr.inertia,
+        gravity,
+        pr.rings,
+        pr.bounds,
+        pr.coef,
+        pr.fric,
+        num.eps,
+        num.n_gauss if not pr.target.frictionless else 0,
     )
     wall = time.perf_counter() - t0
     if OUTCOMES[outcome] == "step_limit":
@@ -300,15 +332,31 @@ def simulate(
             f"step limit of {num.max_steps} steps reached at t = {ts[-1]:.4g} s; "
             "raise numerics max_steps or loosen rtol"
         )
-    return _to_dataset(pr, ts, ys, OUTCOMES[outcome], rev, t_contact, n_rhs, n_rej, wall,
-                       dict(velocity=velocity, obliquity=obliquity, yaw=yaw, omega=omega,
-                            azimuth=azimuth,
-                            start=None if start is None else list(map(float, start)),
-                            stop_at_reversal=stop_at_reversal))
+    return _to_dataset(
+        pr,
+        ts,
+        ys,
+        OUTCOMES[outcome],
+        rev,
+        t_contact,
+        n_rhs,
+        n_rej,
+        wall,
+        dict(
+            velocity=velocity,
+            obliquity=obliquity,
+            yaw=yaw,
+            omega=omega,
+            azimuth=azimuth,
+            start=None if start is None else list(map(float, start)),
+            stop_at_reversal=stop_at_reversal,
+        ),
+    )
 
 
-def _to_dataset(pr: _Prepared, ts, ys, outcome, rev, t_contact, n_rhs, n_rej, wall,
-                inputs) -> xr.Dataset:
+def _to_dataset(
+    pr: _Prepared, ts, ys, outcome, rev, t_contact, n_rhs, n_rej, wall, inputs
+) -> xr.Dataset:
     n = len(ts)
     axes = np.empty((n, 3))
     for i in range(n):
@@ -356,22 +404,38 @@ def _to_dataset(pr: _Prepared, ts, ys, outcome, rev, t_contact, n_rhs, n_rej, wa
             "axis_x": var(axes[:, 0], "1", "projectile axis (towards the nose) x"),
             "axis_y": var(axes[:, 1], "1", "projectile axis (towards the nose) y"),
             "axis_z": var(axes[:, 2], "1", "projectile axis (towards the nose) z"),
-            "theta": var(theta, "degree",
-                         "angle from the target normal (-y) to the projectile axis, towards +x"),
+            "theta": var(
+                theta,
+                "degree",
+                "angle from the target normal (-y) to the projectile axis, towards +x",
+            ),
             "slope": var(slope, "1", "trajectory slope dy/dx of the centre of mass path"),
-            "deviation": var(deviation, "degree",
-                             "angle between the centre of mass velocity and the normal -y"),
+            "deviation": var(
+                deviation, "degree", "angle between the centre of mass velocity and the normal -y"
+            ),
             "speed": var(np.linalg.norm(vel, axis=1), "m s-1", "centre of mass speed"),
             "kinetic_energy": var(ke, "J", "translational + rotational kinetic energy"),
             "work": var(ys[:, 13], "J", "work done by the contact stresses"),
-            "penetration_depth": ((), depth, {"units": "m",
-                                  "long_name": "deepest point of the nose tip below the surface"}),
-            "path_length": ((), float(path), {"units": "m",
-                            "long_name": "length of the nose-tip path below the surface"}),
-            "final_slope": ((), float(slope[-1]), {"units": "1",
-                            "long_name": "trajectory slope dy/dx at the end"}),
-            "final_deviation": ((), float(deviation[-1]), {"units": "degree",
-                                "long_name": "velocity angle from the normal at the end"}),
+            "penetration_depth": (
+                (),
+                depth,
+                {"units": "m", "long_name": "deepest point of the nose tip below the surface"},
+            ),
+            "path_length": (
+                (),
+                float(path),
+                {"units": "m", "long_name": "length of the nose-tip path below the surface"},
+            ),
+            "final_slope": (
+                (),
+                float(slope[-1]),
+                {"units": "1", "long_name": "trajectory slope dy/dx at the end"},
+            ),
+            "final_deviation": (
+                (),
+                float(deviation[-1]),
+                {"units": "degree", "long_name": "velocity angle from the normal at the end"},
+            ),
         },
         coords={"time": ("time", ts, {"units": "s", "long_name": "time since start"})},
         attrs={
@@ -390,8 +454,12 @@ def _to_dataset(pr: _Prepared, ts, ys, outcome, rev, t_contact, n_rhs, n_rej, wa
             "length_m": pr.projectile.length,
             "lc_over_l": pr.lc / pr.projectile.length,
             "inputs_json": json.dumps(
-                {"impact": inputs, "projectile": _projectile_dict(pr.projectile),
-                 "target": _target_dict(pr.target), "numerics": asdict(pr.numerics)},
+                {
+                    "impact": inputs,
+                    "projectile": _projectile_dict(pr.projectile),
+                    "target": _target_dict(pr.target),
+                    "numerics": asdict(pr.numerics),
+                },
                 default=str,
             ),
             "n_rhs": int(n_rhs),

@@ -89,8 +89,9 @@ class Medium:
     def with_friction(self, mu: float | Sequence[tuple[float, float]]) -> Medium:
         """A copy with constant friction ``mu`` or a table of (speed m/s, mu) pairs."""
         if isinstance(mu, int | float):
-            return Medium(self.name, self.coefficients, (0.0,), (float(mu),), self.density,
-                          self.source)
+            return Medium(
+                self.name, self.coefficients, (0.0,), (float(mu),), self.density, self.source
+            )
         sp, m = zip(*mu, strict=True)
         return Medium(self.name, self.coefficients, tuple(sp), tuple(m), self.density, self.source)
 

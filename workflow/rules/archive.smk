@@ -16,14 +16,14 @@ rule archive_dataset:
         "results/{dataset}.nc",
     output:
         "results/archive/{dataset}.nc",
-    localrule: True
-    wildcard_constraints:
-        dataset=r"(?!archive/)[A-Za-z0-9_./-]+",
-    params:
-        max_points=config["archive"]["max_points"],
     log:
         "results/logs/archive/{dataset}.log",
+    wildcard_constraints:
+        dataset=r"(?!archive/)[A-Za-z0-9_./-]+",
+    localrule: True
     conda:
         "../envs/pencore.yaml"
+    params:
+        max_points=config["archive"]["max_points"],
     script:
         "../scripts/archive.py"

@@ -12,5 +12,3 @@ def canonical(value):
     if isinstance(value, list):
         return [canonical(item) for item in value]
     return value
-
-

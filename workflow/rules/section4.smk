@@ -19,19 +19,19 @@ include: "section4_common.smk"
 rule s4_study:
     output:
         nc="results/{study}/{name}.nc",
-    wildcard_constraints:
-        study="fig7|fig9|fig11|fig13|fig16",
-        name="trajectories|turning_angle|start_height",
-    params:
-        kind=lambda wc: "start_height" if wc.name == "start_height" else wc.study,
-        config=lambda wc: s4_params("start_height" if wc.name == "start_height" else wc.study),
-        code=PENCORE_CODE,
     log:
         "results/logs/section4/{study}_{name}.log",
     benchmark:
         "results/benchmarks/section4/{study}_{name}.tsv"
+    wildcard_constraints:
+        study="fig7|fig9|fig11|fig13|fig16",
+        name="trajectories|turning_angle|start_height",
     conda:
         "../envs/pencore.yaml"
+    params:
+        kind=lambda wc: "start_height" if wc.name == "start_height" else wc.study,
+        config=lambda wc: s4_params("start_height" if wc.name == "start_height" else wc.study),
+        code=PENCORE_CODE,
     script:
         "../scripts/section4_study.py"
 
@@ -39,19 +39,19 @@ rule s4_study:
 rule s4_part:
     output:
         nc="results/{study}/parts/{part}.nc",
-    wildcard_constraints:
-        study="fig8|fig12|fig15|fig18",
-        part=r"p[0-9]+(?:_[-0-9.]+)?",
-    params:
-        kind=lambda wc: wc.study,
-        config=lambda wc: s4_params(wc.study),
-        code=PENCORE_CODE,
     log:
         "results/logs/section4/{study}_part_{part}.log",
     benchmark:
         "results/benchmarks/section4/{study}_part_{part}.tsv"
+    wildcard_constraints:
+        study="fig8|fig12|fig15|fig18",
+        part=r"p[0-9]+(?:_[-0-9.]+)?",
     conda:
         "../envs/pencore.yaml"
+    params:
+        kind=lambda wc: wc.study,
+        config=lambda wc: s4_params(wc.study),
+        code=PENCORE_CODE,
     script:
         "../scripts/section4_study.py"
 
@@ -61,20 +61,20 @@ rule s4_gather:
         parts=lambda wc: s4_parts(wc.study),
     output:
         nc="results/{study}/{name}.nc",
-    wildcard_constraints:
-        study="fig8|fig12|fig15|fig18",
-        name="vcr|vcr_yaw|vci|omega_c",
-    localrule: True
-    params:
-        kind=lambda wc: wc.study,
-        config=lambda wc: s4_params(wc.study),
-        code=PENCORE_CODE,
     log:
         "results/logs/section4/{study}_{name}_gather.log",
     benchmark:
         "results/benchmarks/section4/{study}_{name}_gather.tsv"
+    wildcard_constraints:
+        study="fig8|fig12|fig15|fig18",
+        name="vcr|vcr_yaw|vci|omega_c",
+    localrule: True
     conda:
         "../envs/pencore.yaml"
+    params:
+        kind=lambda wc: wc.study,
+        config=lambda wc: s4_params(wc.study),
+        code=PENCORE_CODE,
     script:
         "../scripts/section4_gather.py"
 
@@ -98,15 +98,15 @@ for _kind, (_entry, _dataset) in S4_DATASETS.items():
                 labels={"name": S4_FIGURE_TITLES[_kind], "type": "figure"},
             ),
             pdf=s4_figure_path(_kind, "pdf"),
-        localrule: True
-        params:
-            kind=_kind,
         log:
             f"results/logs/section4/{_kind}_figure.log",
         benchmark:
             f"results/benchmarks/section4/{_kind}_figure.tsv"
+        localrule: True
         conda:
             "../envs/pencore.yaml"
+        params:
+            kind=_kind,
         script:
             "../scripts/section4_figure.py"
 
@@ -116,8 +116,8 @@ for _kind, (_entry, _dataset) in S4_DATASETS.items():
 
 rule s4_paper_comparison:
     input:
-        table2="results/validation/table2.csv",
         **{kind: dataset for kind, (_, dataset) in S4_DATASETS.items()},
+        table2="results/validation/table2.csv",
     output:
         csv=report(
             "results/paper_comparison.csv",
@@ -126,17 +126,17 @@ rule s4_paper_comparison:
             subcategory="Comparison with the paper",
             labels={"name": "paper comparison", "type": "table"},
         ),
-    localrule: True
-    params:
-        yaw_convention=S4["yaw_convention"],
-        vci_threshold=S4["fig15"]["threshold_deg"],
-        code=PENCORE_CODE,
     log:
         "results/logs/section4/paper_comparison.log",
     benchmark:
         "results/benchmarks/section4/paper_comparison.tsv"
+    localrule: True
     conda:
         "../envs/pencore.yaml"
+    params:
+        yaw_convention=S4["yaw_convention"],
+        vci_threshold=S4["fig15"]["threshold_deg"],
+        code=PENCORE_CODE,
     script:
         "../scripts/section4_compare.py"
 
@@ -147,9 +147,9 @@ rule s4_archive_comparison:
         "results/paper_comparison.csv",
     output:
         "results/archive/paper_comparison.csv",
-    localrule: True
     log:
         "results/logs/archive/paper_comparison.log",
+    localrule: True
     conda:
         "../envs/pencore.yaml"
     shell:

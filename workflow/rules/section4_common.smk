@@ -1,7 +1,6 @@
 # Configuration helpers of the Section 4 rules (workflow/rules/section4.smk); no rules here.
 from pencore.studies.section4 import parts_of
 
-
 S4 = config["section4"]
 
 # shared keys of the section4 block read by each study (the rest is the study's own entry)
@@ -12,8 +11,7 @@ S4_SHARED = {
     "fig11": ["target", "trajectory_samples", "speed_fraction"],
     "fig12": ["target", "velocity_tol_m_s", "scan_points"],
     "fig13": ["target", "trajectory_samples", "speed_fraction"],
-    "fig15": ["target", "velocity_tol_m_s", "scan_points", "speed_fraction",
-              "yaw_convention"],
+    "fig15": ["target", "velocity_tol_m_s", "scan_points", "speed_fraction", "yaw_convention"],
     "fig16": ["target", "trajectory_samples", "speed_fraction", "start_height_m"],
     "start_height": ["target", "speed_fraction"],
     "fig18": ["target", "omega_tol_rad_s", "scan_points", "start_height_m"],
@@ -62,9 +60,7 @@ def s4_part_name(part):
 
 
 def s4_parts(study):
-    return [
-        f"results/{study}/parts/{s4_part_name(p)}.nc" for p in parts_of(study, S4[study])
-    ]
+    return [f"results/{study}/parts/{s4_part_name(p)}.nc" for p in parts_of(study, S4[study])]
 
 
 def s4_figure_path(study, ext):

@@ -6,7 +6,6 @@
 # entry reruns only that study (rerun trigger `params`).
 import pandas as pd
 
-
 VALIDATION = config["validation"]
 
 # Tabular inputs are checked at parse time, so a bad row fails before anything runs.
@@ -39,16 +38,16 @@ rule table2:
             labels={"name": "Table 2 candidates", "type": "table"},
         ),
         nc="results/validation/table2.nc",
-    params:
-        study=canonical(VALIDATION["table2"]),
-        numerics=canonical(config["numerics"]),
-        code=PENCORE_CODE,
     log:
         "results/logs/validation/table2.log",
     benchmark:
         "results/benchmarks/validation/table2.tsv"
     conda:
         "../envs/pencore.yaml"
+    params:
+        study=canonical(VALIDATION["table2"]),
+        numerics=canonical(config["numerics"]),
+        code=PENCORE_CODE,
     script:
         "../scripts/table2.py"
 
@@ -58,16 +57,16 @@ rule fig5:
         experiments=VALIDATION["fig5"]["experiments_csv"],
     output:
         nc="results/validation/fig5.nc",
-    params:
-        study=canonical(VALIDATION["fig5"]),
-        numerics=canonical(config["numerics"]),
-        code=PENCORE_CODE,
     log:
         "results/logs/validation/fig5.log",
     benchmark:
         "results/benchmarks/validation/fig5.tsv"
     conda:
         "../envs/pencore.yaml"
+    params:
+        study=canonical(VALIDATION["fig5"]),
+        numerics=canonical(config["numerics"]),
+        code=PENCORE_CODE,
     script:
         "../scripts/fig5.py"
 
@@ -76,16 +75,16 @@ rule verification:
     output:
         nc="results/validation/verification.nc",
         summary="results/validation/verification.txt",
-    params:
-        study=canonical(VALIDATION["verification"]),
-        numerics=canonical(config["numerics"]),
-        code=PENCORE_CODE,
     log:
         "results/logs/validation/verification.log",
     benchmark:
         "results/benchmarks/validation/verification.tsv"
     conda:
         "../envs/pencore.yaml"
+    params:
+        study=canonical(VALIDATION["verification"]),
+        numerics=canonical(config["numerics"]),
+        code=PENCORE_CODE,
     script:
         "../scripts/verification.py"
 
@@ -103,15 +102,15 @@ rule table2_figure:
             labels={"name": "Table 2", "type": "figure"},
         ),
         pdf="results/validation/table2.pdf",
-    localrule: True
-    params:
-        kind="table2",
     log:
         "results/logs/validation/table2_figure.log",
     benchmark:
         "results/benchmarks/validation/table2_figure.tsv"
+    localrule: True
     conda:
         "../envs/pencore.yaml"
+    params:
+        kind="table2",
     script:
         "../scripts/plot.py"
 
@@ -128,15 +127,15 @@ rule fig5_figure:
             labels={"name": "Fig. 5", "type": "figure"},
         ),
         pdf="results/validation/fig5.pdf",
-    localrule: True
-    params:
-        kind="fig5",
     log:
         "results/logs/validation/fig5_figure.log",
     benchmark:
         "results/benchmarks/validation/fig5_figure.tsv"
+    localrule: True
     conda:
         "../envs/pencore.yaml"
+    params:
+        kind="fig5",
     script:
         "../scripts/plot.py"
 
@@ -153,15 +152,15 @@ rule verification_figure:
             labels={"name": "Verification", "type": "figure"},
         ),
         pdf="results/validation/verification.pdf",
-    localrule: True
-    params:
-        kind="verification",
     log:
         "results/logs/validation/verification_figure.log",
     benchmark:
         "results/benchmarks/validation/verification_figure.tsv"
+    localrule: True
     conda:
         "../envs/pencore.yaml"
+    params:
+        kind="verification",
     script:
         "../scripts/plot.py"
 

@@ -13,8 +13,10 @@ ds = read_netcdf(smk.input[0])
 study = ds.attrs.get("study", "unknown")
 # keep the provenance of the run that made the dataset; write_netcdf records the archive
 # step's own on top, so the original configuration travels under `source_*`.
-source = {k: ds.attrs.get(k, "") for k in
-          ("config_json", "config_sha256", "git_commit", "git_dirty", "created_utc")}
+source = {
+    k: ds.attrs.get(k, "")
+    for k in ("config_json", "config_sha256", "git_commit", "git_dirty", "created_utc")
+}
 thin = downsample(ds, smk.params.max_points)
 thin.attrs.update({f"source_{k}": v for k, v in source.items()})
 write_netcdf(

@@ -31,5 +31,4 @@ write_netcdf(
     study="validation/fig5",
 )
 log.info("pencore depth (m):\n%s", ds["pencore_depth"].to_pandas().to_string())
-log.info("largest |pencore - closed form| / closed form = %.3e",
-         float(abs(ds["rel_diff"]).max()))
+log.info("largest |pencore - closed form| / closed form = %.3e", float(abs(ds["rel_diff"]).max()))

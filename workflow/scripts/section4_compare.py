@@ -11,9 +11,12 @@ log = start_log(smk.log[0], "paper_comparison")
 
 datasets = {k: read_netcdf(v) for k, v in smk.input.items() if k != "table2"}
 table2 = pd.read_csv(smk.input.table2)
-df = paper_comparison(**datasets, table2=table2,
-                      yaw_convention=smk.params.yaw_convention,
-                      vci_threshold=smk.params.vci_threshold)
+df = paper_comparison(
+    **datasets,
+    table2=table2,
+    yaw_convention=smk.params.yaw_convention,
+    vci_threshold=smk.params.vci_threshold,
+)
 df.to_csv(smk.output.csv, index=False, float_format="%.6g")
 with pd.option_context("display.width", 200, "display.max_colwidth", 90):
     log.info("comparison with the paper:\n%s", df.to_string(index=False))

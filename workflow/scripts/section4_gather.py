@@ -15,8 +15,11 @@ cfg = smk.params.config
 write_netcdf(
     ds,
     smk.output.nc,
-    config_slice={f"section4.{kind}": cfg["study"], "section4 shared": cfg["shared"],
-                  "numerics": cfg["numerics"]},
+    config_slice={
+        f"section4.{kind}": cfg["study"],
+        "section4 shared": cfg["shared"],
+        "numerics": cfg["numerics"],
+    },
     study=f"section4/{kind}",
 )
 log.info("%d parts -> %s %s", len(parts), smk.output.nc, dict(ds.sizes))

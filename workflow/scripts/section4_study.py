@@ -32,12 +32,17 @@ for name in ("status", "nose_direction"):
         log.info("%s:\n%s", name, ds[name].to_series().to_string())
 for name in ("vcr", "vci", "omega_c", "final_deviation", "alpha", "delta_theta"):
     if name in ds:
-        log.info("%s (%s):\n%s", name, ds[name].attrs.get("units", ""),
-                 ds[name].to_series().to_string())
+        log.info(
+            "%s (%s):\n%s", name, ds[name].attrs.get("units", ""), ds[name].to_series().to_string()
+        )
 write_netcdf(
     ds,
     smk.output.nc,
-    config_slice={f"section4.{kind}": cfg["study"], "section4 shared": cfg["shared"],
-                  "numerics": cfg["numerics"], "part": part},
+    config_slice={
+        f"section4.{kind}": cfg["study"],
+        "section4 shared": cfg["shared"],
+        "numerics": cfg["numerics"],
+        "part": part,
+    },
     study=f"section4/{kind}",
 )

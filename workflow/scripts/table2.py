@@ -11,8 +11,13 @@ log = start_log(smk.log[0], "table2")
 
 study = dict(smk.params.study)
 rows = pd.read_csv(smk.input.rows, comment="#")
-log.info("%d tests from %s; candidates %s x %s", len(rows), smk.input.rows,
-         study["projectiles"], study["depth_measures"])
+log.info(
+    "%d tests from %s; candidates %s x %s",
+    len(rows),
+    smk.input.rows,
+    study["projectiles"],
+    study["depth_measures"],
+)
 table, ds = table2(
     rows,
     smk.params.numerics,
@@ -44,9 +49,14 @@ write_netcdf(
     study="validation/table2",
 )
 log.info("selected %s", ds.attrs["selection_rule"])
-log.info("-> projectile %s, depth measure %s (RMS relative difference %.4f)",
-         ds.attrs["chosen_projectile"], ds.attrs["chosen_depth_measure"],
-         ds.attrs["chosen_rms_rel_diff"])
-log.info("candidates (RMS relative difference from the paper's predicted column):\n%s",
-         selection.to_string(index=False))
+log.info(
+    "-> projectile %s, depth measure %s (RMS relative difference %.4f)",
+    ds.attrs["chosen_projectile"],
+    ds.attrs["chosen_depth_measure"],
+    ds.attrs["chosen_rms_rel_diff"],
+)
+log.info(
+    "candidates (RMS relative difference from the paper's predicted column):\n%s",
+    selection.to_string(index=False),
+)
 log.info("table:\n%s", table.to_string(index=False))

@@ -11,8 +11,7 @@ smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], "verification")
 
 study = dict(smk.params.study)
-ds = verification(study["cases"], velocity_grid(**study["velocities_m_s"]),
-                  smk.params.numerics)
+ds = verification(study["cases"], velocity_grid(**study["velocities_m_s"]), smk.params.numerics)
 write_netcdf(
     ds,
     smk.output.nc,

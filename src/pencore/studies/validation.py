@@ -45,8 +45,10 @@ __all__ = [
 #: Depth measures: name in the study -> (variable of a pencore trajectory, long name).
 DEPTH_MEASURES: dict[str, tuple[str, str]] = {
     "path_length": ("path_length", "length of the nose-tip path below the target surface"),
-    "vertical_depth": ("penetration_depth",
-                       "deepest point of the nose tip below the target surface"),
+    "vertical_depth": (
+        "penetration_depth",
+        "deepest point of the nose tip below the target surface",
+    ),
 }
 
 TABLE2_INPUT_COLUMNS = (
@@ -141,8 +143,12 @@ def table2(
         pr = prepare(name, target, num)
         for it, row in rows.iterrows():
             ds = simulate(
-                name, target, float(row["velocity_m_s"]), float(row["obliquity_deg"]),
-                float(row["yaw_deg"]), prepared=pr,
+                name,
+                target,
+                float(row["velocity_m_s"]),
+                float(row["obliquity_deg"]),
+                float(row["yaw_deg"]),
+                prepared=pr,
             )
             for im, m in enumerate(all_measures):
                 depth[ip, im, it] = float(ds[DEPTH_MEASURES[m][0]])
@@ -194,44 +200,95 @@ def table2(
     dm_long = DEPTH_MEASURES[chosen_m][1]
     dsout = xr.Dataset(
         {
-            "velocity": ("test", rows["velocity_m_s"].to_numpy(dtype=float),
-                         _attrs("m s-1", "impact velocity V_i")),
-            "obliquity": ("test", rows["obliquity_deg"].to_numpy(dtype=float),
-                          _attrs("degree", "angle of obliquity phi_1")),
-            "yaw": ("test", rows["yaw_deg"].to_numpy(dtype=float),
-                    _attrs("degree", "yaw angle phi_2")),
-            "measured_depth": ("test", measured, _attrs(
-                "m", "measured penetration depth (Forrestal & Luk 1992, via paper Table 2)")),
-            "paper_predicted_depth": ("test", paper, _attrs(
-                "m", "penetration depth predicted by Li & Flores-Johnson (2011) Table 2")),
-            "pencore_depth": ("test", chosen, _attrs(
-                "m", f"pencore penetration depth, selected measure: {dm_long}",
-                projectile=chosen_p, depth_measure=chosen_m)),
-            "pencore_vertical_depth": ("test", table["pencore_vertical_depth_m"].to_numpy(),
-                                       _attrs("m", DEPTH_MEASURES["vertical_depth"][1])),
-            "pencore_path_length": ("test", table["pencore_path_length_m"].to_numpy(),
-                                    _attrs("m", DEPTH_MEASURES["path_length"][1])),
-            "rel_diff_vs_paper": ("test", table["rel_diff_vs_paper"].to_numpy(), _attrs(
-                "1", "(pencore - paper predicted) / paper predicted")),
-            "rel_diff_vs_measured": ("test", table["rel_diff_vs_measured"].to_numpy(), _attrs(
-                "1", "(pencore - measured) / measured")),
+            "velocity": (
+                "test",
+                rows["velocity_m_s"].to_numpy(dtype=float),
+                _attrs("m s-1", "impact velocity V_i"),
+            ),
+            "obliquity": (
+                "test",
+                rows["obliquity_deg"].to_numpy(dtype=float),
+                _attrs("degree", "angle of obliquity phi_1"),
+            ),
+            "yaw": (
+                "test",
+                rows["yaw_deg"].to_numpy(dtype=float),
+                _attrs("degree", "yaw angle phi_2"),
+            ),
+            "measured_depth": (
+                "test",
+                measured,
+                _attrs("m", "measured penetration depth (Forrestal & Luk 1992, via paper Table 2)"),
+            ),
+            "paper_predicted_depth": (
+                "test",
+                paper,
+                _attrs("m", "penetration depth predicted by Li & Flores-Johnson (2011) Table 2"),
+            ),
+            "pencore_depth": (
+                "test",
+                chosen,
+                _attrs(
+                    "m",
+                    f"pencore penetration depth, selected measure: {dm_long}",
+                    projectile=chosen_p,
+                    depth_measure=chosen_m,
+                ),
+            ),
+            "pencore_vertical_depth": (
+                "test",
+                table["pencore_vertical_depth_m"].to_numpy(),
+                _attrs("m", DEPTH_MEASURES["vertical_depth"][1]),
+            ),
+            "pencore_path_length": (
+                "test",
+                table["pencore_path_length_m"].to_numpy(),
+                _attrs("m", DEPTH_MEASURES["path_length"][1]),
+            ),
+            "rel_diff_vs_paper": (
+                "test",
+                table["rel_diff_vs_paper"].to_numpy(),
+                _attrs("1", "(pencore - paper predicted) / paper predicted"),
+            ),
+            "rel_diff_vs_measured": (
+                "test",
+                table["rel_diff_vs_measured"].to_numpy(),
+                _attrs("1", "(pencore - measured) / measured"),
+            ),
             "paper_rel_diff_vs_measured": (
-                "test", table["paper_rel_diff_vs_measured"].to_numpy(),
-                _attrs("1", "(paper predicted - measured) / measured")),
-            "final_deviation": ("test", final_dev[ip], _attrs(
-                "degree", "angle between the velocity and the target normal at rest")),
+                "test",
+                table["paper_rel_diff_vs_measured"].to_numpy(),
+                _attrs("1", "(paper predicted - measured) / measured"),
+            ),
+            "final_deviation": (
+                "test",
+                final_dev[ip],
+                _attrs("degree", "angle between the velocity and the target normal at rest"),
+            ),
             "n_steps": ("test", n_steps[ip], _attrs("1", "accepted integration steps")),
-            "depth_candidates": (("projectile", "depth_measure", "test"), depth, _attrs(
-                "m", "pencore depth of every candidate projectile and depth measure")),
-            "selection_score": (("projectile", "depth_measure"), score, _attrs(
-                "1", f"RMS relative difference from {reference}")),
+            "depth_candidates": (
+                ("projectile", "depth_measure", "test"),
+                depth,
+                _attrs("m", "pencore depth of every candidate projectile and depth measure"),
+            ),
+            "selection_score": (
+                ("projectile", "depth_measure"),
+                score,
+                _attrs("1", f"RMS relative difference from {reference}"),
+            ),
         },
         coords={
             "test": ("test", test, _attrs("1", "test number in paper Table 2")),
-            "projectile": ("projectile", np.array(projectiles, dtype=object),
-                           {"long_name": "candidate projectile (paper Table 3)"}),
-            "depth_measure": ("depth_measure", np.array(all_measures, dtype=object),
-                              {"long_name": "depth measure"}),
+            "projectile": (
+                "projectile",
+                np.array(projectiles, dtype=object),
+                {"long_name": "candidate projectile (paper Table 3)"},
+            ),
+            "depth_measure": (
+                "depth_measure",
+                np.array(all_measures, dtype=object),
+                {"long_name": "depth measure"},
+            ),
         },
         attrs={
             "title": "Paper Table 2: soil penetration (Forrestal & Luk 1992) and pencore",
@@ -246,16 +303,20 @@ def table2(
         },
     )
     if "source" in rows.columns:
-        dsout["source"] = ("test", rows["source"].astype(str).to_numpy(dtype=object),
-                           {"long_name": "provenance of the row: paper, derived or assumed"})
+        dsout["source"] = (
+            "test",
+            rows["source"].astype(str).to_numpy(dtype=object),
+            {"long_name": "provenance of the row: paper, derived or assumed"},
+        )
     return table, dsout
 
 
 # ----------------------------------------------------------------------------- cases
 
 
-def normalise_cases(cases: Iterable[Mapping[str, Any]] | Mapping[str, Mapping[str, Any]]
-                    ) -> list[dict[str, Any]]:
+def normalise_cases(
+    cases: Iterable[Mapping[str, Any]] | Mapping[str, Mapping[str, Any]],
+) -> list[dict[str, Any]]:
     """Cases as a list of dicts with ``name, projectile, target, v_min, v_max, label``.
 
     ``cases`` is a sequence of mappings (``name`` optional, defaulting to the projectile
@@ -274,14 +335,16 @@ def normalise_cases(cases: Iterable[Mapping[str, Any]] | Mapping[str, Mapping[st
         name = str(c.get("name") or c["projectile"])
         v_min = c.get("v_min")
         v_max = c.get("v_max")
-        out.append({
-            "name": name,
-            "projectile": str(c["projectile"]),
-            "target": str(c["target"]),
-            "v_min": 0.0 if v_min is None else float(v_min),
-            "v_max": math.inf if v_max is None else float(v_max),
-            "label": str(c.get("label") or name),
-        })
+        out.append(
+            {
+                "name": name,
+                "projectile": str(c["projectile"]),
+                "target": str(c["target"]),
+                "v_min": 0.0 if v_min is None else float(v_min),
+                "v_max": math.inf if v_max is None else float(v_max),
+                "label": str(c.get("label") or name),
+            }
+        )
     names = [c["name"] for c in out]
     if len(set(names)) != len(names):
         raise InputError(f"case names must be unique, got {names}")
@@ -319,8 +382,9 @@ def _velocity_axis(velocities: Sequence[float]) -> np.ndarray:
     return np.unique(v)
 
 
-def _depth_grid(cases: list[dict[str, Any]], velocities: np.ndarray,
-                numerics: Numerics) -> xr.Dataset:
+def _depth_grid(
+    cases: list[dict[str, Any]], velocities: np.ndarray, numerics: Numerics
+) -> xr.Dataset:
     """pencore and closed-form depth on (case, velocity); NaN outside a case's range."""
     pen = np.full((len(cases), velocities.size), np.nan)
     path = np.full_like(pen, np.nan)
@@ -339,35 +403,73 @@ def _depth_grid(cases: list[dict[str, Any]], velocities: np.ndarray,
     rel = (pen - cf) / cf
     return xr.Dataset(
         {
-            "pencore_depth": (("case", "velocity"), pen, _attrs(
-                "m", "pencore penetration depth (deepest point of the nose tip)")),
-            "pencore_path_length": (("case", "velocity"), path, _attrs(
-                "m", "pencore length of the nose-tip path below the surface")),
-            "closedform_depth": (("case", "velocity"), cf, _attrs(
-                "m", "closed-form depth for normal frictionless impact "
-                "(exact nose entry + tunnel phase, pencore.closedform.depth)")),
-            "rel_diff": (("case", "velocity"), rel, _attrs(
-                "1", "(pencore - closed form) / closed form")),
+            "pencore_depth": (
+                ("case", "velocity"),
+                pen,
+                _attrs("m", "pencore penetration depth (deepest point of the nose tip)"),
+            ),
+            "pencore_path_length": (
+                ("case", "velocity"),
+                path,
+                _attrs("m", "pencore length of the nose-tip path below the surface"),
+            ),
+            "closedform_depth": (
+                ("case", "velocity"),
+                cf,
+                _attrs(
+                    "m",
+                    "closed-form depth for normal frictionless impact "
+                    "(exact nose entry + tunnel phase, pencore.closedform.depth)",
+                ),
+            ),
+            "rel_diff": (
+                ("case", "velocity"),
+                rel,
+                _attrs("1", "(pencore - closed form) / closed form"),
+            ),
         },
         coords={
-            "case": ("case", np.array([c["name"] for c in cases], dtype=object),
-                     {"long_name": "case"}),
+            "case": (
+                "case",
+                np.array([c["name"] for c in cases], dtype=object),
+                {"long_name": "case"},
+            ),
             "velocity": ("velocity", velocities, _attrs("m s-1", "impact velocity V_i")),
-            "projectile": ("case", np.array([c["projectile"] for c in cases], dtype=object),
-                           {"long_name": "projectile"}),
-            "target": ("case", np.array([c["target"] for c in cases], dtype=object),
-                       {"long_name": "target"}),
-            "label": ("case", np.array([c["label"] for c in cases], dtype=object),
-                      {"long_name": "legend label"}),
-            "crh": ("case", np.array([_crh(c["projectile"]) for c in cases]),
-                    _attrs("1", "calibre radius head of the ogive nose (0.5: hemisphere)")),
-            "mass": ("case", np.array([get_projectile(c["projectile"]).mass_properties().mass
-                                       for c in cases]), _attrs("kg", "projectile mass")),
-            "diameter": ("case", np.array([get_projectile(c["projectile"]).diameter
-                                           for c in cases]), _attrs("m", "shank diameter")),
+            "projectile": (
+                "case",
+                np.array([c["projectile"] for c in cases], dtype=object),
+                {"long_name": "projectile"},
+            ),
+            "target": (
+                "case",
+                np.array([c["target"] for c in cases], dtype=object),
+                {"long_name": "target"},
+            ),
+            "label": (
+                "case",
+                np.array([c["label"] for c in cases], dtype=object),
+                {"long_name": "legend label"},
+            ),
+            "crh": (
+                "case",
+                np.array([_crh(c["projectile"]) for c in cases]),
+                _attrs("1", "calibre radius head of the ogive nose (0.5: hemisphere)"),
+            ),
+            "mass": (
+                "case",
+                np.array([get_projectile(c["projectile"]).mass_properties().mass for c in cases]),
+                _attrs("kg", "projectile mass"),
+            ),
+            "diameter": (
+                "case",
+                np.array([get_projectile(c["projectile"]).diameter for c in cases]),
+                _attrs("m", "shank diameter"),
+            ),
         },
-        attrs={"Conventions": "CF-1.10",
-               "numerics_json": json.dumps(asdict(numerics), sort_keys=True)},
+        attrs={
+            "Conventions": "CF-1.10",
+            "numerics_json": json.dumps(asdict(numerics), sort_keys=True),
+        },
     )
 
 
@@ -411,8 +513,11 @@ def fig5(
     num = resolve_numerics(numerics)
     ds = _depth_grid(cs, v, num)
 
-    exp = experiments if experiments is not None else pd.DataFrame(
-        columns=list(FIG5_EXPERIMENT_COLUMNS))
+    exp = (
+        experiments
+        if experiments is not None
+        else pd.DataFrame(columns=list(FIG5_EXPERIMENT_COLUMNS))
+    )
     missing = [c for c in FIG5_EXPERIMENT_COLUMNS if c not in exp.columns]
     if missing:
         raise InputError(f"experiments lack column(s) {', '.join(missing)}")
@@ -440,18 +545,33 @@ def fig5(
         e_pen.append(float(sim["penetration_depth"]))
     e_d_arr = np.asarray(e_d, dtype=float)
     e_pen_arr = np.asarray(e_pen, dtype=float)
-    ds["experiment_case"] = ("experiment", np.asarray(e_case, dtype=object),
-                             {"long_name": "Fig. 5 case of the measured point"})
-    ds["experiment_velocity"] = ("experiment", np.asarray(e_v, dtype=float),
-                                 _attrs("m s-1", "measured impact velocity"))
+    ds["experiment_case"] = (
+        "experiment",
+        np.asarray(e_case, dtype=object),
+        {"long_name": "Fig. 5 case of the measured point"},
+    )
+    ds["experiment_velocity"] = (
+        "experiment",
+        np.asarray(e_v, dtype=float),
+        _attrs("m s-1", "measured impact velocity"),
+    )
     ds["experiment_depth"] = ("experiment", e_d_arr, _attrs("m", "measured penetration depth"))
-    ds["experiment_source"] = ("experiment", np.asarray(e_src, dtype=object),
-                               {"long_name": "provenance: paper, derived or assumed"})
-    ds["experiment_pencore_depth"] = ("experiment", e_pen_arr, _attrs(
-        "m", "pencore depth at the measured impact velocity"))
+    ds["experiment_source"] = (
+        "experiment",
+        np.asarray(e_src, dtype=object),
+        {"long_name": "provenance: paper, derived or assumed"},
+    )
+    ds["experiment_pencore_depth"] = (
+        "experiment",
+        e_pen_arr,
+        _attrs("m", "pencore depth at the measured impact velocity"),
+    )
     with np.errstate(divide="ignore", invalid="ignore"):
-        ds["experiment_rel_diff"] = ("experiment", (e_pen_arr - e_d_arr) / e_d_arr, _attrs(
-            "1", "(pencore - measured) / measured"))
+        ds["experiment_rel_diff"] = (
+            "experiment",
+            (e_pen_arr - e_d_arr) / e_d_arr,
+            _attrs("1", "(pencore - measured) / measured"),
+        )
     ds.attrs.update(
         title="Paper Fig. 5: penetration depth against impact velocity, concrete and "
         "aluminium targets",
@@ -487,10 +607,16 @@ def verification(
     case_max = np.nanmax(np.where(np.isfinite(absrel), absrel, -np.inf), axis=1)
     case_max = np.where(np.isfinite(case_max), case_max, np.nan)
     ic, iv = np.unravel_index(int(np.nanargmax(absrel)), absrel.shape)
-    ds["case_max_abs_rel_diff"] = ("case", case_max, _attrs(
-        "1", "largest |pencore - closed form| / closed form over velocity"))
-    ds["max_abs_rel_diff"] = ((), float(absrel[ic, iv]), _attrs(
-        "1", "largest |pencore - closed form| / closed form over all cases and velocities"))
+    ds["case_max_abs_rel_diff"] = (
+        "case",
+        case_max,
+        _attrs("1", "largest |pencore - closed form| / closed form over velocity"),
+    )
+    ds["max_abs_rel_diff"] = (
+        (),
+        float(absrel[ic, iv]),
+        _attrs("1", "largest |pencore - closed form| / closed form over all cases and velocities"),
+    )
     ds.attrs.update(
         title="Verification: pencore against the closed form, normal frictionless impact",
         max_abs_rel_diff_case=str(ds["case"].values[ic]),
