@@ -24,6 +24,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .validate import InputError, number
+
 __all__ = [
     "OgiveNose",
     "ConeNose",
@@ -38,15 +40,16 @@ __all__ = [
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(96)
 
 
-class GeometryError(ValueError):
+class GeometryError(InputError):
     """A projectile definition that does not describe a valid body."""
 
 
-def _check_positive(name: str, value: float) -> float:
-    value = float(value)
-    if not math.isfinite(value) or value <= 0.0:
-        raise GeometryError(f"{name} must be a positive finite number, got {value!r}")
-    return value
+def _check(key: str, value: float) -> float:
+    """``value`` within ``pencore.validate.LIMITS[key]``, else :class:`GeometryError`."""
+    try:
+        return number(value, key)
+    except InputError as exc:
+        raise GeometryError(str(exc)) from None
 
 
 @dataclass(frozen=True)
@@ -60,11 +63,8 @@ class OgiveNose:
     density: float
 
     def __post_init__(self) -> None:
-        if not (math.isfinite(self.crh) and self.crh >= 0.5):
-            raise GeometryError(
-                f"ogive CRH must be >= 0.5 (0.5 is the hemisphere), got {self.crh!r}"
-            )
-        _check_positive("nose density (kg/m^3)", self.density)
+        _check("crh", self.crh)
+        _check("density", self.density)
 
     def length(self, a: float) -> float:
         return a * math.sqrt(4.0 * self.crh - 1.0)
@@ -101,11 +101,10 @@ class ConeNose:
     density: float
 
     def __post_init__(self) -> None:
-        if not (0.0 < self.half_angle < 0.5 * math.pi):
-            raise GeometryError(
-                f"cone half-angle must be in (0, 90) deg, got {math.degrees(self.half_angle)!r}"
-            )
-        _check_positive("nose density (kg/m^3)", self.density)
+        if isinstance(self.half_angle, bool) or not isinstance(self.half_angle, int | float):
+            raise GeometryError(f"cone half-angle must be a number of rad, got {self.half_angle!r}")
+        _check("half_angle_deg", math.degrees(self.half_angle))
+        _check("density", self.density)
 
     def length(self, a: float) -> float:
         return a / math.tan(self.half_angle)
@@ -136,6 +135,9 @@ class FlatNose:
 
     density: float = 7850.0
 
+    def __post_init__(self) -> None:
+        _check("density", self.density)
+
     def length(self, a: float) -> float:
         return 0.0
 
@@ -163,8 +165,8 @@ class Cylinder:
     density: float
 
     def __post_init__(self) -> None:
-        _check_positive("shank length (m)", self.length)
-        _check_positive("shank density (kg/m^3)", self.density)
+        _check("length", self.length)
+        _check("density", self.density)
 
 
 @dataclass(frozen=True)
@@ -238,7 +240,7 @@ class Projectile:
     source: str = ""
 
     def __post_init__(self) -> None:
-        _check_positive("diameter (m)", self.diameter)
+        _check("diameter", self.diameter)
         object.__setattr__(self, "shank", tuple(self.shank))
 
     @property

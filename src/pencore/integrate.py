@@ -13,16 +13,29 @@ Jacobian: the kinematic rows are exact; the force and moment derivatives with re
 the velocities are finite differences; the derivatives with respect to position and
 attitude are left out (they are not stiff), which the error control absorbs.
 
+Structure (as scipy's ``_ivp`` separates them): :func:`_jacobian` builds the Jacobian,
+:func:`_attempt` takes one Rosenbrock step and returns its error norm,
+:func:`_next_step` is the step-size controller, :func:`_stop_code` holds the stopping
+events, and :func:`integrate_chunk` records accepted steps. ``integrate_chunk`` returns
+to Python every ``n_max`` steps with its state in two small arrays, so that a run can be
+interrupted (Ctrl-C), bounded in wall time, and its results grown as needed instead of
+preallocated (:func:`pencore.solver.simulate` drives it).
+
 Stopping: the run ends when, after first contact, the speed falls below ``v_stop``
 (``stopped``), no part of the body is below the surface any more (``exited``), the
 centre-of-mass velocity turns towards the surface while in the target and
 ``stop_at_reversal`` is set (``reversed``), or ``t_max`` is reached (``time_limit``).
+It fails with ``step_underflow`` when the step needed for the error tolerance falls below
+``h_min`` (a stiff or chattering right-hand side, e.g. ``eps = 0``) and with
+``non_finite`` when the state stops being finite (a runaway).
 """
 
 from __future__ import annotations
 
 import hashlib
 import math
+import time
+from dataclasses import dataclass
 from pathlib import Path
 
 import numba as nb
@@ -52,9 +65,30 @@ def _invalidate_stale_cache() -> None:
 
 _invalidate_stale_cache()
 
-OUTCOMES = ("stopped", "exited", "time_limit", "reversed", "step_limit")
+#: Outcome names, indexed by the integer codes the compiled integrator returns.
+OUTCOMES = (
+    "stopped",
+    "exited",
+    "time_limit",
+    "reversed",
+    "step_limit",
+    "step_underflow",
+    "non_finite",
+    "running",
+)
+STEP_LIMIT = 4
+STEP_UNDERFLOW = 5
+NON_FINITE = 6
+RUNNING = 7
+
+#: Indices into the float state array ``sf`` of :func:`integrate_chunk`.
+SF_T, SF_H, SF_T_CONTACT, SF_CLEAR, SF_ERR = 0, 1, 2, 3, 4
+#: Indices into the integer state array ``si``.
+SI_ENTERED, SI_REV, SI_N_RHS, SI_N_REJ = 0, 1, 2, 3
+
 _D = 1.0 / (2.0 + math.sqrt(2.0))
 _E32 = 6.0 + math.sqrt(2.0)
+NY = 14
 
 
 @nb.njit(cache=True)
@@ -110,16 +144,82 @@ def _normalise(y):
 
 
 @nb.njit(cache=True)
-def integrate(
-    y0,
-    t_max,
+def body_reach(rings):
+    """Largest distance (m) from the centre of mass to a ring: the free-flight step bound."""
+    reach = 0.0
+    for i in range(rings.shape[0]):
+        rr = math.sqrt(rings[i, 0] ** 2 + rings[i, 1] ** 2)
+        if rr > reach:
+            reach = rr
+    return reach
+
+
+@nb.njit(cache=True)
+def _jacobian(
+    jac, y, f0, clear, reach, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss
+):
+    """Fill ``jac`` (14 x 14) at state ``y``; returns the right-hand-side calls made."""
+    for i in range(NY):
+        for j in range(NY):
+            jac[i, j] = 0.0
+    jac[0, 7] = 1.0
+    jac[1, 8] = 1.0
+    jac[2, 9] = 1.0
+    qw, qx, qy, qz = y[3], y[4], y[5], y[6]
+    w1, w2, w3 = y[10], y[11], y[12]
+    # d(qdot)/dq
+    jac[3, 4] = -0.5 * w1
+    jac[3, 5] = -0.5 * w2
+    jac[3, 6] = -0.5 * w3
+    jac[4, 3] = 0.5 * w1
+    jac[4, 5] = 0.5 * w3
+    jac[4, 6] = -0.5 * w2
+    jac[5, 3] = 0.5 * w2
+    jac[5, 4] = -0.5 * w3
+    jac[5, 6] = 0.5 * w1
+    jac[6, 3] = 0.5 * w3
+    jac[6, 4] = 0.5 * w2
+    jac[6, 5] = -0.5 * w1
+    # d(qdot)/dw
+    jac[3, 10] = -0.5 * qx
+    jac[3, 11] = -0.5 * qy
+    jac[3, 12] = -0.5 * qz
+    jac[4, 10] = 0.5 * qw
+    jac[4, 11] = -0.5 * qz
+    jac[4, 12] = 0.5 * qy
+    jac[5, 10] = 0.5 * qz
+    jac[5, 11] = 0.5 * qw
+    jac[5, 12] = -0.5 * qx
+    jac[6, 10] = -0.5 * qy
+    jac[6, 11] = 0.5 * qx
+    jac[6, 12] = 0.5 * qw
+    if clear > 0.0:
+        return 0
+    speed = math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
+    wmag = math.sqrt(w1**2 + w2**2 + w3**2)
+    for c in range(7, 13):
+        yp = y.copy()
+        scale = speed if c < 10 else max(wmag, speed / max(reach, 1e-9))
+        dlt = 1e-7 * max(scale, 1.0)
+        if eps > 0.0:
+            dlt = min(dlt, 0.05 * eps) if c < 10 else min(dlt, 0.05 * eps / reach)
+        yp[c] += dlt
+        fp, _ = rhs(yp, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss)
+        for r in range(7, 14):
+            jac[r, c] = (fp[r] - f0[r]) / dlt
+    return 6
+
+
+@nb.njit(cache=True)
+def _attempt(
+    h,
+    y,
+    f0,
+    jac,
+    wmat,
+    piv,
     rtol,
     atol,
-    h_init,
-    max_travel,
-    v_stop,
-    stop_at_reversal,
-    max_steps,
     mass,
     inertia,
     gravity,
@@ -130,155 +230,286 @@ def integrate(
     eps,
     n_gauss,
 ):
-    """Integrate one trajectory.
+    """One Rosenbrock (2,3) step of size ``h``: ``(ynew, f(ynew), clearance, err)``, with
+    ``err`` the RMS of the third-order error estimate scaled by ``atol + rtol |y|``."""
+    for i in range(NY):
+        for j in range(NY):
+            wmat[i, j] = -h * _D * jac[i, j]
+        wmat[i, i] += 1.0
+    _lu(wmat, piv)
+    k1 = _solve(wmat, piv, f0)
+    y1 = y + 0.5 * h * k1
+    f1, _ = rhs(y1, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss)
+    k2 = _solve(wmat, piv, f1 - k1) + k1
+    ynew = y + h * k2
+    f2, clear_new = rhs(ynew, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss)
+    k3 = _solve(wmat, piv, f2 - _E32 * (k2 - f1) - 2.0 * (k1 - f0))
+    err = 0.0
+    for i in range(13):
+        sc = atol[i] + rtol * max(abs(y[i]), abs(ynew[i]))
+        e = h / 6.0 * (k1[i] - 2.0 * k2[i] + k3[i]) / sc
+        err += e * e
+    err = math.sqrt(err / 13.0)
+    return ynew, f2, clear_new, err
+
+
+@nb.njit(cache=True)
+def _next_step(h, err):
+    """Step-size controller after an accepted step (third-order error estimate)."""
+    if err == 0.0:
+        return 5.0 * h
+    return h * min(5.0, max(0.2, 0.8 * err ** (-1.0 / 3.0)))
+
+
+@nb.njit(cache=True)
+def speed_of(y):
+    """Speed (m/s) of the centre of mass in state ``y``."""
+    return math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
+
+
+@nb.njit(cache=True)
+def _stop_code(y, t, t_max, entered, clear, v_stop):
+    """The outcome code if the run must end at this accepted state, else ``RUNNING``."""
+    speed = speed_of(y)
+    if entered and speed < v_stop:
+        return 0
+    if entered and clear > 0.0:
+        return 1
+    if t >= t_max:
+        return 2
+    return RUNNING
+
+
+@nb.njit(cache=True)
+def integrate_chunk(
+    y,
+    f0,
+    sf,
+    si,
+    n_max,
+    t_max,
+    rtol,
+    atol,
+    h_min,
+    max_travel,
+    v_stop,
+    stop_at_reversal,
+    mass,
+    inertia,
+    gravity,
+    rings,
+    bounds,
+    coef,
+    fric,
+    eps,
+    n_gauss,
+    reach,
+):
+    """Advance a trajectory by at most ``n_max`` accepted steps.
+
+    ``y`` (14,) and ``f0`` (its derivative) are updated in place, and so are the float
+    state ``sf`` (time, next step, time of first contact, clearance, last error norm;
+    indices ``SF_*``) and the integer state ``si`` (entered, reversed, right-hand-side
+    calls, rejected steps; indices ``SI_*``).
 
     Returns
     -------
-    ts : (n,) times (s); ys : (n, 14) states at the accepted steps;
-    outcome : int index into ``OUTCOMES``; reversed_flag : int;
-    t_first_contact : float (s, nan if never); n_rhs : int; n_reject : int.
+    ts : (k,) times (s) of the accepted steps; ys : (k, 14) states there;
+    code : int index into ``OUTCOMES`` (``RUNNING`` when ``n_max`` steps were taken).
     """
-    ny = 14
-    ts = np.empty(max_steps + 1)
-    ys = np.empty((max_steps + 1, ny))
-    y = y0.copy()
-    _normalise(y)
-    t = 0.0
-    ts[0] = t
-    ys[0] = y
-    f0, clear = rhs(y, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss)
-    n_rhs = 1
-    n_rej = 0
-    entered = clear <= 0.0
-    t_contact = 0.0 if entered else np.nan
-    rev = 0
-    outcome = 2
-    nsave = 1
-    h = h_init
-    jac = np.zeros((ny, ny))
-    wmat = np.empty((ny, ny))
-    piv = np.empty(ny, dtype=np.int64)
-    # reach of the body from its centre of mass, for the free-flight step bound
-    reach = 0.0
-    for i in range(rings.shape[0]):
-        rr = math.sqrt(rings[i, 0] ** 2 + rings[i, 1] ** 2)
-        if rr > reach:
-            reach = rr
+    ts = np.empty(n_max)
+    ys = np.empty((n_max, NY))
+    jac = np.zeros((NY, NY))
+    wmat = np.empty((NY, NY))
+    piv = np.empty(NY, dtype=np.int64)
+    t = sf[SF_T]
+    h = sf[SF_H]
+    clear = sf[SF_CLEAR]
+    k = 0
+    code = RUNNING
     while True:
+        code = _stop_code(y, t, t_max, si[SI_ENTERED] == 1, clear, v_stop)
+        if code != RUNNING or k == n_max:
+            break
         speed = math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
-        if entered and speed < v_stop:
-            outcome = 0
-            break
-        if entered and clear > 0.0:
-            outcome = 1
-            break
-        if t >= t_max:
-            outcome = 2
-            break
-        if nsave > max_steps:
-            outcome = 4
-            break
         wmag = math.sqrt(y[10] ** 2 + y[11] ** 2 + y[12] ** 2)
         hmax = max_travel / max(speed, 1e-3)
         if clear > 0.0:
             # free flight: do not step past the first touch of the surface
             hmax = min(hmax, max(clear, 1e-6 * reach) / max(speed + wmag * reach, 1e-3))
         h = min(h, hmax, t_max - t)
-        # ---- Jacobian
-        for i in range(ny):
-            for j in range(ny):
-                jac[i, j] = 0.0
-        jac[0, 7] = 1.0
-        jac[1, 8] = 1.0
-        jac[2, 9] = 1.0
-        qw, qx, qy, qz = y[3], y[4], y[5], y[6]
-        w1, w2, w3 = y[10], y[11], y[12]
-        # d(qdot)/dq
-        jac[3, 4] = -0.5 * w1
-        jac[3, 5] = -0.5 * w2
-        jac[3, 6] = -0.5 * w3
-        jac[4, 3] = 0.5 * w1
-        jac[4, 5] = 0.5 * w3
-        jac[4, 6] = -0.5 * w2
-        jac[5, 3] = 0.5 * w2
-        jac[5, 4] = -0.5 * w3
-        jac[5, 6] = 0.5 * w1
-        jac[6, 3] = 0.5 * w3
-        jac[6, 4] = 0.5 * w2
-        jac[6, 5] = -0.5 * w1
-        # d(qdot)/dw
-        jac[3, 10] = -0.5 * qx
-        jac[3, 11] = -0.5 * qy
-        jac[3, 12] = -0.5 * qz
-        jac[4, 10] = 0.5 * qw
-        jac[4, 11] = -0.5 * qz
-        jac[4, 12] = 0.5 * qy
-        jac[5, 10] = 0.5 * qz
-        jac[5, 11] = 0.5 * qw
-        jac[5, 12] = -0.5 * qx
-        jac[6, 10] = -0.5 * qy
-        jac[6, 11] = 0.5 * qx
-        jac[6, 12] = 0.5 * qw
-        if clear <= 0.0:
-            for c in range(7, 13):
-                yp = y.copy()
-                scale = speed if c < 10 else max(wmag, speed / max(reach, 1e-9))
-                dlt = 1e-7 * max(scale, 1.0)
-                if eps > 0.0:
-                    dlt = min(dlt, 0.05 * eps) if c < 10 else min(dlt, 0.05 * eps / reach)
-                yp[c] += dlt
-                fp, _ = rhs(yp, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss)
-                n_rhs += 1
-                for r in range(7, 14):
-                    jac[r, c] = (fp[r] - f0[r]) / dlt
-        # ---- step attempts
+        si[SI_N_RHS] += _jacobian(
+            jac,
+            y,
+            f0,
+            clear,
+            reach,
+            mass,
+            inertia,
+            gravity,
+            rings,
+            bounds,
+            coef,
+            fric,
+            eps,
+            n_gauss,
+        )
         while True:
-            for i in range(ny):
-                for j in range(ny):
-                    wmat[i, j] = -h * _D * jac[i, j]
-                wmat[i, i] += 1.0
-            _lu(wmat, piv)
-            k1 = _solve(wmat, piv, f0)
-            y1 = y + 0.5 * h * k1
-            f1, _ = rhs(y1, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss)
-            k2 = _solve(wmat, piv, f1 - k1) + k1
-            ynew = y + h * k2
-            f2, clear_new = rhs(
-                ynew, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss
+            ynew, f2, clear_new, err = _attempt(
+                h,
+                y,
+                f0,
+                jac,
+                wmat,
+                piv,
+                rtol,
+                atol,
+                mass,
+                inertia,
+                gravity,
+                rings,
+                bounds,
+                coef,
+                fric,
+                eps,
+                n_gauss,
             )
-            k3 = _solve(wmat, piv, f2 - _E32 * (k2 - f1) - 2.0 * (k1 - f0))
-            n_rhs += 2
-            err = 0.0
-            for i in range(13):
-                sc = atol[i] + rtol * max(abs(y[i]), abs(ynew[i]))
-                e = h / 6.0 * (k1[i] - 2.0 * k2[i] + k3[i]) / sc
-                err += e * e
-            err = math.sqrt(err / 13.0)
-            if err <= 1.0 or h < 1e-12:
+            si[SI_N_RHS] += 2
+            if err <= 1.0:
                 break
-            n_rej += 1
-            h = h * max(0.2, 0.8 * err ** (-1.0 / 3.0))
-        # ---- accept
+            si[SI_N_REJ] += 1
+            if not math.isfinite(err):
+                h = 0.2 * h
+            else:
+                h = h * max(0.2, 0.8 * err ** (-1.0 / 3.0))
+            if h < h_min:
+                break
+        if not (err <= 1.0):
+            code = STEP_UNDERFLOW if math.isfinite(err) else NON_FINITE
+            sf[SF_ERR] = err
+            break
         t += h
         _normalise(ynew)
-        y = ynew
-        f0 = f2
+        finite = True
+        for i in range(NY):
+            if not math.isfinite(ynew[i]):
+                finite = False
+        if not finite:
+            code = NON_FINITE
+            break
+        y[:] = ynew
+        f0[:] = f2
         clear = clear_new
-        ts[nsave] = t
-        ys[nsave] = y
-        nsave += 1
-        if not entered and clear <= 0.0:
-            entered = True
-            t_contact = t
-        if entered and clear <= 0.0 and y[8] >= 0.0 and rev == 0:
-            sp = math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
-            if sp >= v_stop:
-                rev = 1
+        ts[k] = t
+        ys[k] = y
+        k += 1
+        if si[SI_ENTERED] == 0 and clear <= 0.0:
+            si[SI_ENTERED] = 1
+            sf[SF_T_CONTACT] = t
+        if si[SI_ENTERED] == 1 and clear <= 0.0 and y[8] >= 0.0 and si[SI_REV] == 0:
+            if speed_of(y) >= v_stop:
+                si[SI_REV] = 1
                 if stop_at_reversal:
-                    outcome = 3
+                    code = 3
                     break
-        if err == 0.0:
-            h = 5.0 * h
-        else:
-            h = h * min(5.0, max(0.2, 0.8 * err ** (-1.0 / 3.0)))
-    return ts[:nsave], ys[:nsave], outcome, rev, t_contact, n_rhs, n_rej
+        h = _next_step(h, err)
+    sf[SF_T] = t
+    sf[SF_H] = h
+    sf[SF_CLEAR] = clear
+    return ts[:k], ys[:k], code
+
+
+#: Accepted steps per call of the compiled integrator: a call takes well under a second
+#: on any machine (~0.1 ms per step here), so Ctrl-C and the wall budget act within it.
+CHUNK_STEPS = 500
+
+
+@dataclass
+class RunResult:
+    """What :func:`integrate` returns: the accepted states and how the run ended."""
+
+    ts: np.ndarray
+    ys: np.ndarray
+    outcome: str
+    reversed: bool
+    t_first_contact: float
+    n_rhs: int
+    n_rejected: int
+    last_error_norm: float
+
+
+def integrate(
+    y0: np.ndarray,
+    *,
+    t_max: float,
+    rtol: float,
+    atol: np.ndarray,
+    h_init: float,
+    h_min: float,
+    max_travel: float,
+    v_stop: float,
+    stop_at_reversal: bool,
+    max_steps: int,
+    max_wall: float,
+    mass: float,
+    inertia: np.ndarray,
+    gravity: np.ndarray,
+    rings: np.ndarray,
+    bounds: np.ndarray,
+    coef: np.ndarray,
+    fric: np.ndarray,
+    eps: float,
+    n_gauss: int,
+) -> RunResult:
+    """Integrate one trajectory from state ``y0`` (SI units) with the Rosenbrock pair.
+
+    Drives :func:`integrate_chunk` ``CHUNK_STEPS`` accepted steps at a time, so results
+    grow as needed, a pending signal (Ctrl-C) is handled between chunks, and the run is
+    bounded by ``max_steps`` accepted steps (outcome ``step_limit``) and ``max_wall``
+    seconds of wall time (outcome ``wall_limit``; ``inf`` for no limit).
+
+    Returns
+    -------
+    RunResult
+        ``outcome`` is one of :data:`OUTCOMES` (never ``running``) or ``wall_limit``.
+    """
+    y = np.array(y0, dtype=float)
+    _normalise(y)
+    f0, clear = rhs(y, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss)
+    entered = clear <= 0.0
+    sf = np.array([0.0, h_init, 0.0 if entered else math.nan, clear, 0.0])
+    si = np.array([int(entered), 0, 1, 0], dtype=np.int64)
+    reach = body_reach(rings)
+    ts_parts = [np.zeros(1)]
+    ys_parts = [y[None, :].copy()]
+    n_saved = 0
+    start = time.monotonic()
+    while True:
+        n_max = max(0, min(CHUNK_STEPS, max_steps - n_saved))
+        ts, ys, code = integrate_chunk(
+            y, f0, sf, si, n_max, t_max, rtol, atol, h_min, max_travel, v_stop,
+            stop_at_reversal, mass, inertia, gravity, rings, bounds, coef, fric, eps,
+            n_gauss, reach,
+        )  # fmt: skip
+        ts_parts.append(ts)
+        ys_parts.append(ys)
+        n_saved += ts.size
+        if code != RUNNING:
+            outcome = OUTCOMES[code]
+            break
+        if n_saved >= max_steps:
+            outcome = "step_limit"
+            break
+        if time.monotonic() - start > max_wall:
+            outcome = "wall_limit"
+            break
+    return RunResult(
+        np.concatenate(ts_parts),
+        np.concatenate(ys_parts),
+        outcome,
+        bool(si[SI_REV]),
+        float(sf[SF_T_CONTACT]),
+        int(si[SI_N_RHS]),
+        int(si[SI_N_REJ]),
+        float(sf[SF_ERR]),
+    )

@@ -16,8 +16,9 @@ from typing import Any
 import numpy as np
 import yaml
 
-from .geometry import ConeNose, Cylinder, FlatNose, GeometryError, OgiveNose, Projectile
-from .target import Layer, Medium, Target, TargetError
+from .geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
+from .target import Layer, Medium, Target
+from .validate import InputError, check_keys, number
 
 __all__ = [
     "InputError",
@@ -33,10 +34,6 @@ __all__ = [
     "projectile_names",
     "target_names",
 ]
-
-
-class InputError(ValueError):
-    """Bad user input (name, file or value); the message names the value and what is allowed."""
 
 
 # ---------------------------------------------------------------- media (paper Table 1)
@@ -249,53 +246,72 @@ def target_names() -> list[str]:
 # ---------------------------------------------------------------- YAML
 
 
-def _num(d: dict[str, Any], key: str, what: str) -> float:
+def _num(d: dict[str, Any], key: str, what: str, limit: str | None = None) -> float:
+    """``d[key]`` as a number within ``LIMITS[limit or key]`` (YAML's ``1e6`` string
+    form accepted)."""
     if key not in d:
         raise InputError(f"{what}: missing key {key!r}")
-    try:
-        v = float(d[key])
-    except (TypeError, ValueError):
-        raise InputError(f"{what}: {key} must be a number, got {d[key]!r}") from None
-    return v
+    return number(d[key], limit or key, what, allow_str=True)
+
+
+def _mapping(x: Any, what: str) -> dict[str, Any]:
+    if not isinstance(x, dict):
+        raise InputError(f"{what} must be a mapping, got {x!r}")
+    return x
+
+
+_NOSE_KEYS = {
+    "ogive": ("kind", "crh", "density"),
+    "cone": ("kind", "half_angle_deg", "density"),
+    "flat": ("kind", "density"),
+}
 
 
 def projectile_from_dict(d: dict[str, Any]) -> Projectile:
-    """Build a projectile from a mapping (the YAML format in the README)."""
+    """Build a projectile from a mapping (the YAML format in the README).
+
+    Unknown keys, booleans or text where numbers belong, and values outside
+    :data:`pencore.validate.LIMITS` raise :class:`InputError` naming the key and value.
+    """
     if not isinstance(d, dict):
         raise InputError(f"projectile definition must be a mapping, got {type(d).__name__}")
     name = str(d.get("name", "projectile"))
     what = f"projectile {name!r}"
-    try:
-        diameter = _num(d, "diameter", what)
-        nd = d.get("nose")
-        if not isinstance(nd, dict):
-            raise InputError(f"{what}: 'nose' must be a mapping with a 'kind'")
-        kind = str(nd.get("kind", "ogive")).lower()
-        rho = _num(nd, "density", what + " nose")
-        if kind == "ogive":
-            nose: OgiveNose | ConeNose | FlatNose = OgiveNose(_num(nd, "crh", what), rho)
-        elif kind == "cone":
-            nose = ConeNose(math.radians(_num(nd, "half_angle_deg", what)), rho)
-        elif kind == "flat":
-            nose = FlatNose(rho)
-        else:
-            raise InputError(f"{what}: nose kind must be ogive, cone or flat, got {kind!r}")
-        shank = d.get("shank", [])
-        if isinstance(shank, dict):
-            shank = [shank]
-        if not isinstance(shank, list) or not all(isinstance(c, dict) for c in shank):
-            raise InputError(
-                f"{what}: 'shank' must be a list of mappings with length and density, got {shank!r}"
-            )
-        cyl = tuple(
-            Cylinder(_num(c, "length", what + " shank"), _num(c, "density", what + " shank"))
-            for c in shank
+    check_keys(d, ("name", "diameter", "nose", "shank", "source"), what)
+    diameter = _num(d, "diameter", what)
+    nd = d.get("nose")
+    if not isinstance(nd, dict):
+        raise InputError(f"{what}: 'nose' must be a mapping with a 'kind', got {nd!r}")
+    kind = nd.get("kind", "ogive")
+    kind = kind.lower() if isinstance(kind, str) else kind
+    if kind not in _NOSE_KEYS:
+        raise InputError(f"{what}: nose kind must be ogive, cone or flat, got {kind!r}")
+    check_keys(nd, _NOSE_KEYS[kind], f"{what} nose")
+    rho = _num(nd, "density", what + " nose")
+    if kind == "ogive":
+        nose: OgiveNose | ConeNose | FlatNose = OgiveNose(_num(nd, "crh", what + " nose"), rho)
+    elif kind == "cone":
+        nose = ConeNose(math.radians(_num(nd, "half_angle_deg", what + " nose")), rho)
+    else:
+        nose = FlatNose(rho)
+    shank = d.get("shank", [])
+    if isinstance(shank, dict):
+        shank = [shank]
+    if not isinstance(shank, list) or not all(isinstance(c, dict) for c in shank):
+        raise InputError(
+            f"{what}: 'shank' must be a list of mappings with length and density, got {shank!r}"
         )
-        p = Projectile(name, diameter, nose, cyl, source=str(d.get("source", "user file")))
-        p.mass_properties()  # a body with no volume fails here, not later in a run
-        return p
-    except GeometryError as exc:
-        raise InputError(f"{what}: {exc}") from None
+    cyl = []
+    for k, c in enumerate(shank):
+        w = f"{what} shank segment {k}"
+        check_keys(c, ("length", "density"), w)
+        cyl.append(Cylinder(_num(c, "length", w), _num(c, "density", w)))
+    p = Projectile(name, diameter, nose, tuple(cyl), source=str(d.get("source", "user file")))
+    p.mass_properties()  # a body with no volume fails here, not later in a run
+    return p
+
+
+_MEDIUM_KEYS = ("name", "coefficients", "friction", "density", "source")
 
 
 def _medium_from(x: Any, what: str) -> Medium:
@@ -304,53 +320,53 @@ def _medium_from(x: Any, what: str) -> Medium:
             raise InputError(f"{what}: unknown medium {x!r}; known: {', '.join(MEDIA)}")
         return MEDIA[x]
     if not isinstance(x, dict):
-        raise InputError(f"{what}: medium must be a name or a mapping")
+        raise InputError(f"{what}: medium must be a name or a mapping, got {x!r}")
     name = str(x.get("name", "medium"))
+    w = f"{what} medium {name!r}"
+    check_keys(x, _MEDIUM_KEYS, w)
     coef = x.get("coefficients")
     if not isinstance(coef, list | tuple) or not coef:
-        raise InputError(f"{what}: medium {name!r} needs a list 'coefficients' [a0, a1, a2, ...]")
-    try:
-        coef_f = tuple(float(c) for c in coef)
-    except (TypeError, ValueError):
-        raise InputError(f"{what}: coefficients must be numbers, got {coef!r}") from None
+        raise InputError(f"{w}: needs a list 'coefficients' [a0, a1, a2, ...], got {coef!r}")
+    coef_f = tuple(
+        number(c, "coefficient", f"{w} a{i}", allow_str=True) for i, c in enumerate(coef)
+    )
     fr = x.get("friction", 0.0)
-    try:
-        if isinstance(fr, int | float):
-            sp, mu = (0.0,), (float(fr),)
-        else:
-            sp = tuple(float(r[0]) for r in fr)
-            mu = tuple(float(r[1]) for r in fr)
-        return Medium(
-            name, coef_f, sp, mu, float(x.get("density", "nan")), str(x.get("source", "user file"))
-        )
-    except (TypeError, ValueError, IndexError) as exc:
-        raise InputError(f"{what}: bad medium {name!r}: {exc}") from None
+    if isinstance(fr, list | tuple):
+        if not fr or not all(isinstance(r, list | tuple) and len(r) == 2 for r in fr):
+            raise InputError(f"{w}: friction table must be [[speed_m_s, mu], ...], got {fr!r}")
+        sp = tuple(number(r[0], "friction_speed", w, allow_str=True) for r in fr)
+        mu = tuple(number(r[1], "friction", w, allow_str=True) for r in fr)
+    else:
+        sp, mu = (0.0,), (number(fr, "friction", w, allow_str=True),)
+    rho = _num(x, "density", w, "medium_density") if "density" in x else math.nan
+    return Medium(name, coef_f, sp, mu, rho, str(x.get("source", "user file")))
 
 
 def target_from_dict(d: dict[str, Any]) -> Target:
-    """Build a target from a mapping: either a single medium or ``layers``."""
+    """Build a target from a mapping: either a single medium or ``layers``.
+
+    The last layer must be semi-infinite (no ``thickness``); unknown keys and values
+    outside :data:`pencore.validate.LIMITS` raise :class:`InputError`.
+    """
     if not isinstance(d, dict):
         raise InputError(f"target definition must be a mapping, got {type(d).__name__}")
     name = str(d.get("name", "target"))
     what = f"target {name!r}"
-    try:
-        if "layers" in d:
-            if not isinstance(d["layers"], list) or not d["layers"]:
-                raise InputError(f"{what}: 'layers' must be a non-empty list, got {d['layers']!r}")
-            layers = []
-            for k, lay in enumerate(d["layers"]):
-                if not isinstance(lay, dict) or "medium" not in lay:
-                    raise InputError(f"{what}: layer {k} needs a 'medium'")
-                th = float(lay.get("thickness", math.inf))
-                layers.append(Layer(_medium_from(lay["medium"], what), th))
-            return Target(name, tuple(layers))
+    if "layers" not in d:
         return Target(name, (Layer(_medium_from(d, what)),))
-    except InputError:
-        raise
-    except TargetError as exc:
-        raise InputError(str(exc)) from None
-    except (TypeError, ValueError) as exc:
-        raise InputError(f"{what}: {exc}") from None
+    check_keys(d, ("name", "layers", "source"), what)
+    if not isinstance(d["layers"], list) or not d["layers"]:
+        raise InputError(f"{what}: 'layers' must be a non-empty list, got {d['layers']!r}")
+    layers = []
+    for k, lay in enumerate(d["layers"]):
+        w = f"{what} layer {k}"
+        lay = _mapping(lay, w)
+        check_keys(lay, ("thickness", "medium"), w)
+        if "medium" not in lay:
+            raise InputError(f"{w}: needs a 'medium' (a name or a mapping)")
+        th = _num(lay, "thickness", w) if "thickness" in lay else math.inf
+        layers.append(Layer(_medium_from(lay["medium"], w), th))
+    return Target(name, tuple(layers))
 
 
 def _load_yaml(path: Path, what: str) -> dict[str, Any]:
@@ -390,6 +406,10 @@ def get_projectile(spec: str | Projectile | dict[str, Any]) -> Projectile:
         return spec
     if isinstance(spec, dict):
         return projectile_from_dict(spec)
+    if not isinstance(spec, str):
+        raise InputError(
+            f"projectile must be a name, a YAML file, a mapping or a Projectile, got {spec!r}"
+        )
     named = _named_projectiles()
     if spec in named:
         return named[spec]
@@ -409,6 +429,8 @@ def get_target(spec: str | Target | Medium | dict[str, Any]) -> Target:
         return Target.half_space(spec)
     if isinstance(spec, dict):
         return target_from_dict(spec)
+    if not isinstance(spec, str):
+        raise InputError(f"target must be a name, a YAML file, a mapping or a Target, got {spec!r}")
     if spec in MEDIA:
         return Target.half_space(MEDIA[spec])
     if _looks_like_path(spec) or Path(spec).is_file():

@@ -18,39 +18,52 @@ Geometry of the impact (angles in degrees at this interface, radians inside):
 
 from __future__ import annotations
 
-import json
+import difflib
 import math
 import time
-from dataclasses import asdict, dataclass, replace
+from collections.abc import Mapping
+from dataclasses import dataclass, fields, replace
 from typing import Any
 
 import numpy as np
 import xarray as xr
 
-from . import __version__
 from .dynamics import quat_to_matrix
 from .geometry import Projectile
-from .integrate import OUTCOMES, integrate
-from .library import InputError, get_projectile, get_target
+from .integrate import RunResult, body_reach, integrate
+from .library import get_projectile, get_target
 from .target import Target
+from .trajectory import trajectory_dataset
+from .validate import InputError, check_keys, integer, number
 
 __all__ = ["Numerics", "simulate", "initial_state", "SolverError", "DEFAULT_NUMERICS"]
 
 
 class SolverError(RuntimeError):
-    """The integration could not finish (step limit)."""
+    """The integration could not finish; the message names the cause and the state."""
+
+
+#: Integration methods: the compiled Rosenbrock pair (default) and scipy's implicit
+#: ``solve_ivp`` methods on the same right-hand side (reference; much slower).
+METHODS = ("rosenbrock", "Radau", "BDF")
+
+_INT_FIELDS = ("n_nose", "n_shank", "n_face", "max_steps", "n_gauss")
 
 
 @dataclass(frozen=True)
 class Numerics:
     """Numerical parameters (defaults chosen by ``benchmarks/convergence.py``).
 
+    Every field is checked against :data:`pencore.validate.LIMITS` on construction;
+    booleans are not numbers and integer fields must be whole numbers.
+
     Attributes
     ----------
     n_nose, n_shank, n_face : int
         Surface bands on the nose, on each 5 calibres of shank, and on each flat face.
     eps : float
-        Half-width of the smoothed contact step in normal velocity (m/s).
+        Half-width of the smoothed contact step in normal velocity (m/s). 0 is the
+        discontinuous law, which usually fails as chatter (``step_underflow``).
     rtol : float
         Relative tolerance of the adaptive step control.
     max_travel : float
@@ -58,13 +71,23 @@ class Numerics:
     v_stop : float
         Speed (m/s) below which the projectile is taken as stopped.
     t_max : float
-        Time limit (s).
+        Time limit (s) of the simulated motion.
     max_steps : int
-        Largest number of accepted steps.
+        Step budget: accepted steps before the run fails with ``step_limit``.
+    max_wall : float
+        Wall-time budget (s) of one run, ``inf`` (default) for none: results then do
+        not depend on the machine's speed.
+    h_min : float
+        Smallest time step (s): a step the error control would make shorter fails the
+        run as stiff or chattering (``step_underflow``).
     n_gauss : int
         Gauss points per 45-degree arc piece in the friction integral.
     gravity : float
         Gravitational acceleration (m/s^2) along ``-y``; 0 by default (as in the paper).
+    method : str
+        ``"rosenbrock"`` (compiled, default) or scipy's ``"Radau"`` / ``"BDF"`` through
+        :func:`scipy.integrate.solve_ivp` on the same right-hand side
+        (:mod:`pencore.reference`).
     """
 
     n_nose: int = 48
@@ -76,19 +99,37 @@ class Numerics:
     v_stop: float = 1.0
     t_max: float = 1.0
     max_steps: int = 400_000
+    max_wall: float = math.inf
+    h_min: float = 1e-12
     n_gauss: int = 4
     gravity: float = 0.0
+    method: str = "rosenbrock"
 
     def __post_init__(self) -> None:
-        for k in ("n_nose", "n_shank", "n_face", "max_steps"):
-            if int(getattr(self, k)) < 1:
-                raise InputError(f"numerics {k} must be >= 1, got {getattr(self, k)!r}")
-        for k in ("rtol", "max_travel", "v_stop", "t_max"):
-            v = float(getattr(self, k))
-            if not (v > 0.0 and math.isfinite(v)):
-                raise InputError(f"numerics {k} must be > 0, got {v!r}")
-        if not (self.eps >= 0.0):
-            raise InputError(f"numerics eps must be >= 0 m/s, got {self.eps!r}")
+        for f in fields(self):
+            if f.name == "method":
+                continue
+            value = getattr(self, f.name)
+            if f.name in _INT_FIELDS:
+                checked: float = integer(value, f.name, "numerics")
+            else:
+                checked = number(value, f.name, "numerics")
+            object.__setattr__(self, f.name, checked)
+        if self.method not in METHODS:
+            hint = difflib.get_close_matches(str(self.method), METHODS, n=1)
+            tip = f"; did you mean {hint[0]!r}?" if hint else ""
+            raise InputError(
+                f"numerics method must be one of {', '.join(METHODS)}, got {self.method!r}{tip}"
+            )
+
+    @classmethod
+    def from_mapping(cls, mapping: Mapping[str, Any], base: Numerics | None = None) -> Numerics:
+        """``base`` (default: the defaults) with the entries of ``mapping`` on top;
+        unknown keys raise :class:`InputError` with a "did you mean" hint."""
+        if not isinstance(mapping, Mapping):
+            raise InputError(f"numerics must be a mapping of options, got {mapping!r}")
+        check_keys(mapping, [f.name for f in fields(cls)], "numerics")
+        return replace(base or cls(), **mapping)
 
 
 DEFAULT_NUMERICS = Numerics()
@@ -159,50 +200,44 @@ def _qmul(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 def _check_inputs(
-    velocity: float, obliquity: float, yaw: float, omega: float, azimuth: float = 0.0
-) -> None:
-    if not (math.isfinite(velocity) and velocity > 0.0):
-        raise InputError(f"velocity must be a positive number of m/s, got {velocity!r}")
-    if not (math.isfinite(obliquity) and -90.0 < obliquity < 90.0):
-        raise InputError(f"obliquity must be in (-90, 90) degrees, got {obliquity!r}")
-    if not (math.isfinite(yaw) and abs(obliquity + yaw) < 90.0):
+    velocity: Any, obliquity: Any, yaw: Any, omega: Any, azimuth: Any, start: Any
+) -> tuple[float, float, float, float, float, tuple[float, float, float] | None]:
+    """Checked impact conditions (SI, angles in degrees), or :class:`InputError`."""
+    v = number(velocity, "velocity")
+    ob = number(obliquity, "obliquity")
+    yw = number(yaw, "yaw")
+    if not abs(ob + yw) < 90.0:
         raise InputError(
-            f"yaw must keep the velocity below the horizon: |obliquity + yaw| < 90 deg, "
-            f"got yaw={yaw!r}"
+            f"yaw must keep the velocity pointing into the target: |obliquity + yaw| < 90 "
+            f"deg, got obliquity {obliquity!r} deg and yaw {yaw!r} deg"
         )
-    if not math.isfinite(azimuth):
-        raise InputError(f"azimuth must be a finite number of degrees, got {azimuth!r}")
-    if not math.isfinite(omega):
-        raise InputError(f"omega must be a finite number of rad/s, got {omega!r}")
+    om = number(omega, "omega")
+    az = number(azimuth, "azimuth")
+    if start is None:
+        return v, ob, yw, om, az, None
+    if isinstance(start, str | bytes) or not hasattr(start, "__len__") or len(start) != 3:
+        raise InputError(f"start must be three numbers (x, y, z) in m, got {start!r}")
+    xyz = tuple(number(c, "start", f"start {n}") for c, n in zip(start, "xyz", strict=True))
+    return v, ob, yw, om, az, xyz  # type: ignore[return-value]
 
 
-def _target_dict(t: Target) -> dict[str, Any]:
-    return {
-        "name": t.name,
-        "layers": [
-            {
-                "thickness": lay.thickness,
-                "medium": {
-                    "name": lay.medium.name,
-                    "coefficients": list(lay.medium.coefficients),
-                    "friction": [
-                        list(p)
-                        for p in zip(
-                            lay.medium.friction_speeds, lay.medium.friction_mu, strict=True
-                        )
-                    ],
-                    "source": lay.medium.source,
-                },
-            }
-            for lay in t.layers
-        ],
-    }
-
-
-def _projectile_dict(p: Projectile) -> dict[str, Any]:
-    d = asdict(p)
-    d["nose"]["kind"] = type(p.nose).__name__
-    return d
+def _check_reaches_target(y0: np.ndarray, reach: float, num: Numerics) -> None:
+    """Refuse a start from which no point of the body can touch the surface within
+    ``t_max``: the body's lowest point is at least ``y_cm - reach`` high and moves down no
+    faster than ``-vy + g t``."""
+    height = y0[1] - reach
+    if height <= 0.0:
+        return
+    vy = -y0[8]
+    g = num.gravity
+    # earliest time at which height - vy t - g t^2 / 2 = 0
+    t_hit = height / vy if g == 0.0 else (-vy + math.sqrt(vy * vy + 2 * g * height)) / g
+    if not t_hit <= num.t_max:
+        raise InputError(
+            f"start height {y0[1] + 0.0:.4g} m (centre of mass) is too high: at the impact's "
+            f"downward speed of {vy:.4g} m/s the body cannot reach the target within "
+            f"t_max = {num.t_max:g} s; lower the start or raise numerics t_max"
+        )
 
 
 @dataclass
@@ -219,16 +254,25 @@ class _Prepared:
     lc: float
 
 
+def _resolve_numerics(numerics: Any, overrides: Mapping[str, Any]) -> Numerics:
+    if numerics is None:
+        base = DEFAULT_NUMERICS
+    elif isinstance(numerics, Numerics):
+        base = numerics
+    elif isinstance(numerics, Mapping):
+        base = Numerics.from_mapping(numerics)
+    else:
+        raise InputError(
+            f"numerics must be a pencore.Numerics or a mapping of options, got {numerics!r}"
+        )
+    return Numerics.from_mapping(overrides, base) if overrides else base
+
+
 def prepare(
     projectile: Any, target: Any, numerics: Numerics | None = None, **overrides: Any
 ) -> _Prepared:
     """Resolve names and build the kernel arrays (reusable across many trajectories)."""
-    num = numerics or DEFAULT_NUMERICS
-    if overrides:
-        unknown = set(overrides) - set(Numerics.__dataclass_fields__)
-        if unknown:
-            raise InputError(f"unknown numerics option(s): {', '.join(sorted(unknown))}")
-        num = replace(num, **overrides)
+    num = _resolve_numerics(numerics, overrides)
     p = get_projectile(projectile)
     t = get_target(target)
     mp = p.mass_properties()
@@ -285,7 +329,13 @@ def simulate(
     xarray.Dataset
         Time histories on dimension ``time`` (s) and scalar results; see the README.
     """
-    _check_inputs(velocity, obliquity, yaw, omega, azimuth)
+    velocity, obliquity, yaw, omega, azimuth, start = _check_inputs(
+        velocity, obliquity, yaw, omega, azimuth, start
+    )
+    if not isinstance(stop_at_reversal, bool):
+        raise InputError(f"stop_at_reversal must be True or False, got {stop_at_reversal!r}")
+    if prepared is not None and not isinstance(prepared, _Prepared):
+        raise InputError(f"prepared must come from pencore.solver.prepare, got {prepared!r}")
     pr = prepared or prepare(projectile, target, numerics, **overrides)
     num = pr.numerics
     y0 = initial_state(
@@ -298,49 +348,16 @@ def simulate(
         start,
         math.radians(azimuth),
     )
-    length = pr.projectile.length
-    atol = (
-        num.rtol
-        * np.array([length] * 3 + [1.0] * 4 + [velocity] * 3 + [velocity / length] * 3)
-        * 1e-2
-    )
-    gravity = np.array([0.0, -num.gravity, 0.0])
+    _check_reaches_target(y0, body_reach(pr.rings), num)
     t0 = time.perf_counter()
-    ts, ys, outcome, rev, t_contact, n_rhs, n_rej = integrate(
-        y0,
-        num.t_max,
-        num.rtol,
-        atol,
-        1e-7,
-        num.max_travel,
-        num.v_stop,
-        stop_at_reversal,
-        num.max_steps,
-        pr.mass,
-        pr.inertia,
-        gravity,
-        pr.rings,
-        pr.bounds,
-        pr.coef,
-        pr.fric,
-        num.eps,
-        num.n_gauss if not pr.target.frictionless else 0,
-    )
+    run = _run(pr, y0, velocity, stop_at_reversal)
     wall = time.perf_counter() - t0
-    if OUTCOMES[outcome] == "step_limit":
-        raise SolverError(
-            f"step limit of {num.max_steps} steps reached at t = {ts[-1]:.4g} s; "
-            "raise numerics max_steps or loosen rtol"
-        )
-    return _to_dataset(
-        pr,
-        ts,
-        ys,
-        OUTCOMES[outcome],
-        rev,
-        t_contact,
-        n_rhs,
-        n_rej,
+    _raise_on_failure(run, num)
+    return trajectory_dataset(
+        pr.projectile,
+        pr.target,
+        pr.numerics,
+        run,
         wall,
         dict(
             velocity=velocity,
@@ -348,126 +365,63 @@ def simulate(
             yaw=yaw,
             omega=omega,
             azimuth=azimuth,
-            start=None if start is None else list(map(float, start)),
+            start=None if start is None else list(start),
             stop_at_reversal=stop_at_reversal,
         ),
     )
 
 
-def _to_dataset(
-    pr: _Prepared, ts, ys, outcome, rev, t_contact, n_rhs, n_rej, wall, inputs
-) -> xr.Dataset:
-    n = len(ts)
-    axes = np.empty((n, 3))
-    for i in range(n):
-        axes[i] = quat_to_matrix(ys[i, 3:7])[:, 0]
-    cm = ys[:, 0:3]
-    tip = cm + pr.lc * axes
-    vel = ys[:, 7:10]
-    om = ys[:, 10:13]
-    theta = np.degrees(np.unwrap(np.arctan2(axes[:, 0], -axes[:, 1])))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        slope = vel[:, 1] / vel[:, 0]
-    deviation = np.degrees(np.arctan2(np.hypot(vel[:, 0], vel[:, 2]), -vel[:, 1]))
-    ke = 0.5 * pr.mass * (vel**2).sum(1) + 0.5 * (pr.inertia * om**2).sum(1)
-    below = tip[:, 1] <= 0.0
-    depth = float(max(0.0, -tip[:, 1].min()))
-    seg = np.linalg.norm(np.diff(tip, axis=0), axis=1)
-    # tip path below the surface: segments whose end is below y = 0, first one clipped
-    path = 0.0
-    for i in range(1, n):
-        if below[i]:
-            if below[i - 1]:
-                path += seg[i - 1]
-            else:
-                frac = tip[i, 1] / (tip[i, 1] - tip[i - 1, 1])
-                path += frac * seg[i - 1]
-    v0 = inputs["velocity"]
-
-    def var(data, units, long_name, **extra):
-        return ("time", np.asarray(data), {"units": units, "long_name": long_name, **extra})
-
-    ds = xr.Dataset(
-        {
-            "tip_x": var(tip[:, 0], "m", "nose tip x (along the surface)"),
-            "tip_y": var(tip[:, 1], "m", "nose tip y (height above the target surface)"),
-            "tip_z": var(tip[:, 2], "m", "nose tip z"),
-            "cm_x": var(cm[:, 0], "m", "centre of mass x"),
-            "cm_y": var(cm[:, 1], "m", "centre of mass y"),
-            "cm_z": var(cm[:, 2], "m", "centre of mass z"),
-            "vel_x": var(vel[:, 0], "m s-1", "centre of mass velocity x"),
-            "vel_y": var(vel[:, 1], "m s-1", "centre of mass velocity y"),
-            "vel_z": var(vel[:, 2], "m s-1", "centre of mass velocity z"),
-            "omega_1": var(om[:, 0], "rad s-1", "angular velocity about the symmetry axis"),
-            "omega_2": var(om[:, 1], "rad s-1", "angular velocity about body axis 2"),
-            "omega_3": var(om[:, 2], "rad s-1", "angular velocity about body axis 3"),
-            "axis_x": var(axes[:, 0], "1", "projectile axis (towards the nose) x"),
-            "axis_y": var(axes[:, 1], "1", "projectile axis (towards the nose) y"),
-            "axis_z": var(axes[:, 2], "1", "projectile axis (towards the nose) z"),
-            "theta": var(
-                theta,
-                "degree",
-                "angle from the target normal (-y) to the projectile axis, towards +x",
-            ),
-            "slope": var(slope, "1", "trajectory slope dy/dx of the centre of mass path"),
-            "deviation": var(
-                deviation, "degree", "angle between the centre of mass velocity and the normal -y"
-            ),
-            "speed": var(np.linalg.norm(vel, axis=1), "m s-1", "centre of mass speed"),
-            "kinetic_energy": var(ke, "J", "translational + rotational kinetic energy"),
-            "work": var(ys[:, 13], "J", "work done by the contact stresses"),
-            "penetration_depth": (
-                (),
-                depth,
-                {"units": "m", "long_name": "deepest point of the nose tip below the surface"},
-            ),
-            "path_length": (
-                (),
-                float(path),
-                {"units": "m", "long_name": "length of the nose-tip path below the surface"},
-            ),
-            "final_slope": (
-                (),
-                float(slope[-1]),
-                {"units": "1", "long_name": "trajectory slope dy/dx at the end"},
-            ),
-            "final_deviation": (
-                (),
-                float(deviation[-1]),
-                {"units": "degree", "long_name": "velocity angle from the normal at the end"},
-            ),
-        },
-        coords={"time": ("time", ts, {"units": "s", "long_name": "time since start"})},
-        attrs={
-            "title": "pencore trajectory",
-            "outcome": outcome,
-            "reversed": int(rev),
-            "t_first_contact_s": float(t_contact) if np.isfinite(t_contact) else -1.0,
-            "impact_velocity_m_s": float(v0),
-            "obliquity_deg": float(inputs["obliquity"]),
-            "yaw_deg": float(inputs["yaw"]),
-            "omega_rad_s": float(inputs["omega"]),
-            "projectile": pr.projectile.name,
-            "target": pr.target.name,
-            "mass_kg": pr.mass,
-            "lc_m": pr.lc,
-            "length_m": pr.projectile.length,
-            "lc_over_l": pr.lc / pr.projectile.length,
-            "inputs_json": json.dumps(
-                {
-                    "impact": inputs,
-                    "projectile": _projectile_dict(pr.projectile),
-                    "target": _target_dict(pr.target),
-                    "numerics": asdict(pr.numerics),
-                },
-                default=str,
-            ),
-            "n_rhs": int(n_rhs),
-            "n_rejected": int(n_rej),
-            "n_steps": int(n - 1),
-            "wall_time_s": float(wall),
-            "pencore_version": __version__,
-            "Conventions": "CF-1.10",
-        },
+def _run(pr: _Prepared, y0: np.ndarray, velocity: float, stop_at_reversal: bool) -> RunResult:
+    """Integrate with the selected method (the arrays of ``pr``, SI units)."""
+    num = pr.numerics
+    length = pr.projectile.length
+    atol = (
+        num.rtol
+        * np.array([length] * 3 + [1.0] * 4 + [velocity] * 3 + [velocity / length] * 3)
+        * 1e-2
     )
-    return ds
+    kw = dict(
+        t_max=num.t_max,
+        rtol=num.rtol,
+        atol=atol,
+        max_travel=num.max_travel,
+        v_stop=num.v_stop,
+        stop_at_reversal=stop_at_reversal,
+        max_steps=num.max_steps,
+        max_wall=num.max_wall,
+        mass=pr.mass,
+        inertia=pr.inertia,
+        gravity=np.array([0.0, -num.gravity, 0.0]),
+        rings=pr.rings,
+        bounds=pr.bounds,
+        coef=pr.coef,
+        fric=pr.fric,
+        eps=num.eps,
+        n_gauss=num.n_gauss if not pr.target.frictionless else 0,
+    )
+    if num.method == "rosenbrock":
+        return integrate(y0, h_init=1e-7, h_min=num.h_min, **kw)
+    from .reference import integrate_scipy
+
+    return integrate_scipy(y0, method=num.method, **kw)
+
+
+def _raise_on_failure(run: RunResult, num: Numerics) -> None:
+    """A :class:`SolverError` naming the cause and the last state, for failed runs."""
+    causes = {
+        "step_limit": f"step budget of {num.max_steps} steps used up (raise numerics "
+        "max_steps, or loosen rtol)",
+        "wall_limit": f"wall-time budget of {num.max_wall:g} s used up (raise numerics max_wall)",
+        "step_underflow": f"the step needed for rtol {num.rtol:g} fell below h_min = "
+        f"{num.h_min:g} s: the contact law is too stiff or chatters"
+        + (" (eps = 0 is the discontinuous law: use eps > 0)" if num.eps == 0.0 else ""),
+        "non_finite": "the state became infinite or NaN (a runaway)",
+    }
+    if run.outcome not in causes:
+        return
+    y = run.ys[-1]
+    raise SolverError(
+        f"{causes[run.outcome]}; at t = {run.ts[-1]:.4g} s after {run.ts.size - 1} steps "
+        f"the centre of mass was at ({y[0]:.4g}, {y[1]:.4g}, {y[2]:.4g}) m moving at "
+        f"{math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2):.4g} m/s"
+    )

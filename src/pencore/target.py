@@ -20,11 +20,20 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .validate import InputError, number
+
 __all__ = ["Medium", "Layer", "Target", "TargetError"]
 
 
-class TargetError(ValueError):
+class TargetError(InputError):
     """A target definition that cannot be used."""
+
+
+def _check(key: str, value: float, what: str) -> float:
+    try:
+        return number(value, key, what)
+    except InputError as exc:
+        raise TargetError(str(exc)) from None
 
 
 @dataclass(frozen=True)
@@ -54,22 +63,26 @@ class Medium:
     source: str = ""
 
     def __post_init__(self) -> None:
-        c = tuple(float(x) for x in self.coefficients)
-        if not c or not all(math.isfinite(x) for x in c):
-            raise TargetError(f"medium {self.name!r}: coefficients must be finite, got {c!r}")
-        if c[0] < 0.0:
-            raise TargetError(f"medium {self.name!r}: a0 must be >= 0 Pa, got {c[0]!r}")
-        object.__setattr__(self, "coefficients", c)
-        sp = tuple(float(x) for x in self.friction_speeds)
-        mu = tuple(float(x) for x in self.friction_mu)
-        if len(sp) != len(mu) or not sp:
+        what = f"medium {self.name!r}"
+        if isinstance(self.coefficients, str) or not hasattr(self.coefficients, "__iter__"):
+            raise TargetError(f"{what}: coefficients must be a list [a0, a1, a2, ...]")
+        c = tuple(_check("coefficient", x, f"{what} a{i}") for i, x in enumerate(self.coefficients))
+        if not c:
+            raise TargetError(f"{what}: coefficients must be a non-empty list [a0, a1, a2, ...]")
+        if not any(x > 0.0 for x in c):
             raise TargetError(
-                f"medium {self.name!r}: friction table needs equal, non-empty speed and mu lists"
+                f"{what}: every resistance coefficient is zero, so nothing resists the "
+                f"projectile; give a0 (Pa) or a2 (kg/m^3) > 0"
             )
+        object.__setattr__(self, "coefficients", c)
+        sp = tuple(_check("friction_speed", x, what) for x in self.friction_speeds)
+        mu = tuple(_check("friction", m, what) for m in self.friction_mu)
+        if len(sp) != len(mu) or not sp:
+            raise TargetError(f"{what}: friction table needs equal, non-empty speed and mu lists")
         if any(b <= a for a, b in zip(sp, sp[1:], strict=False)):
-            raise TargetError(f"medium {self.name!r}: friction speeds must increase, got {sp!r}")
-        if any(m < 0.0 or not math.isfinite(m) for m in mu):
-            raise TargetError(f"medium {self.name!r}: friction coefficients must be >= 0")
+            raise TargetError(f"{what}: friction speeds must increase, got {sp!r}")
+        if not math.isnan(self.density):
+            _check("medium_density", self.density, what)
         object.__setattr__(self, "friction_speeds", sp)
         object.__setattr__(self, "friction_mu", mu)
 
@@ -115,13 +128,22 @@ class Target:
         layers = tuple(self.layers)
         if not layers:
             raise TargetError(f"target {self.name!r} has no layers")
+        what = f"target {self.name!r}"
         for k, lay in enumerate(layers):
-            if not (lay.thickness > 0.0):
+            if not isinstance(lay, Layer):
+                raise TargetError(f"{what}: layer {k} must be a Layer, got {lay!r}")
+            last = k == len(layers) - 1
+            if last and math.isinf(lay.thickness) and lay.thickness > 0:
+                continue
+            if last:
                 raise TargetError(
-                    f"target {self.name!r}: layer {k} thickness must be > 0 m, got {lay.thickness}"
+                    f"{what}: the last layer is {lay.thickness!r} m thick, but finite "
+                    "targets (perforation) are not supported yet; leave out the last "
+                    "layer's thickness to make it semi-infinite"
                 )
-            if k < len(layers) - 1 and not math.isfinite(lay.thickness):
-                raise TargetError(f"target {self.name!r}: only the last layer may be infinite")
+            if math.isinf(lay.thickness):
+                raise TargetError(f"{what}: only the last layer may be infinite (layer {k})")
+            _check("thickness", lay.thickness, f"{what} layer {k}")
         object.__setattr__(self, "layers", layers)
 
     @classmethod

@@ -1,0 +1,200 @@
+"""The :class:`xarray.Dataset` of one trajectory: time histories with units, the scalar
+results (depth, path length, final slope and deviation) and the inputs as attributes."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import asdict
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from . import __version__
+from .dynamics import quat_to_matrix
+from .geometry import Projectile
+from .integrate import RunResult
+from .target import Target
+
+__all__ = ["trajectory_dataset"]
+
+
+def _target_dict(t: Target) -> dict[str, Any]:
+    return {
+        "name": t.name,
+        "layers": [
+            {
+                "thickness": lay.thickness,
+                "medium": {
+                    "name": lay.medium.name,
+                    "coefficients": list(lay.medium.coefficients),
+                    "friction": [
+                        list(p)
+                        for p in zip(
+                            lay.medium.friction_speeds, lay.medium.friction_mu, strict=True
+                        )
+                    ],
+                    "source": lay.medium.source,
+                },
+            }
+            for lay in t.layers
+        ],
+    }
+
+
+def _projectile_dict(p: Projectile) -> dict[str, Any]:
+    d = asdict(p)
+    d["nose"]["kind"] = type(p.nose).__name__
+    return d
+
+
+def trajectory_dataset(
+    projectile: Projectile,
+    target: Target,
+    numerics: Any,
+    run: RunResult,
+    wall: float,
+    inputs: dict[str, Any],
+) -> xr.Dataset:
+    """The Dataset of one integrated trajectory.
+
+    Parameters
+    ----------
+    projectile, target : Projectile, Target
+        What was simulated.
+    numerics : pencore.Numerics
+        The numerical parameters used (recorded in ``inputs_json``).
+    run : pencore.integrate.RunResult
+        The accepted states (SI units, 14 components: centre of mass position, attitude
+        quaternion, velocity, body angular velocity, work of the contact stresses).
+    wall : float
+        Wall time of the integration (s).
+    inputs : dict
+        The impact conditions (velocity m/s, angles deg, omega rad/s, start m).
+
+    Returns
+    -------
+    xarray.Dataset
+        Time histories on dimension ``time`` (s), the scalars ``penetration_depth``,
+        ``path_length`` (m), ``final_slope``, ``final_deviation`` (deg), and attributes.
+    """
+    ts, ys = run.ts, run.ys
+    mp = projectile.mass_properties()
+    lc, mass = mp.lc, mp.mass
+    inertia = np.array([mp.i_axial, mp.i_transverse, mp.i_transverse])
+    n = len(ts)
+    axes = np.empty((n, 3))
+    for i in range(n):
+        axes[i] = quat_to_matrix(ys[i, 3:7])[:, 0]
+    cm = ys[:, 0:3]
+    tip = cm + lc * axes
+    vel = ys[:, 7:10]
+    om = ys[:, 10:13]
+    theta = np.degrees(np.unwrap(np.arctan2(axes[:, 0], -axes[:, 1])))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        slope = vel[:, 1] / vel[:, 0]
+    deviation = np.degrees(np.arctan2(np.hypot(vel[:, 0], vel[:, 2]), -vel[:, 1]))
+    ke = 0.5 * mass * (vel**2).sum(1) + 0.5 * (inertia * om**2).sum(1)
+    below = tip[:, 1] <= 0.0
+    depth = float(max(0.0, -tip[:, 1].min()))
+    seg = np.linalg.norm(np.diff(tip, axis=0), axis=1)
+    # tip path below the surface: segments whose end is below y = 0, first one clipped
+    path = 0.0
+    for i in range(1, n):
+        if below[i]:
+            if below[i - 1]:
+                path += seg[i - 1]
+            else:
+                frac = tip[i, 1] / (tip[i, 1] - tip[i - 1, 1])
+                path += frac * seg[i - 1]
+    v0 = inputs["velocity"]
+
+    def var(data, units, long_name, **extra):
+        return ("time", np.asarray(data), {"units": units, "long_name": long_name, **extra})
+
+    ds = xr.Dataset(
+        {
+            "tip_x": var(tip[:, 0], "m", "nose tip x (along the surface)"),
+            "tip_y": var(tip[:, 1], "m", "nose tip y (height above the target surface)"),
+            "tip_z": var(tip[:, 2], "m", "nose tip z"),
+            "cm_x": var(cm[:, 0], "m", "centre of mass x"),
+            "cm_y": var(cm[:, 1], "m", "centre of mass y"),
+            "cm_z": var(cm[:, 2], "m", "centre of mass z"),
+            "vel_x": var(vel[:, 0], "m s-1", "centre of mass velocity x"),
+            "vel_y": var(vel[:, 1], "m s-1", "centre of mass velocity y"),
+            "vel_z": var(vel[:, 2], "m s-1", "centre of mass velocity z"),
+            "omega_1": var(om[:, 0], "rad s-1", "angular velocity about the symmetry axis"),
+            "omega_2": var(om[:, 1], "rad s-1", "angular velocity about body axis 2"),
+            "omega_3": var(om[:, 2], "rad s-1", "angular velocity about body axis 3"),
+            "axis_x": var(axes[:, 0], "1", "projectile axis (towards the nose) x"),
+            "axis_y": var(axes[:, 1], "1", "projectile axis (towards the nose) y"),
+            "axis_z": var(axes[:, 2], "1", "projectile axis (towards the nose) z"),
+            "theta": var(
+                theta,
+                "degree",
+                "angle from the target normal (-y) to the projectile axis, towards +x",
+            ),
+            "slope": var(slope, "1", "trajectory slope dy/dx of the centre of mass path"),
+            "deviation": var(
+                deviation, "degree", "angle between the centre of mass velocity and the normal -y"
+            ),
+            "speed": var(np.linalg.norm(vel, axis=1), "m s-1", "centre of mass speed"),
+            "kinetic_energy": var(ke, "J", "translational + rotational kinetic energy"),
+            "work": var(ys[:, 13], "J", "work done by the contact stresses"),
+            "penetration_depth": (
+                (),
+                depth,
+                {"units": "m", "long_name": "deepest point of the nose tip below the surface"},
+            ),
+            "path_length": (
+                (),
+                float(path),
+                {"units": "m", "long_name": "length of the nose-tip path below the surface"},
+            ),
+            "final_slope": (
+                (),
+                float(slope[-1]),
+                {"units": "1", "long_name": "trajectory slope dy/dx at the end"},
+            ),
+            "final_deviation": (
+                (),
+                float(deviation[-1]),
+                {"units": "degree", "long_name": "velocity angle from the normal at the end"},
+            ),
+        },
+        coords={"time": ("time", ts, {"units": "s", "long_name": "time since start"})},
+        attrs={
+            "title": "pencore trajectory",
+            "outcome": run.outcome,
+            "reversed": int(run.reversed),
+            "t_first_contact_s": float(run.t_first_contact)
+            if np.isfinite(run.t_first_contact)
+            else -1.0,
+            "impact_velocity_m_s": float(v0),
+            "obliquity_deg": float(inputs["obliquity"]),
+            "yaw_deg": float(inputs["yaw"]),
+            "omega_rad_s": float(inputs["omega"]),
+            "projectile": projectile.name,
+            "target": target.name,
+            "mass_kg": mass,
+            "lc_m": lc,
+            "length_m": projectile.length,
+            "lc_over_l": lc / projectile.length,
+            "inputs_json": json.dumps(
+                {
+                    "impact": inputs,
+                    "projectile": _projectile_dict(projectile),
+                    "target": _target_dict(target),
+                    "numerics": asdict(numerics),
+                },
+                default=str,
+            ),
+            "n_rhs": run.n_rhs,
+            "n_rejected": run.n_rejected,
+            "n_steps": int(n - 1),
+            "wall_time_s": float(wall),
+            "pencore_version": __version__,
+            "Conventions": "CF-1.10",
+        },
+    )
+    return ds
