@@ -16,10 +16,14 @@ from pencore.solver import _axis_quaternion, prepare
 from pencore.target import Layer, Medium, Target
 
 SOIL = MEDIA["soil"]
-# Symmetries hold exactly for the equations but only to the integration error for two
-# runs whose adaptive step sequences differ at round-off level; they are checked with
-# tight steps so that a defect in the physics (not the tolerance) would show.
-TIGHT = dict(rtol=1e-8, max_travel=0.01)
+# Symmetries hold exactly for the equations, but two runs of mirrored or rotated cases
+# take adaptive step sequences that differ at round-off level (the kernel's sums run in
+# another order), and on some CPUs they differ by a step or two over a run. So the two
+# runs differ by up to the sum of their integration errors, and that is the tolerance:
+# each run's error is measured against the same case at 100x tighter rtol (whose own
+# error is >20x smaller for this 2nd-order pair), and the symmetry defect must stay
+# within 1.5x the sum (the 1.5 covers the reference's own error).
+REF = dict(rtol=1e-7, max_travel=0.01)
 NOSES = {
     "ogive_crh3": OgiveNose(3.0, 7850.0),
     "hemisphere": OgiveNose(0.5, 7850.0),
@@ -76,46 +80,73 @@ def test_axisymmetric_normal_impact_stays_on_axis():
 
 def _on_grid(ds, t, name):
     """Centre-of-mass coordinate ``cm_x``/``cm_y``/``cm_z`` at times ``t``: cubic Hermite
-    interpolation with the saved velocities (O(h^4); the two runs' step grids differ
-    at round-off level, so linear interpolation would dominate the comparison)."""
+    interpolation with the saved velocities (O(h^4), far below the integration error
+    compared here)."""
     vel = {"cm_x": "vel_x", "cm_y": "vel_y", "cm_z": "vel_z"}[name]
     spline = CubicHermiteSpline(ds.time.values, ds[name].values, ds[vel].values)
     return spline(t)
 
 
-@pytest.mark.parametrize(
-    "velocity, kw",
-    [(500.0, dict(yaw=2.0)), (900.0, dict(omega=20.0)), (700.0, dict(yaw=1.0, omega=-10.0))],
-)
+def _common_times(*runs, n=2000):
+    """Times inside every run, short of the stop (detected at step ends, so two runs
+    may stop a step apart)."""
+    return np.linspace(0.0, 0.98 * min(r.time.values[-1] for r in runs), n)
+
+
+def _error(run, ref, t, names=("cm_x", "cm_y", "cm_z")):
+    """Largest integration error of ``run`` on ``t`` against the tighter ``ref`` (m)."""
+    return max(np.abs(_on_grid(run, t, k) - _on_grid(ref, t, k)).max() for k in names)
+
+
+MIRROR_CASES = [
+    (500.0, dict(yaw=2.0)),
+    (900.0, dict(omega=20.0)),
+    (700.0, dict(yaw=1.0, omega=-10.0)),
+]
+
+
+@pytest.mark.parametrize("velocity, kw", MIRROR_CASES)
 def test_mirror_symmetry(velocity, kw):
-    """yaw/omega -> -yaw/-omega mirrors x. Compared at matched times before the stop
-    (the stop is detected at step ends, so the two runs may stop a step apart)."""
-    plus = pencore.simulate("p4", "soil", velocity, **TIGHT, **kw)
-    minus = pencore.simulate("p4", "soil", velocity, **TIGHT, **{k: -v for k, v in kw.items()})
-    t = plus.time.values[plus.time.values < 0.98 * minus.time.values[-1]]
-    scale = float(plus.path_length)
-    assert np.abs(_on_grid(minus, t, "cm_x") + plus.cm_x.values[: t.size]).max() < 1e-6 * scale
-    assert np.abs(_on_grid(minus, t, "cm_y") - plus.cm_y.values[: t.size]).max() < 1e-6 * scale
-    assert float(minus.path_length) == pytest.approx(scale, rel=1e-4)
-    assert abs(plus.tip_x.values[-1]) > 0.1  # the case is not trivially symmetric
+    """yaw/omega -> -yaw/-omega mirrors x, to within the two runs' integration errors."""
+    flip = {k: -v for k, v in kw.items()}
+    plus = pencore.simulate("p4", "soil", velocity, **kw)
+    minus = pencore.simulate("p4", "soil", velocity, **flip)
+    ref_plus = pencore.simulate("p4", "soil", velocity, **REF, **kw)
+    ref_minus = pencore.simulate("p4", "soil", velocity, **REF, **flip)
+    t = _common_times(plus, minus, ref_plus, ref_minus)
+    budget = 1.5 * (_error(plus, ref_plus, t) + _error(minus, ref_minus, t))
+    assert np.abs(_on_grid(minus, t, "cm_x") + _on_grid(plus, t, "cm_x")).max() <= budget
+    assert np.abs(_on_grid(minus, t, "cm_y") - _on_grid(plus, t, "cm_y")).max() <= budget
+    assert np.abs(_on_grid(minus, t, "cm_z") - _on_grid(plus, t, "cm_z")).max() <= budget
+    path_budget = 1.5 * sum(
+        abs(float(a.path_length) - float(b.path_length))
+        for a, b in ((plus, ref_plus), (minus, ref_minus))
+    )
+    assert abs(float(minus.path_length) - float(plus.path_length)) <= path_budget
+    # the case is not trivially symmetric: the path leaves the axis by far more than the
+    # tolerance, so a sign error in the lateral physics would fail the test
+    assert abs(plus.tip_x.values[-1]) > 10 * budget
 
 
 def test_rotation_about_the_normal_rotates_the_trajectory():
+    """Turning the impact by 37 deg about the normal turns the path, to within the two
+    runs' integration errors (see REF)."""
     kw = dict(obliquity=30.0, yaw=2.0, omega=3.0)
-    a = pencore.simulate("p2", "soil", 800.0, **TIGHT, **kw)
-    b = pencore.simulate("p2", "soil", 800.0, azimuth=37.0, **TIGHT, **kw)
+    a = pencore.simulate("p2", "soil", 800.0, **kw)
+    b = pencore.simulate("p2", "soil", 800.0, azimuth=37.0, **kw)
+    ref_a = pencore.simulate("p2", "soil", 800.0, **REF, **kw)
+    ref_b = pencore.simulate("p2", "soil", 800.0, azimuth=37.0, **REF, **kw)
     c, s = math.cos(math.radians(37.0)), math.sin(math.radians(37.0))
-    # compare on b's time grid (the adaptive steps differ at round-off level)
-    t = b.time.values[:-1]
+    t = _common_times(a, b, ref_a, ref_b)
+    budget = 1.5 * (_error(a, ref_a, t) + _error(b, ref_b, t))
     xa, ya, za = (_on_grid(a, t, k) for k in ("cm_x", "cm_y", "cm_z"))
-    xb, yb, zb = (b[k].values[:-1] for k in ("cm_x", "cm_y", "cm_z"))
-    scale = float(a.path_length)
-    tol = 2e-6 * scale
-    assert np.abs(c * xa + s * za - xb).max() < tol
-    assert np.abs(-s * xa + c * za - zb).max() < tol
-    assert np.abs(ya - yb).max() < tol
-    assert float(b.path_length) == pytest.approx(scale, rel=2e-5)
-    assert float(b.penetration_depth) == pytest.approx(float(a.penetration_depth), rel=2e-5)
+    xb, yb, zb = (_on_grid(b, t, k) for k in ("cm_x", "cm_y", "cm_z"))
+    assert np.abs(c * xa + s * za - xb).max() <= budget
+    assert np.abs(-s * xa + c * za - zb).max() <= budget
+    assert np.abs(ya - yb).max() <= budget
+    for name in ("path_length", "penetration_depth"):
+        err = abs(float(a[name]) - float(ref_a[name])) + abs(float(b[name]) - float(ref_b[name]))
+        assert abs(float(b[name]) - float(a[name])) <= 1.5 * err + 1e-12
 
 
 def _energy_error(ds):

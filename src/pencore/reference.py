@@ -98,16 +98,17 @@ def integrate_scipy(
     reversal = _event(rising, terminal=stop_at_reversal, direction=1.0)
     speed0 = math.sqrt(float(y0[7:10] @ y0[7:10]))
     try:
-        sol = solve_ivp(
-            f,
-            (0.0, t_max),
-            state(y0),
-            method=method,
-            rtol=rtol,
-            atol=atol14,
-            max_step=max_travel / max(speed0, 1e-3),
-            events=(contact, left, stopped, reversal),
-        )
+        with np.errstate(over="ignore"):  # scipy's numerical Jacobian probes wide steps
+            sol = solve_ivp(
+                f,
+                (0.0, t_max),
+                state(y0),
+                method=method,
+                rtol=rtol,
+                atol=atol14,
+                max_step=max_travel / max(speed0, 1e-3),
+                events=(contact, left, stopped, reversal),
+            )
     except _Budget as exc:
         return RunResult(
             np.zeros(1), state(y0)[None, :], str(exc), False, math.nan, calls[0], 0, math.nan
