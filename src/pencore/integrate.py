@@ -438,6 +438,12 @@ class RunResult:
     last_error_norm: float
 
 
+def _stalled(ys: np.ndarray, stall_distance: float) -> bool:
+    moved = float(np.linalg.norm(ys[-1, :3] - ys[0, :3]))
+    v0, v1 = (float(np.linalg.norm(ys[i, 7:10])) for i in (0, -1))
+    return moved < stall_distance and abs(v1 - v0) < 0.01 * v0
+
+
 def integrate(
     y0: np.ndarray,
     *,
@@ -451,6 +457,7 @@ def integrate(
     stop_at_reversal: bool,
     max_steps: int,
     max_wall: float,
+    stall_distance: float,
     mass: float,
     inertia: np.ndarray,
     gravity: np.ndarray,
@@ -466,7 +473,13 @@ def integrate(
     Drives :func:`integrate_chunk` ``CHUNK_STEPS`` accepted steps at a time, so results
     grow as needed, a pending signal (Ctrl-C) is handled between chunks, and the run is
     bounded by ``max_steps`` accepted steps (outcome ``step_limit``) and ``max_wall``
-    seconds of wall time (outcome ``wall_limit``; ``inf`` for no limit).
+    seconds of wall time (outcome ``wall_limit``; ``inf`` for no limit). A chunk of
+    ``CHUNK_STEPS`` accepted steps that moves the centre of mass less than
+    ``stall_distance`` (m) and changes its speed by less than 1 % ends the run as
+    ``chatter``: the steps are accepted, but so small that the run would only end at
+    ``max_steps`` (the discontinuous law, ``eps = 0``, does this on an oblique shank:
+    steps of ~1e-8 s). A run slowing to a stop changes its speed by far more than 1 %
+    over 500 steps, so it is not mistaken for one.
 
     Returns
     -------
@@ -499,6 +512,9 @@ def integrate(
             break
         if n_saved >= max_steps:
             outcome = "step_limit"
+            break
+        if ts.size == CHUNK_STEPS and _stalled(ys, stall_distance):
+            outcome = "chatter"
             break
         if time.monotonic() - start > max_wall:
             outcome = "wall_limit"

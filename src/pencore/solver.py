@@ -30,7 +30,7 @@ import xarray as xr
 
 from .dynamics import quat_to_matrix
 from .geometry import Projectile
-from .integrate import RunResult, body_reach, integrate
+from .integrate import CHUNK_STEPS, RunResult, body_reach, integrate
 from .library import get_projectile, get_target
 from .target import Target
 from .trajectory import trajectory_dataset
@@ -400,7 +400,10 @@ def _run(pr: _Prepared, y0: np.ndarray, velocity: float, stop_at_reversal: bool)
         n_gauss=num.n_gauss if not pr.target.frictionless else 0,
     )
     if num.method == "rosenbrock":
-        return integrate(y0, h_init=1e-7, h_min=num.h_min, **kw)
+        # a chunk of steps that moves less than this has stalled (see integrate());
+        # 1 % of the body length, unless the user asked for steps that short
+        stall = min(1e-2 * length, 0.1 * CHUNK_STEPS * num.max_travel)
+        return integrate(y0, h_init=1e-7, h_min=num.h_min, stall_distance=stall, **kw)
     from .reference import integrate_scipy
 
     return integrate_scipy(y0, method=num.method, **kw)
@@ -416,6 +419,10 @@ def _raise_on_failure(run: RunResult, num: Numerics) -> None:
         f"{num.h_min:g} s: the contact law is too stiff or chatters"
         + (" (eps = 0 is the discontinuous law: use eps > 0)" if num.eps == 0.0 else ""),
         "non_finite": "the state became infinite or NaN (a runaway)",
+        "chatter": f"the steps stalled: {CHUNK_STEPS} accepted steps moved the body less "
+        "than 1 % of its length and changed its speed by less than 1 % (the contact law "
+        "chatters)"
+        + (" (eps = 0 is the discontinuous law: use eps > 0)" if num.eps == 0.0 else ""),
     }
     if run.outcome not in causes:
         return
