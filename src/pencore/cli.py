@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any, NoReturn
 
 from . import __version__
-from .library import InputError
+from .validate import InputError, number
 
 __all__ = ["main", "build_parser"]
 
@@ -49,28 +49,43 @@ def _one_line(text: str) -> str:
 # ---------------------------------------------------------------- argument types
 
 
-def _number(allowed: str, ok: Callable[[float], bool]) -> Callable[[str], float]:
-    """An argparse type: a float for which ``ok`` holds, else an error naming the value
-    and ``allowed``."""
+def _number(key: str, ok: Callable[[float], bool] = lambda v: True, allowed: str = "") -> Any:
+    """An argparse type: a float within ``pencore.validate.LIMITS[key]`` for which ``ok``
+    holds, else an error naming the value and what is allowed."""
 
     def conv(text: str) -> float:
         try:
-            v = float(text)
-        except ValueError:
-            v = math.nan
-        if not (math.isfinite(v) and ok(v)):
+            v = number(text, key, allow_str=True)
+        except InputError as exc:
+            raise argparse.ArgumentTypeError(str(exc).split(": ", 1)[-1]) from None
+        if not ok(v):
             raise argparse.ArgumentTypeError(f"must be {allowed}, got {text!r}")
         return v
 
     return conv
 
 
-def _finite(unit: str) -> Callable[[str], float]:
-    return _number(f"a finite number of {unit}", lambda v: True)
+_velocity = _number("velocity")
+_obliquity = _number("obliquity", lambda v: v >= 0.0, "a number of degrees in [0, 90)")
 
 
-_velocity = _number("a positive finite number of m/s", lambda v: v > 0.0)
-_obliquity = _number("a number of degrees in [0, 90)", lambda v: 0.0 <= v < 90.0)
+def _numerics_option(text: str) -> tuple[str, Any]:
+    """``KEY=VALUE`` for ``--numerics``; the value is read as a YAML scalar."""
+    key, sep, value = text.partition("=")
+    if not sep or not key:
+        raise argparse.ArgumentTypeError(f"must be KEY=VALUE (e.g. rtol=1e-6), got {text!r}")
+    import yaml
+
+    try:
+        parsed = yaml.safe_load(value)
+    except yaml.YAMLError:
+        parsed = value
+    if isinstance(parsed, str):  # YAML reads 1e-6 (no decimal point) as text
+        try:
+            parsed = float(parsed)
+        except ValueError:
+            pass
+    return key.strip(), parsed
 
 
 # ---------------------------------------------------------------- parser
@@ -86,6 +101,7 @@ simulate options (all SI, angles in degrees):
   --omega RAD_S           initial angular velocity about +z (rad/s)
   --start X Y Z           initial nose-tip position (m)
   --stop-at-reversal      end the run at the first trajectory reversal
+  --numerics KEY=VALUE    numerical parameter override (repeatable), e.g. rtol=1e-6
   --out FILE.nc           write the full trajectory as NetCDF
 Run 'pencore simulate --help' for details; 'pencore list' for the named projectiles
 and targets.
@@ -157,7 +173,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     sim.add_argument(
         "--yaw",
-        type=_finite("deg"),
+        type=_number("yaw"),
         default=0.0,
         metavar="DEG",
         help="yaw in deg: velocity angle minus axis angle; |obliquity + yaw| "
@@ -165,7 +181,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     sim.add_argument(
         "--omega",
-        type=_finite("rad/s"),
+        type=_number("omega"),
         default=0.0,
         metavar="RAD_S",
         help="initial angular velocity about the centre of mass, about +z, in "
@@ -173,7 +189,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     sim.add_argument(
         "--start",
-        type=_finite("m"),
+        type=_number("start"),
         nargs=3,
         default=None,
         metavar=("X", "Y", "Z"),
@@ -185,6 +201,16 @@ def build_parser() -> argparse.ArgumentParser:
         action="store_true",
         help="end the run at the first reversal of the trajectory (dy/dx "
         "changes sign; outcome 'reversed')",
+    )
+    sim.add_argument(
+        "--numerics",
+        type=_numerics_option,
+        action="append",
+        default=[],
+        metavar="KEY=VALUE",
+        help="override a numerical parameter, e.g. rtol=1e-6, eps=1e-3 (m/s), t_max=2 (s), "
+        "method=Radau; repeat for several (see pencore.Numerics for the keys and the "
+        "README for their valid ranges)",
     )
     sim.add_argument(
         "--out",
@@ -273,7 +299,7 @@ def _fmt_slope(s: float) -> str:
 def _cmd_simulate(args: argparse.Namespace) -> int:
     from .io import write_netcdf
     from .library import get_projectile, get_target
-    from .solver import simulate
+    from .solver import Numerics, simulate
 
     out = _check_output(args.out) if args.out is not None else None
     projectile = _resolve("projectile", args.projectile, get_projectile)
@@ -288,6 +314,7 @@ def _cmd_simulate(args: argparse.Namespace) -> int:
         args.omega,
         start=None if args.start is None else tuple(args.start),
         stop_at_reversal=args.stop_at_reversal,
+        numerics=Numerics.from_mapping(dict(args.numerics)),
     )
     total = time.perf_counter() - t0
     if out is not None:
@@ -372,7 +399,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     Returns
     -------
     int
-        Exit status: 0 success, 1 solver or write failure, 2 bad input.
+        Exit status: 0 success, 1 solver or write failure, 2 bad input, 130 interrupted.
     """
     from .solver import SolverError
 
@@ -389,6 +416,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         msg, status = str(exc), 2
     except SolverError as exc:
         msg, status = f"solver failed: {exc}", 1
+    except KeyboardInterrupt:
+        msg, status = "interrupted (Ctrl-C); nothing was written", 130
     print(f"{PROG}: error: {_one_line(msg)}", file=sys.stderr)
     return status
 

@@ -32,9 +32,12 @@ It fails with ``step_underflow`` when the step needed for the error tolerance fa
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import math
+import signal
 import time
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -438,6 +441,25 @@ class RunResult:
     last_error_norm: float
 
 
+@contextlib.contextmanager
+def _defer_sigint() -> Iterator[None]:
+    """Hold SIGINT while compiled code runs, and deliver it on return.
+
+    A Ctrl-C that arrives inside a compiled call is otherwise handled at the first
+    Python callback numba makes, where it surfaces as a ``SystemError`` instead of a
+    ``KeyboardInterrupt``. Held for one chunk (~0.1 s), it is raised as a clean
+    ``KeyboardInterrupt`` between chunks. (Unix; elsewhere a no-op.)
+    """
+    if not hasattr(signal, "pthread_sigmask"):
+        yield
+        return
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
+
+
 def _stalled(ys: np.ndarray, stall_distance: float) -> bool:
     moved = float(np.linalg.norm(ys[-1, :3] - ys[0, :3]))
     v0, v1 = (float(np.linalg.norm(ys[i, 7:10])) for i in (0, -1))
@@ -499,11 +521,12 @@ def integrate(
     start = time.monotonic()
     while True:
         n_max = max(0, min(CHUNK_STEPS, max_steps - n_saved))
-        ts, ys, code = integrate_chunk(
-            y, f0, sf, si, n_max, t_max, rtol, atol, h_min, max_travel, v_stop,
-            stop_at_reversal, mass, inertia, gravity, rings, bounds, coef, fric, eps,
-            n_gauss, reach,
-        )  # fmt: skip
+        with _defer_sigint():
+            ts, ys, code = integrate_chunk(
+                y, f0, sf, si, n_max, t_max, rtol, atol, h_min, max_travel, v_stop,
+                stop_at_reversal, mass, inertia, gravity, rings, bounds, coef, fric, eps,
+                n_gauss, reach,
+            )  # fmt: skip
         ts_parts.append(ts)
         ys_parts.append(ys)
         n_saved += ts.size
