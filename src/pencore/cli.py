@@ -51,22 +51,26 @@ def _one_line(text: str) -> str:
 
 def _number(key: str, ok: Callable[[float], bool] = lambda v: True, allowed: str = "") -> Any:
     """An argparse type: a float within ``pencore.validate.LIMITS[key]`` for which ``ok``
-    holds, else an error naming the value and what is allowed."""
+    holds (a narrower range the CLI promises: ``allowed``), else an error naming the
+    value and what is allowed."""
 
     def conv(text: str) -> float:
         try:
-            v = number(text, key, allow_str=True)
+            v = float(text)
+        except ValueError:
+            v = math.nan
+        if allowed and not (math.isfinite(v) and ok(v)):
+            raise argparse.ArgumentTypeError(f"must be {allowed}, got {text!r}")
+        try:
+            return number(text, key, allow_str=True)
         except InputError as exc:
             raise argparse.ArgumentTypeError(str(exc).split(": ", 1)[-1]) from None
-        if not ok(v):
-            raise argparse.ArgumentTypeError(f"must be {allowed}, got {text!r}")
-        return v
 
     return conv
 
 
 _velocity = _number("velocity")
-_obliquity = _number("obliquity", lambda v: v >= 0.0, "a number of degrees in [0, 90)")
+_obliquity = _number("obliquity", lambda v: 0.0 <= v < 90.0, "a number of degrees in [0, 90)")
 
 
 def _numerics_option(text: str) -> tuple[str, Any]:

@@ -55,7 +55,8 @@ class Limit:
     lo, hi : float
         Bounds; ``lo_open``/``hi_open`` make them strict.
     kind : str
-        ``"physical"`` or ``"guard"`` (see the module docstring) for the binding bound.
+        ``"physical"``, ``"guard"`` (see the module docstring), or ``"physical / guard"``
+        for a physical lower bound and a guard upper bound.
     why : str
         One line on where the bounds come from.
     """
@@ -99,7 +100,7 @@ LIMITS: dict[str, Limit] = {
         0.0,
         1e4,
         lo_open=True,
-        kind="guard",
+        kind="physical / guard",
         why="> 0; above 10 km/s the rigid-body DAFL does not apply (typo guard)",
     ),
     "obliquity": Limit(
@@ -112,7 +113,7 @@ LIMITS: dict[str, Limit] = {
         90.0,
         True,
         True,
-        why="|obliquity + yaw| < 90 deg: the velocity must point into the target",
+        why="abs(obliquity + yaw) < 90 deg: the velocity must point into the target",
     ),
     "omega": Limit("omega", "rad/s", -1e4, 1e4, kind="guard", why="typo guard"),
     "azimuth": Limit("azimuth", "deg", -360.0, 360.0, kind="guard", why="one turn either way"),
@@ -132,7 +133,7 @@ LIMITS: dict[str, Limit] = {
         0.0,
         100.0,
         lo_open=True,
-        kind="guard",
+        kind="physical / guard",
         why="> 0; 100 m is a typo guard",
     ),
     "density": Limit(
@@ -148,7 +149,7 @@ LIMITS: dict[str, Limit] = {
         "",
         0.5,
         100.0,
-        kind="guard",
+        kind="physical / guard",
         why="0.5 is the hemisphere; above 100 the nose is > 20 m per m of diameter",
     ),
     "half_angle_deg": Limit(
@@ -160,14 +161,19 @@ LIMITS: dict[str, Limit] = {
         "SI",
         0.0,
         1e12,
-        kind="guard",
+        kind="physical / guard",
         why=">= 0 (the stress must resist); 1e12 is a typo guard",
     ),
     "friction": Limit(
-        "friction coefficient", "", 0.0, 2.0, kind="guard", why=">= 0; above 2 is a typo guard"
+        "friction coefficient",
+        "",
+        0.0,
+        2.0,
+        kind="physical / guard",
+        why=">= 0; above 2 is a typo guard",
     ),
     "friction_speed": Limit(
-        "friction table speed", "m/s", 0.0, 1e4, kind="guard", why=">= 0, increasing"
+        "friction table speed", "m/s", 0.0, 1e4, kind="physical / guard", why=">= 0, increasing"
     ),
     "thickness": Limit(
         "layer thickness",
@@ -175,39 +181,45 @@ LIMITS: dict[str, Limit] = {
         0.0,
         1e4,
         lo_open=True,
-        kind="guard",
+        kind="physical / guard",
         why="> 0; the last layer is semi-infinite",
     ),
     "medium_density": Limit(
         "medium density", "kg/m^3", 0.0, _RHO_MAX, lo_open=True, why="> 0 (for reference only)"
     ),
     # numerics
-    "n_nose": Limit("n_nose", "", 1, 10_000, kind="guard", why="rings on the nose"),
-    "n_shank": Limit("n_shank", "", 1, 10_000, kind="guard", why="rings per 5 calibres"),
-    "n_face": Limit("n_face", "", 1, 1_000, kind="guard", why="rings per flat face"),
+    "n_nose": Limit("n_nose", "", 1, 10_000, kind="physical / guard", why="rings on the nose"),
+    "n_shank": Limit("n_shank", "", 1, 10_000, kind="physical / guard", why="rings per 5 calibres"),
+    "n_face": Limit("n_face", "", 1, 1_000, kind="physical / guard", why="rings per flat face"),
     "eps": Limit(
         "eps",
         "m/s",
         0.0,
         10.0,
-        kind="guard",
+        kind="physical / guard",
         why="0 is the pure step (may fail as chatter); 10 m/s is a typo guard",
     ),
     "rtol": Limit("rtol", "", 1e-12, 0.1, kind="guard", why="round-off to 10 %"),
     "max_travel": Limit(
-        "max_travel", "m", 0.0, 10.0, lo_open=True, kind="guard", why="> 0; largest move per step"
+        "max_travel",
+        "m",
+        0.0,
+        10.0,
+        lo_open=True,
+        kind="physical / guard",
+        why="> 0; largest move per step",
     ),
-    "v_stop": Limit("v_stop", "m/s", 0.0, 1e3, lo_open=True, kind="guard", why="> 0"),
+    "v_stop": Limit("v_stop", "m/s", 0.0, 1e3, lo_open=True, kind="physical / guard", why="> 0"),
     "t_max": Limit(
         "t_max",
         "s",
         0.0,
         100.0,
         lo_open=True,
-        kind="guard",
+        kind="physical / guard",
         why="> 0; a penetration lasts milliseconds to a second",
     ),
-    "max_steps": Limit("max_steps", "", 1, 1e9, kind="guard", why="step budget"),
+    "max_steps": Limit("max_steps", "", 1, 1e9, kind="physical / guard", why="step budget"),
     "max_wall": Limit("max_wall", "s", 0.0, _INF, lo_open=True, why="wall-time budget"),
     "h_min": Limit(
         "h_min",
@@ -215,12 +227,19 @@ LIMITS: dict[str, Limit] = {
         0.0,
         1e-3,
         lo_open=True,
-        kind="guard",
+        kind="physical / guard",
         why="smallest step before the run fails as stiff or chattering",
     ),
-    "n_gauss": Limit("n_gauss", "", 1, 64, kind="guard", why="Gauss points per friction arc"),
+    "n_gauss": Limit(
+        "n_gauss", "", 1, 64, kind="physical / guard", why="Gauss points per friction arc"
+    ),
     "gravity": Limit(
-        "gravity", "m/s^2", 0.0, 1e3, kind="guard", why=">= 0 along -y; 100 g is a typo guard"
+        "gravity",
+        "m/s^2",
+        0.0,
+        1e3,
+        kind="physical / guard",
+        why=">= 0 along -y; 100 g is a typo guard",
     ),
 }
 
