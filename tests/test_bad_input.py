@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from helpers import assert_one_line_error
 
 import pencore
 from pencore.cli import main
@@ -253,15 +254,6 @@ def _run_main(capsys, args: list[str]) -> tuple[int, str, str]:
     return status, out, err
 
 
-def _assert_one_line(err: str, needles: list[str]) -> None:
-    assert "Traceback" not in err
-    lines = err.strip().splitlines()
-    assert len(lines) == 1, err
-    assert lines[0].startswith("pencore: error: "), err
-    for needle in needles:
-        assert needle in lines[0], (needle, err)
-
-
 def test_the_valid_yaml_files_run(tmp_path, capsys):
     p, t = _write_case(tmp_path, "p", "", "")
     status, out, err = _run_main(
@@ -283,7 +275,7 @@ def test_yaml_files_refused(tmp_path, capsys, which, old, new, needles):
          "--out", str(out_nc)],
     )  # fmt: skip
     assert status == 2
-    _assert_one_line(err, [*needles, str(p if which == "p" else t)])
+    assert_one_line_error(err, *needles, str(p if which == "p" else t))
     assert sorted(x.name for x in tmp_path.iterdir()) == ["p.yaml", "t.yaml"]
 
 
@@ -326,7 +318,7 @@ CLI_CASES = [
 def test_cli_refuses(tmp_path, capsys, args, needles):
     status, _, err = _run_main(capsys, [*args])
     assert status == 2
-    _assert_one_line(err, needles)
+    assert_one_line_error(err, *needles)
     assert list(tmp_path.iterdir()) == []
 
 
@@ -335,7 +327,7 @@ def test_solver_failure_is_one_line_with_status_1(capsys):
         capsys, [*SIM, "--velocity", "500", "--obliquity", "30", "--numerics", "eps=0"]
     )
     assert status == 1
-    _assert_one_line(err, ["solver failed", "chatter", "eps = 0"])
+    assert_one_line_error(err, "solver failed", "chatter", "eps = 0")
 
 
 @pytest.mark.parametrize(
@@ -353,7 +345,7 @@ def test_no_traceback_from_a_real_process(tmp_path, args):
         capture_output=True, text=True, cwd=tmp_path, timeout=120,
     )  # fmt: skip
     assert proc.returncode == 2
-    _assert_one_line(proc.stderr, [])
+    assert_one_line_error(proc.stderr)
     assert list(tmp_path.iterdir()) == []
 
 

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 import xarray as xr
+from helpers import assert_one_line_error
 
 import pencore
 from pencore.cli import main
@@ -27,16 +28,6 @@ def run_cli(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[
         cwd=cwd,
         timeout=300,
     )
-
-
-def assert_one_line_error(err: str, *needles: str) -> None:
-    """stderr is exactly one ``pencore: error: ...`` line containing every needle."""
-    assert "Traceback" not in err
-    lines = err.strip().splitlines()
-    assert len(lines) == 1, err
-    assert lines[0].startswith("pencore: error: "), err
-    for needle in needles:
-        assert needle in lines[0], (needle, err)
 
 
 def write(path: Path, text: str) -> Path:
