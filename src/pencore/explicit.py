@@ -41,7 +41,7 @@ import numpy as np
 from .contact_points import MAX_SAMPLES_PER_STEP, push_path
 from .dynamics import quat_to_matrix
 from .forces import model_loads
-from .integrate import reserve_path, start_path
+from .integrate import _path_of, reserve_path, start_path
 from .models import SHANK_CAVITY
 from .stepping import (
     CHUNK_STEPS,
@@ -269,4 +269,5 @@ def integrate_explicit(
         int(si[SI_N_RHS]),
         0,
         math.nan,
+        _path_of(model),
     )

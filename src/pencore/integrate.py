@@ -430,6 +430,7 @@ def integrate(
         int(si[SI_N_RHS]),
         int(si[SI_N_REJ]),
         float(sf[SF_ERR]),
+        _path_of(model),
     )
 
 
@@ -455,3 +456,10 @@ def reserve_path(model: tuple[np.ndarray, ...], free: int) -> tuple[np.ndarray, 
     bigger = np.zeros((max(2 * path.shape[0], int(npath[0]) + free), 4))
     bigger[: int(npath[0])] = path[: int(npath[0])]
     return (model[0], model[1], model[2], bigger, npath)
+
+
+def _path_of(model: tuple[np.ndarray, ...]) -> np.ndarray | None:
+    """The used rows of the tip path (cavity model), else None."""
+    if model[0][0] != SHANK_CAVITY:
+        return None
+    return model[3][: int(model[4][0])].copy()

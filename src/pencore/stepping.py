@@ -179,6 +179,8 @@ class RunResult:
     n_rhs: int
     n_rejected: int
     last_error_norm: float
+    #: nose-tip path samples (x, y, z, arc length; m) of the cavity shank model, else None
+    path: np.ndarray | None = None
 
 
 @contextlib.contextmanager
