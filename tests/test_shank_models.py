@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import pencore
-from pencore import closedform
+from pencore import analysis, closedform
 from pencore.contact_points import path_distance, push_path, tip_position
 from pencore.forces import model_loads
 from pencore.integrate import start_path
@@ -26,6 +26,7 @@ MODELS = {
     "dafl": "dafl",
     "factor_0.5": {"kind": "factor", "factor": 0.5},
     "cavity_5mm": {"kind": "cavity", "delta_ref": 5e-3},
+    "cavity_shoulder": {"kind": "cavity", "delta_ref": 1e-3, "axis": "shoulder"},
 }
 
 
@@ -42,15 +43,24 @@ def _run_with_path(shank, velocity, **kw):
 @pytest.mark.parametrize("name", list(MODELS))
 def test_normal_impact_is_the_same_under_every_shank_model(name):
     """At zero angle of attack the shank carries no net load under any model, so the
-    depth is the exact 1-D DAFL solution (same tolerance as the DAFL test) and the path
-    stays on the axis."""
+    depth is the exact 1-D DAFL solution (same tolerance as the DAFL test).
+
+    The DAFL and the factor keep the body exactly on the axis (closed-form whole-ring
+    integrals cancel exactly). The cavity's shank points cancel only to round-off, and
+    its wall has no lateral lock at zero intrusion (the DAFL's Heaviside has one), so the
+    ~1e-16 m/s seeds grow under the nose's overturning moment until the wall stops
+    them: micrometres, far below the millimetre wall scale; the depth then differs from
+    the DAFL run's by the default numerics' integration error (< 1e-4)."""
     ds = pencore.simulate("p2", "soil", 280.0, shank=MODELS[name])
     ref = closedform.depth(get_projectile("p2"), SOIL, 280.0)
     assert float(ds.penetration_depth) == pytest.approx(ref, rel=2e-3)
-    assert np.abs(ds.tip_x.values).max() < 1e-9
-    assert np.abs(ds.tip_z.values).max() < 1e-9
+    cavity = name.startswith("cavity")
+    drift = 1e-5 if cavity else 1e-9
+    assert np.abs(ds.tip_x.values).max() < drift
+    assert np.abs(ds.tip_z.values).max() < drift
     dafl = pencore.simulate("p2", "soil", 280.0)
-    assert float(ds.penetration_depth) == pytest.approx(float(dafl.penetration_depth), rel=1e-9)
+    same = 1e-4 if cavity else 1e-9
+    assert float(ds.penetration_depth) == pytest.approx(float(dafl.penetration_depth), rel=same)
 
 
 def test_cavity_loads_nothing_on_a_shank_that_follows_the_nose():
@@ -90,23 +100,30 @@ def test_a_weaker_shank_turns_the_body_more():
     lateral load resists the rotation)."""
     full = pencore.simulate("p2", "soil", **OBLIQUE)
     weak = pencore.simulate("p2", "soil", **OBLIQUE, shank={"kind": "factor", "factor": 0.5})
-    assert float(weak.final_deviation) > float(full.final_deviation) + 0.5
+    assert analysis.final_deviation(weak) > analysis.final_deviation(full) + 0.5
 
 
 def test_cavity_tends_to_the_dafl_as_the_wall_stiffens():
     """delta_ref 20 -> 5 -> 1 mm: the oblique path and deviation approach the DAFL's
-    monotonically; at 1 mm both are within the default numerics' own error (path 1e-4
-    relative, deviation 0.01 deg)."""
+    monotonically. The rigid-wall limit is not exactly the DAFL: a shank element that
+    moves outwards while still inside the cavity is unloaded (separated), which the DAFL
+    loads; here that moves the path by < 1e-4, the depth by < 0.05 % and the deviation
+    by < 0.05 deg (measured at rtol 1e-7: 1.5e-5, 0.037 %, 0.028 deg at 0.1 mm)."""
     dafl = pencore.simulate("p2", "soil", **OBLIQUE)
-    errs_path, errs_dev = [], []
-    for d in (2e-2, 5e-3, 1e-3):
+    errs = {"path_length": [], "penetration_depth": [], "final_deviation": []}
+    for d in (2e-2, 5e-3, 1e-3, 1e-4):
         ds = pencore.simulate("p2", "soil", **OBLIQUE, shank={"kind": "cavity", "delta_ref": d})
-        errs_path.append(abs(float(ds.path_length) / float(dafl.path_length) - 1.0))
-        errs_dev.append(abs(float(ds.final_deviation) - float(dafl.final_deviation)))
-    assert errs_path[0] > errs_path[1] > errs_path[2]
-    assert errs_dev[0] > errs_dev[1] > errs_dev[2]
-    assert errs_path[2] < 1e-4
-    assert errs_dev[2] < 0.01
+        for k, e in errs.items():
+            if k == "final_deviation":  # the paper's phi: at 10 % of the impact speed
+                e.append(abs(analysis.final_deviation(ds) - analysis.final_deviation(dafl)))
+            else:
+                e.append(abs(float(ds[k]) / float(dafl[k]) - 1.0))
+    for e in errs.values():
+        assert e[0] > e[1] > e[2], errs
+    for i in (2, 3):
+        assert errs["path_length"][i] < 1e-4
+        assert errs["penetration_depth"][i] < 5e-4
+        assert errs["final_deviation"][i] < 0.05
 
 
 @pytest.mark.parametrize("name", ["factor_0.5", "cavity_5mm"])
@@ -184,6 +201,7 @@ def test_path_distance_on_a_circle():
         ({"kind": "factor", "factor": -1.0}, "shank load factor"),
         ({"kind": "cavity", "delta_ref": 0.0}, "delta_ref"),
         ({"kind": "cavity", "n_phi": 4}, "n_phi"),
+        ({"kind": "cavity", "axis": "nose"}, "cavity axis"),
         ({"kind": "cavity", "delta": 1e-3}, "did you mean 'delta_ref'"),
         (3, "shank must be"),
     ],

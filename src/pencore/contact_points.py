@@ -12,12 +12,13 @@ Eq. 7, ``h(0) = 1``), inside a layer (``y <= 0``) only.
 Cavity shank model (:class:`pencore.models.ShankModel`, ``"cavity"``): a shank point's
 stress is multiplied by ``min(1, delta / delta_ref)`` where ``delta = d - R_c`` is its
 intrusion into the wall of the cavity cut by the nose: ``d`` is its distance from the
-nose-tip path, a polyline through samples taken at *accepted* steps only
-(:func:`push_path`) plus the current tip as a last, virtual vertex, so a rejected step
-leaves no trace. The search is local: a binary search on the path's arc length for the
-point's own arc position (the tip's minus the point's axial distance behind the tip),
-then a descent over neighbouring segments; the points of a ring (same axial position)
-start from the previous point's segment.
+path of the cavity's axis point (the nose tip, or the nose shoulder; called "the tip"
+below, at body axial coordinate ``lc``), a polyline through samples taken at *accepted*
+steps only (:func:`push_path`) plus the current tip as a last, virtual vertex, so a
+rejected step leaves no trace. The search is local: a binary search on the path's arc
+length for the point's own arc position (the tip's minus the point's axial distance
+behind the tip), then a descent over neighbouring segments; the points of a ring (same
+axial position) start from the previous point's segment.
 
 Path buffer ``path`` (rows: x, y, z, arc length s; m), ``npath[0]`` rows in use.
 """
@@ -37,14 +38,15 @@ MAX_SAMPLES_PER_STEP = 32
 
 @nb.njit(cache=True)
 def tip_position(y, lc):
-    """Nose-tip position (m, fixed frame) of state ``y``; ``lc`` tip-to-centre distance."""
+    """Position (m, fixed frame) of the axis point at body coordinate ``lc`` (the nose
+    tip when ``lc`` is the tip-to-centre-of-mass distance) in state ``y``."""
     rot = quat_to_matrix(y[3:7])
     return np.array([y[0] + lc * rot[0, 0], y[1] + lc * rot[1, 0], y[2] + lc * rot[2, 0]])
 
 
 @nb.njit(cache=True)
 def tip_velocity(y, lc):
-    """Nose-tip velocity (m/s, fixed frame): ``v + R (w x (lc, 0, 0))``."""
+    """Velocity (m/s, fixed frame) of that axis point: ``v + R (w x (lc, 0, 0))``."""
     rot = quat_to_matrix(y[3:7])
     b2 = y[12] * lc  # w x (lc, 0, 0) = (0, w3 lc, -w2 lc)
     b3 = -y[11] * lc
@@ -169,8 +171,8 @@ def point_loads(y, pts, bounds, coef, fric, eps, with_friction, cavity, cav, pat
     cavity : bool
         Apply the cavity shank model to points flagged as shank.
     cav : (4,) float
-        ``delta_ref`` (m), cavity radius ``R_c`` (m), tip-to-centre distance ``lc`` (m),
-        path spacing (m).
+        ``delta_ref`` (m), cavity radius ``R_c`` (m), body axial coordinate ``lc`` of the
+        cavity's axis point (m), path spacing (m).
     path, npath : the tip path (module docstring).
 
     Returns

@@ -6,7 +6,8 @@ tuple of arrays that selects the shank contact model and the surface
 
     model = (ipar, cav, pts, path, npath)
     ipar  : (4,) int64   shank model code, surface code, unused, unused
-    cav   : (4,) float   delta_ref (m), cavity radius (m), tip-to-centre lc (m), path spacing (m)
+    cav   : (4,) float   delta_ref (m), cavity radius (m), axial coordinate of the point whose
+                         path is the cavity axis (m; the tip: lc), path spacing (m)
     pts   : (m, 8) float load points (pencore.panels): all panels, or the shank ring points
     path  : (k, 4) float nose-tip path samples (x, y, z, arc length; m)
     npath : (1,) int64   rows of ``path`` in use
@@ -97,6 +98,8 @@ def kernel_model(
     cav[0] = shank.delta_ref
     cav[1] = a
     cav[2] = projectile.mass_properties().lc
+    if shank.axis == "shoulder":
+        cav[2] -= projectile.nose_length
     cav[3] = 0.1 * a  # path samples a tenth of the radius apart
     pts = np.zeros((0, N_COLUMNS))
     if emulation.surface == "panels":

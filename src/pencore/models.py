@@ -25,7 +25,7 @@ Warren & Poormon 2001). The models here:
     radius) around the nose-tip path; a shank element is loaded only where it presses
     into the wall of that cavity, i.e. where its wall intrusion ``delta = d - R_c > 0``
     (``d`` its distance from the tip path) and ``Vn >= 0``, with the resistance building
-    from the wall::
+    from the wall (``axis="tip"``, the default, as issue 10 specifies it)::
 
         sigma = sigma_DAFL(Vn) * min(1, delta / delta_ref)
 
@@ -37,6 +37,10 @@ Warren & Poormon 2001). The models here:
     The wall is not moved by the shank (no memory of earlier intrusions), and
     ``delta_ref -> 0`` is a rigid wall: it differs from the DAFL where a shank element
     moves outwards while still inside the cavity (separated), which the DAFL loads.
+    ``axis="shoulder"`` centres the cavity on the path of the nose shoulder (the axis
+    point where the nose meets the shank, whose full-radius section cuts the cavity the
+    shank runs in) instead of the tip: with a yaw ``a`` the two paths are
+    ``nose length x sin(a)`` apart (2.8 mm at 1 deg for these projectiles).
     On rings the shank stress is integrated by the midpoint rule with ``n_phi`` points
     around each ring; on panels at each panel centroid.
 ``"factor"``
@@ -89,6 +93,7 @@ __all__ = [
 ]
 
 SHANK_MODELS = ("dafl", "cavity", "factor")
+CAVITY_AXES = ("tip", "shoulder")
 SURFACES = ("rings", "panels")
 INTEGRATORS = ("adaptive", "explicit")
 
@@ -120,15 +125,19 @@ class ShankModel:
         Default 5 mm: assumed (Lame estimate with ``G ~ 80 MPa``), not from the paper.
     n_phi : int
         ``"cavity"`` on rings: midpoint-rule points around each shank ring.
+    axis : {"tip", "shoulder"}
+        ``"cavity"``: the axis point whose path is the cavity's axis.
     """
 
     kind: str = "dafl"
     factor: float = 1.0
     delta_ref: float = 5e-3
     n_phi: int = 64
+    axis: str = "tip"
 
     def __post_init__(self) -> None:
         _choice(self.kind, SHANK_MODELS, "shank model")
+        _choice(self.axis, CAVITY_AXES, "cavity axis")
         object.__setattr__(self, "factor", number(self.factor, "shank_factor", "shank"))
         object.__setattr__(self, "delta_ref", number(self.delta_ref, "delta_ref", "shank"))
         object.__setattr__(self, "n_phi", integer(self.n_phi, "n_phi", "shank"))
@@ -148,7 +157,8 @@ class ShankModel:
         if self.kind == "factor":
             return f"factor(f={self.factor:g})"
         if self.kind == "cavity":
-            return f"cavity(delta_ref={self.delta_ref:g} m)"
+            where = "" if self.axis == "tip" else ", shoulder path"
+            return f"cavity(delta_ref={self.delta_ref:g} m{where})"
         return "dafl"
 
 

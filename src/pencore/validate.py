@@ -294,6 +294,15 @@ LIMITS: dict[str, Limit] = {
         why="> 0; fixed step of the explicit integrator",
         group="models",
     ),
+    "start_height": Limit(
+        "start height",
+        "m",
+        0.0,
+        100.0,
+        kind="physical / guard",
+        why=">= 0 (0: touching); tip height of the attribution's normal impacts",
+        group="models",
+    ),
 }
 
 
