@@ -173,3 +173,12 @@ def test_bad_emulation_options_are_one_line_input_errors(em, match):
 def test_explicit_needs_no_adaptive_method():
     with pytest.raises(pencore.InputError, match="explicit integrator"):
         pencore.simulate("p2", "soil", 300.0, emulation={"integrator": "explicit"}, method="BDF")
+
+
+def test_readme_states_the_model_ranges():
+    from pathlib import Path
+
+    from pencore.validate import limits_markdown
+
+    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    assert limits_markdown("models") in readme
