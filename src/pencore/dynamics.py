@@ -476,6 +476,13 @@ def rhs(y, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss):
     """Time derivative of the state (Newton, Euler with I2 = I3, quaternion kinematics,
     and the power of the contact stresses). Returns ``(dy, clearance)``."""
     fb, mb, clearance = contact_loads(y, rings, bounds, coef, fric, eps, n_gauss)
+    return equations_of_motion(y, fb, mb, mass, inertia, gravity), clearance
+
+
+@nb.njit(cache=True)
+def equations_of_motion(y, fb, mb, mass, inertia, gravity):
+    """Time derivative of the state under the body-frame contact force ``fb`` (N) and
+    moment ``mb`` (N m about the centre of mass) and ``gravity`` (m/s^2, fixed frame)."""
     rot = quat_to_matrix(y[3:7])
     dy = np.empty(14)
     dy[0] = y[7]
@@ -499,4 +506,4 @@ def rhs(y, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss):
     v2 = rot[0, 1] * y[7] + rot[1, 1] * y[8] + rot[2, 1] * y[9]
     v3 = rot[0, 2] * y[7] + rot[1, 2] * y[8] + rot[2, 2] * y[9]
     dy[13] = fb[0] * v1 + fb[1] * v2 + fb[2] * v3 + mb[0] * w1 + mb[1] * w2 + mb[2] * w3
-    return dy, clearance
+    return dy

@@ -86,6 +86,15 @@ class OgiveNose:
         dl = ro * (edges[:-1] - edges[1:])
         return s, r, np.sin(beta), np.cos(beta), dl
 
+    def nodes(self, a: float, n: int) -> tuple[np.ndarray, np.ndarray]:
+        """Band edges of :meth:`rings` on the meridian, tip first: ``s, r`` (m), n + 1 each."""
+        ro = 2.0 * self.crh * a
+        ln = self.length(a)
+        beta = np.linspace(math.asin(min(ln / ro, 1.0)), 0.0, n + 1)
+        r = np.maximum(ro * np.cos(beta) - (ro - a), 0.0)
+        r[0] = 0.0
+        return ln - ro * np.sin(beta), r
+
     def exact_area(self, a: float) -> float:
         ro = 2.0 * self.crh * a
         beta_tip = math.asin(min(self.length(a) / ro, 1.0))
@@ -125,6 +134,11 @@ class ConeNose:
             np.diff(edges) / math.cos(t),
         )
 
+    def nodes(self, a: float, n: int) -> tuple[np.ndarray, np.ndarray]:
+        """Band edges of :meth:`rings` on the meridian, tip first: ``s, r`` (m)."""
+        s = np.linspace(0.0, self.length(a), n + 1)
+        return s, s * math.tan(self.half_angle)
+
     def exact_area(self, a: float) -> float:
         return math.pi * a * a / math.sin(self.half_angle)
 
@@ -146,6 +160,10 @@ class FlatNose:
 
     def rings(self, a: float, n: int) -> tuple[np.ndarray, ...]:
         return _disc_rings(a, n, 0.0, +1.0)
+
+    def nodes(self, a: float, n: int) -> tuple[np.ndarray, np.ndarray]:
+        """Band edges of :meth:`rings` (the face, centre first): ``s, r`` (m)."""
+        return np.zeros(n + 1), np.linspace(0.0, a, n + 1)
 
     def exact_area(self, a: float) -> float:
         return math.pi * a * a
@@ -309,9 +327,8 @@ class Projectile:
         parts.append(np.full(len(nose_rings[0]), 2 if isinstance(self.nose, FlatNose) else 0))
         s0 = self.nose_length
         for cyl in self.shank:
-            n = max(1, int(round(n_shank * cyl.length / (5.0 * self.diameter))))
-            n = max(n, n_shank // 4)
-            edges = np.linspace(s0, s0 + cyl.length, n + 1)
+            edges = self._shank_edges(cyl, s0, n_shank)
+            n = edges.size - 1
             s = 0.5 * (edges[:-1] + edges[1:])
             blocks.append((s, np.full(n, a), np.zeros(n), np.ones(n), np.diff(edges)))
             parts.append(np.ones(n, dtype=int))
@@ -322,6 +339,46 @@ class Projectile:
         return Rings(
             x1=lc - s, r=r, na=na, nr=nr, w=r * dl, part=np.concatenate(parts).astype(np.int8)
         )
+
+    def _shank_edges(self, cyl: Cylinder, s0: float, n_shank: int) -> np.ndarray:
+        """Band edges (m from the tip) of a cylindrical segment starting at ``s0``."""
+        n = max(1, int(round(n_shank * cyl.length / (5.0 * self.diameter))))
+        n = max(n, n_shank // 4)
+        return np.linspace(s0, s0 + cyl.length, n + 1)
+
+    def profile(
+        self, n_nose: int = 48, n_shank: int = 24, n_face: int = 4
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The meridian of the surface as a polyline through the band edges of
+        :meth:`rings` (same counts): from the tip (or the centre of a flat nose face)
+        along the side to the centre of the rear face.
+
+        Returns
+        -------
+        s, r : (k + 1,) float
+            Nodes: axial distance from the tip and radius (m).
+        part : (k,) int8
+            Per segment: 0 nose, 1 shank, 2 flat face (as :attr:`Rings.part`).
+        """
+        if n_nose < 1 or n_shank < 1 or n_face < 1:
+            raise GeometryError("ring counts must be >= 1")
+        a = self.radius
+        flat = isinstance(self.nose, FlatNose)
+        s_n, r_n = self.nose.nodes(a, n_face if flat else n_nose)
+        ss, rr = [s_n], [r_n]
+        parts = [np.full(s_n.size - 1, 2 if flat else 0)]
+        s0 = self.nose_length
+        for cyl in self.shank:
+            e = self._shank_edges(cyl, s0, n_shank)
+            ss.append(e[1:])
+            rr.append(np.full(e.size - 1, a))
+            parts.append(np.ones(e.size - 1, dtype=int))
+            s0 += cyl.length
+        face = np.linspace(a, 0.0, n_face + 1)
+        ss.append(np.full(n_face, s0))
+        rr.append(face[1:])
+        parts.append(np.full(n_face, 2))
+        return np.concatenate(ss), np.concatenate(rr), np.concatenate(parts).astype(np.int8)
 
     def exact_area(self) -> float:
         """Closed-form total surface area (m^2), for checking the quadrature."""

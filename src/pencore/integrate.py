@@ -32,134 +32,50 @@ It fails with ``step_underflow`` when the step needed for the error tolerance fa
 
 from __future__ import annotations
 
-import contextlib
-import hashlib
 import math
-import signal
 import time
-from collections.abc import Iterator
-from dataclasses import dataclass
-from pathlib import Path
 
 import numba as nb
 import numpy as np
 
-from . import dynamics
-from .dynamics import rhs
-
-
-def _invalidate_stale_cache() -> None:
-    """numba keys a cached function on its own file only; ``integrate`` inlines the
-    kernel of :mod:`pencore.dynamics`, so drop its cache when that kernel has changed."""
-    here = Path(__file__)
-    cache_dir = here.parent / "__pycache__"
-    digest = hashlib.sha256(Path(dynamics.__file__).read_bytes()).hexdigest()
-    stamp = cache_dir / "integrate.kernel-hash"
-    try:
-        if stamp.exists() and stamp.read_text() == digest:
-            return
-        for f in cache_dir.glob("integrate.*.nb[ic]"):
-            f.unlink()
-        cache_dir.mkdir(exist_ok=True)
-        stamp.write_text(digest)
-    except OSError:  # read-only install: numba falls back to compiling in memory
-        pass
-
-
-_invalidate_stale_cache()
-
-#: Outcome names, indexed by the integer codes the compiled integrator returns.
-OUTCOMES = (
-    "stopped",
-    "exited",
-    "time_limit",
-    "reversed",
-    "step_limit",
-    "step_underflow",
-    "non_finite",
-    "running",
+from .contact_points import MAX_SAMPLES_PER_STEP, push_path
+from .forces import default_model, rhs_model
+from .models import SHANK_CAVITY
+from .stepping import (  # noqa: F401 - re-exported: the integrator's public names
+    CHUNK_STEPS,
+    NON_FINITE,
+    NY,
+    OUTCOMES,
+    RUNNING,
+    SF_CLEAR,
+    SF_ERR,
+    SF_H,
+    SF_T,
+    SF_T_CONTACT,
+    SI_ENTERED,
+    SI_N_REJ,
+    SI_N_RHS,
+    SI_REV,
+    STEP_LIMIT,
+    STEP_UNDERFLOW,
+    RunResult,
+    _defer_sigint,
+    _lu,
+    _normalise,
+    _solve,
+    _stalled,
+    _stop_code,
+    body_reach,
+    speed_of,
 )
-STEP_LIMIT = 4
-STEP_UNDERFLOW = 5
-NON_FINITE = 6
-RUNNING = 7
-
-#: Indices into the float state array ``sf`` of :func:`integrate_chunk`.
-SF_T, SF_H, SF_T_CONTACT, SF_CLEAR, SF_ERR = 0, 1, 2, 3, 4
-#: Indices into the integer state array ``si``.
-SI_ENTERED, SI_REV, SI_N_RHS, SI_N_REJ = 0, 1, 2, 3
 
 _D = 1.0 / (2.0 + math.sqrt(2.0))
 _E32 = 6.0 + math.sqrt(2.0)
-NY = 14
-
-
-@nb.njit(cache=True)
-def _lu(a, piv):
-    n = a.shape[0]
-    for k in range(n):
-        p = k
-        big = abs(a[k, k])
-        for i in range(k + 1, n):
-            if abs(a[i, k]) > big:
-                big = abs(a[i, k])
-                p = i
-        piv[k] = p
-        if p != k:
-            for j in range(n):
-                tmp = a[k, j]
-                a[k, j] = a[p, j]
-                a[p, j] = tmp
-        akk = a[k, k]
-        for i in range(k + 1, n):
-            a[i, k] /= akk
-            f = a[i, k]
-            if f != 0.0:
-                for j in range(k + 1, n):
-                    a[i, j] -= f * a[k, j]
-
-
-@nb.njit(cache=True)
-def _solve(lu, piv, b):
-    n = lu.shape[0]
-    x = b.copy()
-    for k in range(n):
-        p = piv[k]
-        if p != k:
-            tmp = x[k]
-            x[k] = x[p]
-            x[p] = tmp
-    for i in range(n):
-        for j in range(i):
-            x[i] -= lu[i, j] * x[j]
-    for i in range(n - 1, -1, -1):
-        for j in range(i + 1, n):
-            x[i] -= lu[i, j] * x[j]
-        x[i] /= lu[i, i]
-    return x
-
-
-@nb.njit(cache=True)
-def _normalise(y):
-    n = math.sqrt(y[3] ** 2 + y[4] ** 2 + y[5] ** 2 + y[6] ** 2)
-    for k in range(3, 7):
-        y[k] /= n
-
-
-@nb.njit(cache=True)
-def body_reach(rings):
-    """Largest distance (m) from the centre of mass to a ring: the free-flight step bound."""
-    reach = 0.0
-    for i in range(rings.shape[0]):
-        rr = math.sqrt(rings[i, 0] ** 2 + rings[i, 1] ** 2)
-        if rr > reach:
-            reach = rr
-    return reach
 
 
 @nb.njit(cache=True)
 def _jacobian(
-    jac, y, f0, clear, reach, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss
+    jac, y, f0, clear, reach, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss, model
 ):
     """Fill ``jac`` (14 x 14) at state ``y``; returns the right-hand-side calls made."""
     for i in range(NY):
@@ -207,7 +123,9 @@ def _jacobian(
         if eps > 0.0:
             dlt = min(dlt, 0.05 * eps) if c < 10 else min(dlt, 0.05 * eps / reach)
         yp[c] += dlt
-        fp, _ = rhs(yp, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss)
+        fp, _ = rhs_model(
+            yp, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss, model
+        )
         for r in range(7, 14):
             jac[r, c] = (fp[r] - f0[r]) / dlt
     return 6
@@ -232,6 +150,7 @@ def _attempt(
     fric,
     eps,
     n_gauss,
+    model,
 ):
     """One Rosenbrock (2,3) step of size ``h``: ``(ynew, f(ynew), clearance, err)``, with
     ``err`` the RMS of the third-order error estimate scaled by ``atol + rtol |y|``."""
@@ -242,10 +161,12 @@ def _attempt(
     _lu(wmat, piv)
     k1 = _solve(wmat, piv, f0)
     y1 = y + 0.5 * h * k1
-    f1, _ = rhs(y1, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss)
+    f1, _ = rhs_model(y1, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss, model)
     k2 = _solve(wmat, piv, f1 - k1) + k1
     ynew = y + h * k2
-    f2, clear_new = rhs(ynew, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss)
+    f2, clear_new = rhs_model(
+        ynew, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss, model
+    )
     k3 = _solve(wmat, piv, f2 - _E32 * (k2 - f1) - 2.0 * (k1 - f0))
     err = 0.0
     for i in range(13):
@@ -262,25 +183,6 @@ def _next_step(h, err):
     if err == 0.0:
         return 5.0 * h
     return h * min(5.0, max(0.2, 0.8 * err ** (-1.0 / 3.0)))
-
-
-@nb.njit(cache=True)
-def speed_of(y):
-    """Speed (m/s) of the centre of mass in state ``y``."""
-    return math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
-
-
-@nb.njit(cache=True)
-def _stop_code(y, t, t_max, entered, clear, v_stop):
-    """The outcome code if the run must end at this accepted state, else ``RUNNING``."""
-    speed = speed_of(y)
-    if entered and speed < v_stop:
-        return 0
-    if entered and clear > 0.0:
-        return 1
-    if t >= t_max:
-        return 2
-    return RUNNING
 
 
 @nb.njit(cache=True)
@@ -307,13 +209,17 @@ def integrate_chunk(
     eps,
     n_gauss,
     reach,
+    model,
 ):
     """Advance a trajectory by at most ``n_max`` accepted steps.
 
     ``y`` (14,) and ``f0`` (its derivative) are updated in place, and so are the float
     state ``sf`` (time, next step, time of first contact, clearance, last error norm;
     indices ``SF_*``) and the integer state ``si`` (entered, reversed, right-hand-side
-    calls, rejected steps; indices ``SI_*``).
+    calls, rejected steps; indices ``SI_*``). ``model`` is the kernel tuple of
+    :mod:`pencore.forces`; with the cavity shank model every accepted step extends its
+    tip path (rejected steps do not), and the chunk ends early, to be called again with
+    a larger path buffer, when the buffer is nearly full.
 
     Returns
     -------
@@ -330,9 +236,14 @@ def integrate_chunk(
     clear = sf[SF_CLEAR]
     k = 0
     code = RUNNING
+    cavity = model[0][0] == SHANK_CAVITY
+    path, npath = model[3], model[4]
+    lc, spacing = model[1][2], model[1][3]
     while True:
         code = _stop_code(y, t, t_max, si[SI_ENTERED] == 1, clear, v_stop)
         if code != RUNNING or k == n_max:
+            break
+        if cavity and path.shape[0] - npath[0] <= MAX_SAMPLES_PER_STEP:
             break
         speed = math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
         wmag = math.sqrt(y[10] ** 2 + y[11] ** 2 + y[12] ** 2)
@@ -356,6 +267,7 @@ def integrate_chunk(
             fric,
             eps,
             n_gauss,
+            model,
         )
         while True:
             ynew, f2, clear_new, err = _attempt(
@@ -376,6 +288,7 @@ def integrate_chunk(
                 fric,
                 eps,
                 n_gauss,
+                model,
             )
             si[SI_N_RHS] += 2
             if err <= 1.0:
@@ -400,6 +313,8 @@ def integrate_chunk(
         if not finite:
             code = NON_FINITE
             break
+        if cavity:
+            push_path(path, npath, y, ynew, h, lc, spacing)
         y[:] = ynew
         f0[:] = f2
         clear = clear_new
@@ -420,50 +335,6 @@ def integrate_chunk(
     sf[SF_H] = h
     sf[SF_CLEAR] = clear
     return ts[:k], ys[:k], code
-
-
-#: Accepted steps per call of the compiled integrator: a call takes well under a second
-#: on any machine (~0.1 ms per step here), so Ctrl-C and the wall budget act within it.
-CHUNK_STEPS = 500
-
-
-@dataclass
-class RunResult:
-    """What :func:`integrate` returns: the accepted states and how the run ended."""
-
-    ts: np.ndarray
-    ys: np.ndarray
-    outcome: str
-    reversed: bool
-    t_first_contact: float
-    n_rhs: int
-    n_rejected: int
-    last_error_norm: float
-
-
-@contextlib.contextmanager
-def _defer_sigint() -> Iterator[None]:
-    """Hold SIGINT while compiled code runs, and deliver it on return.
-
-    A Ctrl-C that arrives inside a compiled call is otherwise handled at the first
-    Python callback numba makes, where it surfaces as a ``SystemError`` instead of a
-    ``KeyboardInterrupt``. Held for one chunk (~0.1 s), it is raised as a clean
-    ``KeyboardInterrupt`` between chunks. (Unix; elsewhere a no-op.)
-    """
-    if not hasattr(signal, "pthread_sigmask"):
-        yield
-        return
-    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
-    try:
-        yield
-    finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, old)
-
-
-def _stalled(ys: np.ndarray, stall_distance: float) -> bool:
-    moved = float(np.linalg.norm(ys[-1, :3] - ys[0, :3]))
-    v0, v1 = (float(np.linalg.norm(ys[i, 7:10])) for i in (0, -1))
-    return moved < stall_distance and abs(v1 - v0) < 0.01 * v0
 
 
 def integrate(
@@ -489,6 +360,8 @@ def integrate(
     fric: np.ndarray,
     eps: float,
     n_gauss: int,
+    model: tuple[np.ndarray, ...] | None = None,
+    reach: float | None = None,
 ) -> RunResult:
     """Integrate one trajectory from state ``y0`` (SI units) with the Rosenbrock pair.
 
@@ -503,6 +376,10 @@ def integrate(
     steps of ~1e-8 s). A run slowing to a stop changes its speed by far more than 1 %
     over 500 steps, so it is not mistaken for one.
 
+    ``model`` (default: DAFL on rings) is the kernel tuple of :mod:`pencore.forces`;
+    ``reach`` (m) the largest distance from the centre of mass to the surface (default:
+    from ``rings``).
+
     Returns
     -------
     RunResult
@@ -510,22 +387,24 @@ def integrate(
     """
     y = np.array(y0, dtype=float)
     _normalise(y)
-    f0, clear = rhs(y, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss)
+    model = start_path(model if model is not None else default_model(), y)
+    f0, clear = rhs_model(y, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss, model)
     entered = clear <= 0.0
     sf = np.array([0.0, h_init, 0.0 if entered else math.nan, clear, 0.0])
     si = np.array([int(entered), 0, 1, 0], dtype=np.int64)
-    reach = body_reach(rings)
+    reach = body_reach(rings) if reach is None else reach
     ts_parts = [np.zeros(1)]
     ys_parts = [y[None, :].copy()]
     n_saved = 0
     start = time.monotonic()
     while True:
         n_max = max(0, min(CHUNK_STEPS, max_steps - n_saved))
+        model = reserve_path(model, (n_max + 1) * MAX_SAMPLES_PER_STEP)
         with _defer_sigint():
             ts, ys, code = integrate_chunk(
                 y, f0, sf, si, n_max, t_max, rtol, atol, h_min, max_travel, v_stop,
                 stop_at_reversal, mass, inertia, gravity, rings, bounds, coef, fric, eps,
-                n_gauss, reach,
+                n_gauss, reach, model,
             )  # fmt: skip
         ts_parts.append(ts)
         ys_parts.append(ys)
@@ -551,4 +430,36 @@ def integrate(
         int(si[SI_N_RHS]),
         int(si[SI_N_REJ]),
         float(sf[SF_ERR]),
+        _path_of(model),
     )
+
+
+def start_path(model: tuple[np.ndarray, ...], y0: np.ndarray) -> tuple[np.ndarray, ...]:
+    """``model`` with a fresh tip path holding the tip of ``y0`` (cavity model only)."""
+    if model[0][0] != SHANK_CAVITY:
+        return model
+    from .contact_points import tip_position
+
+    path = np.zeros((1024, 4))
+    path[0, :3] = tip_position(np.asarray(y0, dtype=float), float(model[1][2]))
+    return (model[0], model[1], model[2], path, np.ones(1, dtype=np.int64))
+
+
+def reserve_path(model: tuple[np.ndarray, ...], free: int) -> tuple[np.ndarray, ...]:
+    """``model`` whose path buffer has at least ``free`` unused rows (cavity model only;
+    the buffer doubles as it fills, so nothing large is preallocated)."""
+    if model[0][0] != SHANK_CAVITY:
+        return model
+    path, npath = model[3], model[4]
+    if path.shape[0] - int(npath[0]) >= free:
+        return model
+    bigger = np.zeros((max(2 * path.shape[0], int(npath[0]) + free), 4))
+    bigger[: int(npath[0])] = path[: int(npath[0])]
+    return (model[0], model[1], model[2], bigger, npath)
+
+
+def _path_of(model: tuple[np.ndarray, ...]) -> np.ndarray | None:
+    """The used rows of the tip path (cavity model), else None."""
+    if model[0][0] != SHANK_CAVITY:
+        return None
+    return model[3][: int(model[4][0])].copy()

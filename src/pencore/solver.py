@@ -7,8 +7,10 @@ Geometry of the impact (angles in degrees at this interface, radians inside):
   (``-y``), measured towards ``+x``;
 * ``yaw`` (phi2) is the velocity angle minus the axis angle (paper Fig. 10), so the
   velocity makes ``alpha = phi1 + phi2`` with the normal;
-* ``omega`` is the initial angular velocity about the centre of mass, about ``+z``
-  (rad/s); positive turns the nose towards ``+x``;
+* ``omega`` is the initial angular velocity about ``+z`` (rad/s), about the centre of
+  mass (``spin_about="cm"``, default) or about the nose tip (``"tip"``: the tip keeps
+  the impact velocity and the centre of mass moves with it); positive turns the nose
+  towards ``+x``;
 * ``start`` is the initial nose-tip position (m); by default the tip is at ``x = z = 0``
   and the body is lowered until its lowest surface point just touches ``y = 0``;
 * ``azimuth`` turns the whole impact (position, velocity, attitude, spin) about the
@@ -19,6 +21,7 @@ Geometry of the impact (angles in degrees at this interface, radians inside):
 from __future__ import annotations
 
 import difflib
+import json
 import math
 import time
 from collections.abc import Mapping
@@ -28,10 +31,19 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from .dynamics import quat_to_matrix
+from .forces import default_model as _default_model
+from .forces import kernel_model
 from .geometry import Projectile
+from .initial import (  # noqa: F401 - re-exported
+    SPIN_CENTRES,
+    _axis_quaternion,
+    _check_inputs,
+    _check_reaches_target,
+    initial_state,
+)
 from .integrate import CHUNK_STEPS, RunResult, body_reach, integrate
 from .library import get_projectile, get_target
+from .models import Emulation, ShankModel, emulation, shank_model, to_json
 from .target import Target
 from .trajectory import trajectory_dataset
 from .validate import InputError, check_keys, integer, number
@@ -135,111 +147,6 @@ class Numerics:
 DEFAULT_NUMERICS = Numerics()
 
 
-def _axis_quaternion(obliquity: float) -> np.ndarray:
-    """Quaternion turning body axis 1 onto (sin phi1, -cos phi1, 0)."""
-    th = obliquity - 0.5 * math.pi
-    if obliquity == 0.0:
-        # cos and sin of -pi/4 differ in the last bit; equal magnitudes make the axis
-        # exactly -y, so a normal impact is exactly axisymmetric
-        h = math.sqrt(0.5)
-        return np.array([h, 0.0, 0.0, -h])
-    return np.array([math.cos(0.5 * th), 0.0, 0.0, math.sin(0.5 * th)])
-
-
-def initial_state(
-    projectile: Projectile,
-    rings: np.ndarray,
-    velocity: float,
-    obliquity: float,
-    yaw: float,
-    omega: float,
-    start: tuple[float, float, float] | None,
-    azimuth: float = 0.0,
-) -> np.ndarray:
-    """State vector at t = 0 (angles in radians here)."""
-    mp = projectile.mass_properties()
-    q = _axis_quaternion(obliquity)
-    rot = quat_to_matrix(q)
-    axis = rot[:, 0]
-    alpha = obliquity + yaw
-    y = np.zeros(14)
-    y[3:7] = q
-    y[7:10] = velocity * np.array([math.sin(alpha), -math.cos(alpha), 0.0])
-    y[10:13] = rot.T @ np.array([0.0, 0.0, omega])
-    if start is None:
-        # lowest point of every ring circle, and the tip, relative to the centre of mass
-        x1, r = rings[:, 0], rings[:, 1]
-        low = rot[1, 0] * x1 - r * math.hypot(rot[1, 1], rot[1, 2])
-        low = min(float(low.min()), rot[1, 0] * mp.lc)
-        cm = np.array([0.0, 0.0, 0.0]) - mp.lc * axis
-        cm[1] = -low + 1e-9
-    else:
-        cm = np.asarray(start, dtype=float) - mp.lc * axis
-    y[0:3] = cm
-    if azimuth != 0.0:
-        ca, sa = math.cos(azimuth), math.sin(azimuth)
-        ry = np.array([[ca, 0.0, sa], [0.0, 1.0, 0.0], [-sa, 0.0, ca]])
-        y[0:3] = ry @ y[0:3]
-        y[7:10] = ry @ y[7:10]
-        qa = np.array([math.cos(0.5 * azimuth), 0.0, math.sin(0.5 * azimuth), 0.0])
-        y[3:7] = _qmul(qa, y[3:7])
-    return y
-
-
-def _qmul(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    w1, x1, y1, z1 = a
-    w2, x2, y2, z2 = b
-    return np.array(
-        [
-            w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
-            w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
-            w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
-            w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
-        ]
-    )
-
-
-def _check_inputs(
-    velocity: Any, obliquity: Any, yaw: Any, omega: Any, azimuth: Any, start: Any
-) -> tuple[float, float, float, float, float, tuple[float, float, float] | None]:
-    """Checked impact conditions (SI, angles in degrees), or :class:`InputError`."""
-    v = number(velocity, "velocity")
-    ob = number(obliquity, "obliquity")
-    yw = number(yaw, "yaw")
-    if not abs(ob + yw) < 90.0:
-        raise InputError(
-            f"yaw must keep the velocity pointing into the target: |obliquity + yaw| < 90 "
-            f"deg, got obliquity {obliquity!r} deg and yaw {yaw!r} deg"
-        )
-    om = number(omega, "omega")
-    az = number(azimuth, "azimuth")
-    if start is None:
-        return v, ob, yw, om, az, None
-    if isinstance(start, str | bytes) or not hasattr(start, "__len__") or len(start) != 3:
-        raise InputError(f"start must be three numbers (x, y, z) in m, got {start!r}")
-    xyz = tuple(number(c, "start", f"start {n}") for c, n in zip(start, "xyz", strict=True))
-    return v, ob, yw, om, az, xyz  # type: ignore[return-value]
-
-
-def _check_reaches_target(y0: np.ndarray, reach: float, num: Numerics) -> None:
-    """Refuse a start from which no point of the body can touch the surface within
-    ``t_max``: the body's lowest point is at least ``y_cm - reach`` high and moves down no
-    faster than ``-vy + g t``."""
-    height = y0[1] - reach
-    if height <= 0.0:
-        return
-    vy = -y0[8]
-    g = num.gravity
-    # earliest time at which height - vy t - g t^2 / 2 = 0
-    t_hit = height / vy if g == 0.0 else (-vy + math.sqrt(vy * vy + 2 * g * height)) / g
-    if not t_hit <= num.t_max:
-        raise InputError(
-            f"start height {y0[1] + 0.0:.4g} m (centre of mass) is too high: at the impact's "
-            f"downward speed of {vy:.4g} m/s the body cannot reach the target within "
-            f"t_max = {num.t_max:g} s; lower the start or raise numerics t_max"
-        )
-
-
 @dataclass
 class _Prepared:
     projectile: Projectile
@@ -252,6 +159,10 @@ class _Prepared:
     mass: float
     inertia: np.ndarray
     lc: float
+    shank: ShankModel = ShankModel()
+    emulation: Emulation = Emulation()
+    kernel_rings: np.ndarray | None = None  # rings for the ring kernel under the model
+    model: tuple[np.ndarray, ...] | None = None  # pencore.forces kernel tuple
 
 
 def _resolve_numerics(numerics: Any, overrides: Mapping[str, Any]) -> Numerics:
@@ -269,17 +180,44 @@ def _resolve_numerics(numerics: Any, overrides: Mapping[str, Any]) -> Numerics:
 
 
 def prepare(
-    projectile: Any, target: Any, numerics: Numerics | None = None, **overrides: Any
+    projectile: Any,
+    target: Any,
+    numerics: Numerics | None = None,
+    *,
+    shank: ShankModel | Mapping[str, Any] | str | None = None,
+    emulation: Emulation | Mapping[str, Any] | None = None,
+    **overrides: Any,
 ) -> _Prepared:
-    """Resolve names and build the kernel arrays (reusable across many trajectories)."""
+    """Resolve names and build the kernel arrays (reusable across many trajectories).
+
+    ``shank`` and ``emulation`` select the shank contact model and the paper-emulation
+    numerics (:mod:`pencore.models`; default: the DAFL on pencore's rings, adaptive).
+    """
     num = _resolve_numerics(numerics, overrides)
+    sm = shank_model(shank)
+    em = _emulation(emulation)
+    if num.method != "rosenbrock" and (em.integrator == "explicit" or sm.kind == "cavity"):
+        what = "the explicit integrator" if em.integrator == "explicit" else "the cavity model"
+        raise InputError(
+            f"numerics method {num.method!r} cannot be combined with {what}; "
+            "use method 'rosenbrock'"
+        )
     p = get_projectile(projectile)
     t = get_target(target)
     mp = p.mass_properties()
-    rings = p.rings(num.n_nose, num.n_shank, num.n_face).as_array()
+    ring_set = p.rings(num.n_nose, num.n_shank, num.n_face)
+    rings = ring_set.as_array()
     bounds, coef, fric = t.kernel_arrays()
     inertia = np.array([mp.i_axial, mp.i_transverse, mp.i_transverse])
-    return _Prepared(p, t, num, rings, bounds, coef, fric, mp.mass, inertia, mp.lc)
+    pr = _Prepared(p, t, num, rings, bounds, coef, fric, mp.mass, inertia, mp.lc, sm, em)
+    if not (sm.is_default and em.surface == "rings"):
+        pr.kernel_rings, pr.model = kernel_model(
+            p, ring_set, sm, em, num.n_nose, num.n_shank, num.n_face
+        )
+    return pr
+
+
+_emulation = emulation
 
 
 def simulate(
@@ -295,6 +233,9 @@ def simulate(
     stop_at_reversal: bool = False,
     numerics: Numerics | None = None,
     prepared: _Prepared | None = None,
+    shank: ShankModel | Mapping[str, Any] | str | None = None,
+    emulation: Emulation | Mapping[str, Any] | None = None,
+    spin_about: str = "cm",
     **overrides: Any,
 ) -> xr.Dataset:
     """Simulate one impact.
@@ -322,7 +263,15 @@ def simulate(
     numerics : Numerics, optional
         Numerical parameters; keyword overrides (``eps=...``, ``rtol=...``) apply on top.
     prepared : optional
-        Output of :func:`prepare`, to skip re-resolving in loops.
+        Output of :func:`prepare`, to skip re-resolving in loops (it carries the shank
+        model and emulation: do not pass those as well).
+    shank : ShankModel, mapping or str, optional
+        Shank contact model (:mod:`pencore.models`): ``"dafl"`` (default), ``"cavity"``,
+        ``"factor"``.
+    emulation : Emulation or mapping, optional
+        Paper-emulation numerics (:mod:`pencore.models`): panels, explicit integrator.
+    spin_about : {"cm", "tip"}
+        The point ``omega`` turns the body about at t = 0.
 
     Returns
     -------
@@ -336,7 +285,11 @@ def simulate(
         raise InputError(f"stop_at_reversal must be True or False, got {stop_at_reversal!r}")
     if prepared is not None and not isinstance(prepared, _Prepared):
         raise InputError(f"prepared must come from pencore.solver.prepare, got {prepared!r}")
-    pr = prepared or prepare(projectile, target, numerics, **overrides)
+    if prepared is not None and (shank is not None or emulation is not None):
+        raise InputError("pass shank= and emulation= to pencore.prepare, not with prepared=")
+    pr = prepared or prepare(
+        projectile, target, numerics, shank=shank, emulation=emulation, **overrides
+    )
     num = pr.numerics
     y0 = initial_state(
         pr.projectile,
@@ -347,13 +300,14 @@ def simulate(
         omega,
         start,
         math.radians(azimuth),
+        spin_about,
     )
     _check_reaches_target(y0, body_reach(pr.rings), num)
     t0 = time.perf_counter()
     run = _run(pr, y0, velocity, stop_at_reversal)
     wall = time.perf_counter() - t0
     _raise_on_failure(run, num)
-    return trajectory_dataset(
+    ds = trajectory_dataset(
         pr.projectile,
         pr.target,
         pr.numerics,
@@ -369,6 +323,26 @@ def simulate(
             stop_at_reversal=stop_at_reversal,
         ),
     )
+    return _record_model(ds, pr, spin_about)
+
+
+def _record_model(ds: xr.Dataset, pr: _Prepared, spin_about: str) -> xr.Dataset:
+    """Add the shank model, emulation and spin centre to the attributes and inputs_json,
+    when they are not the defaults (default datasets stay exactly as they were)."""
+    extra: dict[str, Any] = {}
+    if not pr.shank.is_default:
+        extra["shank"] = json.loads(to_json(pr.shank))
+    if not pr.emulation.is_default or pr.emulation.surface != "rings":
+        extra["emulation"] = json.loads(to_json(pr.emulation))
+    if spin_about != "cm":
+        extra["spin_about"] = spin_about
+    if extra:
+        inputs = json.loads(ds.attrs["inputs_json"])
+        inputs.update(extra)
+        ds.attrs["inputs_json"] = json.dumps(inputs, default=str)
+        ds.attrs["shank_model"] = pr.shank.describe()
+        ds.attrs["emulation"] = pr.emulation.describe()
+    return ds
 
 
 def _run(pr: _Prepared, y0: np.ndarray, velocity: float, stop_at_reversal: bool) -> RunResult:
@@ -399,11 +373,27 @@ def _run(pr: _Prepared, y0: np.ndarray, velocity: float, stop_at_reversal: bool)
         eps=num.eps,
         n_gauss=num.n_gauss if not pr.target.frictionless else 0,
     )
+    if pr.model is not None:
+        kw.update(rings=pr.kernel_rings, model=pr.model)
+    if pr.emulation.integrator == "explicit":
+        from .explicit import integrate_explicit
+
+        for key in ("rtol", "atol", "max_travel", "eps"):
+            del kw[key]
+        kw.setdefault("model", _default_model())
+        return integrate_explicit(y0, dt=pr.emulation.dt, **kw)
     if num.method == "rosenbrock":
         # a chunk of steps that moves less than this has stalled (see integrate());
         # 1 % of the body length, unless the user asked for steps that short
         stall = min(1e-2 * length, 0.1 * CHUNK_STEPS * num.max_travel)
-        return integrate(y0, h_init=1e-7, h_min=num.h_min, stall_distance=stall, **kw)
+        return integrate(
+            y0,
+            h_init=1e-7,
+            h_min=num.h_min,
+            stall_distance=stall,
+            reach=body_reach(pr.rings),
+            **kw,
+        )
     from .reference import integrate_scipy
 
     return integrate_scipy(y0, method=num.method, **kw)

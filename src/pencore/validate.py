@@ -59,6 +59,10 @@ class Limit:
         for a physical lower bound and a guard upper bound.
     why : str
         One line on where the bounds come from.
+    group : str
+        ``"core"`` (the main table of the README) or ``"models"`` (the shank contact
+        models and paper-emulation numerics of :mod:`pencore.models`, tabulated in the
+        README section on them).
     """
 
     label: str
@@ -69,6 +73,7 @@ class Limit:
     hi_open: bool = False
     kind: str = "physical"
     why: str = ""
+    group: str = "core"
 
     def contains(self, v: float) -> bool:
         above = v > self.lo if self.lo_open else v >= self.lo
@@ -241,6 +246,63 @@ LIMITS: dict[str, Limit] = {
         kind="physical / guard",
         why=">= 0 along -y; 100 g is a typo guard",
     ),
+    # shank contact models and paper-emulation numerics (pencore.models)
+    "shank_factor": Limit(
+        "shank load factor",
+        "",
+        0.0,
+        10.0,
+        kind="physical / guard",
+        why=">= 0 (0 removes the shank load); above 10 is a typo guard",
+        group="models",
+    ),
+    "delta_ref": Limit(
+        "cavity delta_ref",
+        "m",
+        0.0,
+        1.0,
+        lo_open=True,
+        kind="physical / guard",
+        why="> 0 (wall intrusion at full load); 1 m is a typo guard",
+        group="models",
+    ),
+    "n_phi": Limit(
+        "cavity n_phi",
+        "",
+        8,
+        4096,
+        kind="physical / guard",
+        why="quadrature points around a shank ring (cavity model on rings)",
+        group="models",
+    ),
+    "n_circumferential": Limit(
+        "n_circumferential",
+        "",
+        3,
+        10_000,
+        kind="physical / guard",
+        why="flat panels around the body (3 is the coarsest closed facet ring)",
+        group="models",
+    ),
+    "dt": Limit(
+        "explicit dt",
+        "s",
+        0.0,
+        1e-3,
+        lo_open=True,
+        kind="physical / guard",
+        why="> 0; fixed step of the explicit integrator",
+        group="models",
+    ),
+    "start_height": Limit(
+        "start height",
+        "m",
+        0.0,
+        100.0,
+        kind="physical / guard",
+        why=">= 0 (0: touching); tip height of the attribution's normal impacts",
+        group="models",
+    ),
 }
 
 
@@ -325,9 +387,12 @@ def check_keys(mapping: Mapping[str, Any], allowed: Iterable[str], what: str) ->
             raise InputError(f"{what}: unknown key {key!r}{tip} (allowed: {', '.join(allowed)})")
 
 
-def limits_markdown() -> str:
-    """The README table of valid ranges, one row per entry of :data:`LIMITS`."""
+def limits_markdown(group: str = "core") -> str:
+    """A README table of valid ranges, one row per entry of :data:`LIMITS` in ``group``
+    (``"core"``: the main table; ``"models"``: the shank models and emulation numerics)."""
     rows = ["| input | valid range | kind | why |", "|---|---|---|---|"]
     for key, lim in LIMITS.items():
+        if lim.group != group:
+            continue
         rows.append(f"| `{key}` | {lim.describe()[3:]} | {lim.kind} | {lim.why} |")
     return "\n".join(rows)

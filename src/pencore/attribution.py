@@ -1,0 +1,242 @@
+"""Attribution of the disagreements with the paper: the disputed quantities, one setting.
+
+pencore solves the paper's model as written, and where it disagrees with the paper an
+independent point-panel solver agrees with pencore; so the paper computed something
+other than the model as written. :func:`disputed_quantities` computes, for one
+*setting* (a dict of choices: shank model, surface, explicit step, start height, spin
+centre, yaw reading, friction), every quantity in dispute, so that readings can be
+tested jointly: one setting, all the paper's numbers (issue 10).
+
+The quantities (projectile #2 in soil unless stated; paper values in :data:`PAPER`):
+
+``alpha``
+    deviation (deg) of the normal impact at 1000 m/s with initial spin ``omega`` = 5,
+    20, 25 rad/s about +z (paper Figs 16-17: 0.14, 2.86 deg, turns back at 25), the
+    paper's alpha = :func:`pencore.analysis.final_deviation`; the tip starts
+    ``start_height`` above the surface (0: touching);
+``turned_back``
+    whether each of those runs turned back towards the surface (paper: yes at 25);
+``vcr``
+    critical reverse velocity (m/s) at 45 deg from the tip at (-1, 1) m (paper Fig. 7:
+    1641 < Vcr <= 1650), by :func:`pencore.critical.find_threshold` with a 5-point scan
+    and a 5 m/s bracket;
+``depth_280``
+    Table 2 test 2: the tip path length (m) of the normal impact at 280 m/s (paper 4.25);
+``phi_p4``
+    deviation (deg) of projectile #4 in a normal impact with yaw 0.1 deg at 280 and
+    1000 m/s (paper Figs 13-14: 0.16, 0.24), read as ``yaw_reading``.
+
+The choices (keys of the dict; all optional):
+
+``shank``        :class:`pencore.models.ShankModel` or its mapping / name (default DAFL);
+``emulation``    :class:`pencore.models.Emulation` or its mapping (default: none);
+``numerics``     mapping of :class:`pencore.Numerics` overrides (e.g. a coarse mesh);
+``start_height`` tip height (m) above the surface at t = 0 for the normal impacts;
+``spin_about``   ``"cm"`` (the paper: "about the centre of mass") or ``"tip"``;
+``yaw_reading``  ``"axis_tilted"`` or ``"velocity_tilted"``
+                 (:func:`pencore.critical.normal_impact_angles`);
+``friction``     constant Coulomb coefficient of the soil (the paper: frictionless).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import time
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from . import analysis, critical
+from .library import MEDIA
+from .models import emulation as _emulation
+from .models import shank_model
+from .solver import SPIN_CENTRES, prepare, simulate
+from .target import Target
+from .validate import InputError, check_keys, number
+
+__all__ = ["disputed_quantities", "PAPER", "CHOICES", "paper_comparison"]
+
+#: The paper's values of the disputed quantities (Li & Flores-Johnson 2011).
+PAPER: dict[str, Any] = {
+    "alpha": {5.0: 0.14, 20.0: 2.86},  # deg, Sect. 4.3 text on Figs 16-17
+    "turned_back": {25.0: True},  # "moves back to the surface" at 25 rad/s
+    "vcr_bracket": (1641.0, 1650.0),  # m/s, Fig. 7 text: 1641 does not, 1650 does
+    "depth_280": 4.25,  # m, Table 2 test 2 (predicted)
+    "phi_p4": {280.0: 0.16, 1000.0: 0.24},  # deg, Sect. 4.3 text on Figs 13-14
+}
+
+#: Allowed keys of a setting.
+CHOICES = (
+    "shank",
+    "emulation",
+    "numerics",
+    "start_height",
+    "spin_about",
+    "yaw_reading",
+    "friction",
+)
+
+OMEGAS = (5.0, 20.0, 25.0)
+PHI_SPEEDS = (280.0, 1000.0)
+VCR_RANGE = (600.0, 2600.0)
+VCR_START = (-1.0, 1.0, 0.0)
+
+
+def _setting(choices: Mapping[str, Any]) -> dict[str, Any]:
+    """Checked choices with defaults filled in."""
+    if not isinstance(choices, Mapping):
+        raise InputError(f"attribution setting must be a mapping of choices, got {choices!r}")
+    check_keys(choices, CHOICES, "attribution setting")
+    s = dict(choices)
+    s["shank"] = shank_model(s.get("shank"))
+    s["emulation"] = _emulation(s.get("emulation"))
+    num = s.get("numerics") or {}
+    if not isinstance(num, Mapping):
+        raise InputError(f"attribution numerics must be a mapping of overrides, got {num!r}")
+    s["numerics"] = dict(num)
+    s["start_height"] = number(s.get("start_height", 0.0), "start_height", "attribution")
+    s["spin_about"] = s.get("spin_about", "cm")
+    if s["spin_about"] not in SPIN_CENTRES:
+        raise InputError(
+            f"attribution spin_about must be one of {', '.join(SPIN_CENTRES)}, "
+            f"got {s['spin_about']!r}"
+        )
+    s["yaw_reading"] = s.get("yaw_reading", "axis_tilted")
+    critical.normal_impact_angles(0.1, s["yaw_reading"])  # checks the name
+    s["friction"] = number(s.get("friction", 0.0), "friction", "attribution")
+    return s
+
+
+def _target(friction: float) -> Target:
+    soil = MEDIA["soil"]
+    return Target.half_space(soil if friction == 0.0 else soil.with_friction(friction))
+
+
+def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
+    """The paper's disputed quantities for one setting (module docstring).
+
+    Parameters
+    ----------
+    choices : mapping, optional
+        The setting; keys in :data:`CHOICES`. ``None`` or ``{}``: pencore's default.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``alpha`` (deg) and ``turned_back`` on ``omega`` (rad/s); ``vcr``, ``vcr_lo``,
+        ``vcr_hi`` (m/s); ``depth_280`` (m); ``phi_p4`` (deg) on ``phi_velocity`` (m/s);
+        the paper's values as ``paper_*``; wall times (s) per group. The setting is in
+        the attribute ``setting_json``.
+    """
+    s = _setting(choices or {})
+    target = _target(s["friction"])
+    kw = dict(shank=s["shank"], emulation=s["emulation"], **s["numerics"])
+    p2 = prepare("p2", target, **kw)
+    p4 = prepare("p4", target, **kw)
+    h = s["start_height"]
+    start = None if h == 0.0 else (0.0, h, 0.0)
+    wall = {}
+
+    t0 = time.perf_counter()
+    alpha, back = [], []
+    for w in OMEGAS:
+        ds = simulate("p2", target, 1000.0, omega=w, start=start, prepared=p2,
+                      spin_about=s["spin_about"])  # fmt: skip
+        alpha.append(analysis.final_deviation(ds))
+        back.append(bool(ds.attrs["reversed"]))
+    wall["alpha"] = time.perf_counter() - t0
+
+    t0 = time.perf_counter()
+
+    def verdict(v: float) -> bool:
+        ds = simulate("p2", target, v, 45.0, start=VCR_START, stop_at_reversal=True, prepared=p2)
+        return bool(ds.attrs["reversed"])
+
+    res = critical.find_threshold(verdict, *VCR_RANGE, critical.VELOCITY_TOL, scan=5)
+    wall["vcr"] = time.perf_counter() - t0
+
+    t0 = time.perf_counter()
+    depth = float(simulate("p2", target, 280.0, prepared=p2).path_length)
+    wall["depth_280"] = time.perf_counter() - t0
+
+    t0 = time.perf_counter()
+    ob, yw = critical.normal_impact_angles(0.1, s["yaw_reading"])
+    phi = [
+        analysis.final_deviation(simulate("p4", target, v, ob, yw, start=start, prepared=p4))
+        for v in PHI_SPEEDS
+    ]
+    wall["phi_p4"] = time.perf_counter() - t0
+
+    def attrs(units: str, long_name: str) -> dict[str, str]:
+        return {"units": units, "long_name": long_name}
+
+    om_attrs = attrs("rad s-1", "initial angular velocity about +z")
+    pv_attrs = attrs("m s-1", "impact velocity of the projectile #4 runs")
+    nan = math.nan
+    setting_json = json.dumps(
+        {
+            **{k: v for k, v in s.items() if k not in ("shank", "emulation")},
+            "shank": s["shank"].describe(),
+            "emulation": s["emulation"].describe(),
+        }
+    )
+    return xr.Dataset(
+        {
+            "alpha": ("omega", np.array(alpha), attrs("degree", "deviation alpha, #2 1000 m/s")),
+            "turned_back": ("omega", np.array(back), attrs("1", "turned back to the surface")),
+            "vcr": ((), res.value, attrs("m s-1", "critical reverse velocity, #2 45 deg")),
+            "vcr_lo": ((), res.lo, attrs("m s-1", "largest speed found not to turn back")),
+            "vcr_hi": ((), res.hi, attrs("m s-1", "smallest speed found to turn back")),
+            "depth_280": ((), depth, attrs("m", "tip path length, #2 normal 280 m/s")),
+            "phi_p4": ("phi_velocity", np.array(phi), attrs("degree", "deviation phi, #4 yaw 0.1")),
+            "paper_alpha": (
+                "omega",
+                np.array([PAPER["alpha"].get(w, nan) for w in OMEGAS]),
+                attrs("degree", "paper's alpha (Sect. 4.3)"),
+            ),
+            "paper_turned_back": (
+                "omega",
+                np.array([float(PAPER["turned_back"].get(w, nan)) for w in OMEGAS]),
+                attrs("1", "paper: turned back (1), NaN not stated"),
+            ),
+            "paper_vcr": ((), float(np.mean(PAPER["vcr_bracket"])), attrs("m s-1", "paper Vcr")),
+            "paper_depth_280": ((), PAPER["depth_280"], attrs("m", "paper Table 2 test 2")),
+            "paper_phi_p4": (
+                "phi_velocity",
+                np.array([PAPER["phi_p4"][v] for v in PHI_SPEEDS]),
+                attrs("degree", "paper's phi (Sect. 4.3)"),
+            ),
+            **{
+                f"wall_{k}": ((), v, attrs("s", f"wall time of the {k} runs"))
+                for k, v in wall.items()
+            },
+        },
+        coords={
+            "omega": ("omega", np.array(OMEGAS), om_attrs),
+            "phi_velocity": ("phi_velocity", np.array(PHI_SPEEDS), pv_attrs),
+        },
+        attrs={
+            "title": "pencore attribution: the paper's disputed quantities for one setting",
+            "setting_json": setting_json,
+            "vcr_status": res.status,
+        },
+    )
+
+
+def paper_comparison(ds: xr.Dataset) -> dict[str, float]:
+    """Relative differences (pencore / paper - 1) of one :func:`disputed_quantities`
+    result, and whether the turn-back verdict at 25 rad/s agrees (1.0) or not (0.0)."""
+    out = {
+        f"alpha_{w:g}": float(ds.alpha.sel(omega=w)) / PAPER["alpha"][w] - 1.0 for w in (5.0, 20.0)
+    }
+    out["turn_back_25_agrees"] = float(
+        bool(ds.turned_back.sel(omega=25.0)) == PAPER["turned_back"][25.0]
+    )
+    out["vcr"] = float(ds.vcr) / float(ds.paper_vcr) - 1.0
+    out["depth_280"] = float(ds.depth_280) / PAPER["depth_280"] - 1.0
+    for v in PHI_SPEEDS:
+        out[f"phi_p4_{v:g}"] = float(ds.phi_p4.sel(phi_velocity=v)) / PAPER["phi_p4"][v] - 1.0
+    return out
