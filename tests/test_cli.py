@@ -250,7 +250,7 @@ def test_failed_write_leaves_nothing(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(xr.Dataset, "to_netcdf", half_write)
     out = tmp_path / "x.nc"
     assert main([*BASE, "--velocity", "280", "--out", str(out)]) == 1
-    assert_one_line_error(capsys.readouterr().err, "x.nc", "No space left")
+    assert_one_line_error(capsys.readouterr().err, "x.nc", "disk full")
     assert list(tmp_path.iterdir()) == []
 
 

@@ -10,6 +10,7 @@ failed or interrupted run never leaves a partial or stale-looking output behind.
 from __future__ import annotations
 
 import argparse
+import errno
 import math
 import os
 import sys
@@ -20,6 +21,7 @@ from pathlib import Path
 from typing import Any, NoReturn
 
 from . import __version__
+from .atomic import describe_os_error
 from .validate import InputError, number
 
 __all__ = ["main", "build_parser"]
@@ -265,8 +267,11 @@ def _check_output(out: str) -> Path:
         os.close(fd)
         os.unlink(probe)
     except OSError as exc:
+        cause = describe_os_error(exc)
         raise _Failure(
-            f"output directory {str(parent)!r} of {out!r} is not writable: {exc.strerror}", 2
+            f"output directory {str(parent)!r} of {out!r} is not writable: {cause} "
+            f"({exc.strerror})",
+            1 if exc.errno in (errno.ENOSPC, errno.EDQUOT) else 2,
         ) from None
     return path
 
@@ -301,7 +306,7 @@ def _fmt_slope(s: float) -> str:
 
 
 def _cmd_simulate(args: argparse.Namespace) -> int:
-    from .io import write_netcdf
+    from .io import WriteError, write_netcdf
     from .library import get_projectile, get_target
     from .solver import Numerics, simulate
 
@@ -324,8 +329,8 @@ def _cmd_simulate(args: argparse.Namespace) -> int:
     if out is not None:
         try:
             write_netcdf(ds, out, config_slice={"cli": _cli_inputs(args)}, study="cli/simulate")
-        except OSError as exc:
-            raise _Failure(f"cannot write output file {str(out)!r}: {exc}", 1) from None
+        except WriteError as exc:  # one line naming the path and the cause; nothing left
+            raise _Failure(str(exc), 1) from None
     a = ds.attrs
     rows = [
         (

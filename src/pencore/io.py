@@ -19,7 +19,6 @@ import hashlib
 import json
 import os
 import subprocess
-import tempfile
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -28,6 +27,7 @@ import numpy as np
 import xarray as xr
 
 from . import __version__
+from .atomic import WriteError, atomic_path
 
 __all__ = [
     "config_hash",
@@ -35,6 +35,7 @@ __all__ = [
     "git_commit",
     "provenance_attrs",
     "write_netcdf",
+    "WriteError",
     "read_netcdf",
     "downsample",
 ]
@@ -174,8 +175,10 @@ def write_netcdf(
     Attributes added: ``study``, ``pencore_version``, ``git_commit`` (``'unknown'`` when
     git cannot tell), ``git_dirty``, ``config_json``, ``config_sha256``, ``created_utc``.
     Every floating-point variable and coordinate is zlib-compressed (level 4). The file is
-    first written to a temporary file in the same directory, then moved into place with
-    :func:`os.replace`.
+    written through :func:`pencore.atomic.atomic_path`: to a temporary file in the same
+    directory, flushed to the disk, then renamed into place, so a failed or killed write
+    leaves no file behind; any failure raises :class:`pencore.atomic.WriteError` (an
+    ``OSError``) with a one-line message naming the path and the cause.
     """
     if not isinstance(ds, xr.Dataset):
         raise TypeError(f"write_netcdf needs an xarray.Dataset, got {type(ds).__name__}")
@@ -189,23 +192,9 @@ def write_netcdf(
     for name, var in out.variables.items():
         if var.dtype.kind == "f" and var.ndim > 0:
             encoding[str(name)] = {"zlib": True, "complevel": COMPLEVEL}
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    os.close(fd)
-    try:
+    with atomic_path(path) as tmp:
         out.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
-        # mkstemp creates the file private (0600); give it the usual permissions
-        os.chmod(tmp, 0o666 & ~_umask())
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
     return path
-
-
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
 
 
 def read_netcdf(path: str | os.PathLike[str]) -> xr.Dataset:
