@@ -4,8 +4,11 @@
 #   python -m snakemake --cores 2 archive              # refresh results/archive/
 #   python -m snakemake --report results/report.html
 # Physics lives in the pencore package; rules call it through thin workflow/scripts/.
+import yaml
+from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
+from pencore.config_check import ConfigError, check_config, schema_error_message
 from pencore.io import package_source_hash
 
 min_version("9.0")
@@ -14,7 +17,17 @@ min_version("9.0")
 configfile: "config/config.yaml"
 
 
-validate(config, "workflow/schemas/config.schema.yaml")
+# A bad config stops here with one line naming the key path (Snakemake's own message
+# would print the whole schema; pencore.config_check adds what a schema cannot say).
+try:
+    validate(config, "workflow/schemas/config.schema.yaml")
+    check_config(config, workflow.basedir)
+except ConfigError as exc:
+    raise WorkflowError(str(exc)) from None
+except Exception:
+    with open(workflow.source_path("workflow/schemas/config.schema.yaml")) as f:
+        schema = yaml.safe_load(f)
+    raise WorkflowError(schema_error_message(config, schema)) from None
 
 
 report: "workflow/report/workflow.rst"
