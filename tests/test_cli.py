@@ -383,3 +383,19 @@ def test_list(capsys):
 def test_fit_table3(capsys):
     assert main(["fit-table3"]) == 0
     assert capsys.readouterr().out.strip() == pencore.library.table3_fit().report()
+
+
+def test_output_into_a_closed_pipe_is_quiet():
+    """`pencore list | head -1`: no BrokenPipeError traceback, status 141 (SIGPIPE). The
+    reading end is closed before the command writes, so the failure is certain."""
+    read_end, write_end = os.pipe()
+    os.close(read_end)
+    try:
+        proc = subprocess.run(
+            [sys.executable, "-m", "pencore.cli", "list"],
+            stdout=write_end, stderr=subprocess.PIPE, timeout=120,
+        )  # fmt: skip
+    finally:
+        os.close(write_end)
+    assert proc.returncode == 141
+    assert proc.stderr.decode() == ""

@@ -408,7 +408,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     Returns
     -------
     int
-        Exit status: 0 success, 1 solver or write failure, 2 bad input, 130 interrupted.
+        Exit status: 0 success, 1 solver or write failure, 2 bad input, 130 interrupted,
+        141 output pipe closed early.
     """
     from .solver import SolverError
 
@@ -418,7 +419,15 @@ def main(argv: Sequence[str] | None = None) -> int:
     except SystemExit as exc:  # --help, --version, usage errors
         return exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 2)
     try:
-        return _COMMANDS[args.command](args)
+        status = _COMMANDS[args.command](args)
+        sys.stdout.flush()
+        return status
+    except BrokenPipeError:
+        # the reader went away (`pencore list | head`): stop quietly, as Unix tools do;
+        # point stdout at devnull so the interpreter's final flush does not fail again
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return 141  # 128 + SIGPIPE, what a shell reports for a tool killed by SIGPIPE
     except _Failure as exc:
         msg, status = str(exc), exc.status
     except InputError as exc:
