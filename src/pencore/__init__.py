@@ -9,6 +9,7 @@ __version__ = "0.1.0"
 
 from .geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile  # noqa: E402
 from .library import InputError, get_projectile, get_target, table3_fit  # noqa: E402
+from .models import Emulation, ShankModel  # noqa: E402
 from .solver import Numerics, SolverError, prepare, simulate  # noqa: E402
 from .target import Layer, Medium, Target  # noqa: E402
 
@@ -25,6 +26,8 @@ __all__ = [
     "InputError",
     "SolverError",
     "Numerics",
+    "ShankModel",
+    "Emulation",
     "get_projectile",
     "get_target",
     "table3_fit",
