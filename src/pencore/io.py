@@ -188,13 +188,55 @@ def write_netcdf(
     out.attrs = _netcdf_safe_attrs({**ds.attrs, **provenance_attrs(config_slice, study)})
     for name in out.variables:
         out[name].attrs = _netcdf_safe_attrs(out[name].attrs)
-    encoding: dict[str, dict[str, Any]] = {}
-    for name, var in out.variables.items():
-        if var.dtype.kind == "f" and var.ndim > 0:
-            encoding[str(name)] = {"zlib": True, "complevel": COMPLEVEL}
+    out, encoding = cf_encoding(out)
     with atomic_path(path) as tmp:
         out.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
     return path
+
+
+#: The CF version the files declare: the newest one the official CF checker
+#: (``cfchecker``, run by ``.ci/cf_check.py``) verifies. The files use nothing newer.
+CF_CONVENTIONS = "CF-1.8"
+
+
+def cf_encoding(ds: xr.Dataset) -> tuple[xr.Dataset, dict[str, dict[str, Any]]]:
+    """A copy of ``ds`` and its netCDF encoding, such that the file is CF-compliant.
+
+    * ``Conventions`` is :data:`CF_CONVENTIONS`; ``history`` records when and by which
+      pencore version (and study) the file was written;
+    * text variables are written as character arrays (CF-1.8 has no variable-length
+      strings), read back as text by xarray;
+    * 64-bit integers become 32-bit where the values fit, booleans 8-bit integers;
+    * coordinate variables carry no ``_FillValue``;
+    * floating-point variables are zlib-compressed (level :data:`COMPLEVEL`).
+    """
+    out = ds.copy(deep=False)
+    stamp = out.attrs.get("created_utc", "")
+    study = out.attrs.get("study", "")
+    line = f"{stamp} written by pencore {__version__}" + (f" (study {study})" if study else "")
+    out.attrs["Conventions"] = CF_CONVENTIONS
+    out.attrs["history"] = line.strip()
+    encoding: dict[str, dict[str, Any]] = {}
+    for name, var in out.variables.items():
+        enc: dict[str, Any] = {}
+        kind = var.dtype.kind
+        if kind == "f" and var.ndim > 0:
+            enc.update(zlib=True, complevel=COMPLEVEL)
+        elif kind in "OUS":
+            enc["dtype"] = "S1"
+        elif kind == "b":
+            out[name] = var.astype("int8")
+            out[name].attrs = var.attrs
+        elif kind in "iu" and var.dtype.itemsize == 8:
+            info = np.iinfo(np.int32)
+            values = var.values
+            if values.size == 0 or (values.min() >= info.min and values.max() <= info.max):
+                enc["dtype"] = "int32"
+        if name in out.coords or name in out.dims:
+            enc["_FillValue"] = None
+        if enc:
+            encoding[str(name)] = enc
+    return out, encoding
 
 
 def read_netcdf(path: str | os.PathLike[str]) -> xr.Dataset:

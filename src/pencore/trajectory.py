@@ -194,7 +194,7 @@ def trajectory_dataset(
             "n_steps": int(n - 1),
             "wall_time_s": float(wall),
             "pencore_version": __version__,
-            "Conventions": "CF-1.10",
+            "Conventions": "CF-1.8",
         },
     )
     return ds
