@@ -8,6 +8,7 @@ NaNs equal); global and per-variable attributes equal except provenance that
 legitimately differs between runs (created_utc, history, git_dirty).
 Exit 0 if identical, 1 with one line per difference otherwise.
 """
+
 from __future__ import annotations
 
 import sys
@@ -48,12 +49,16 @@ def compare_file(fa: Path, fb: Path) -> list[str]:
     with xr.open_dataset(fa, decode_times=False) as a, xr.open_dataset(fb, decode_times=False) as b:
         if not _attrs_equal(a.attrs, b.attrs):
             keys = sorted(set(_attrs(a.attrs)) ^ set(_attrs(b.attrs))) or sorted(
-                k for k in _attrs(a.attrs) if not np.array_equal(np.asarray(a.attrs[k]), np.asarray(b.attrs.get(k)))
+                k
+                for k in _attrs(a.attrs)
+                if not np.array_equal(np.asarray(a.attrs[k]), np.asarray(b.attrs.get(k)))
             )
             diffs.append(f"global attributes differ: {keys}")
         names_a, names_b = set(a.variables), set(b.variables)
         if names_a != names_b:
-            diffs.append(f"variables differ: only A {sorted(names_a - names_b)}, only B {sorted(names_b - names_a)}")
+            diffs.append(
+                f"variables differ: only A {sorted(names_a - names_b)}, only B {sorted(names_b - names_a)}"
+            )
         for name in sorted(names_a & names_b):
             if not _values_equal(a[name], b[name]):
                 diffs.append(f"values of {name!r} differ")
