@@ -57,7 +57,8 @@ def compare_file(fa: Path, fb: Path) -> list[str]:
         names_a, names_b = set(a.variables), set(b.variables)
         if names_a != names_b:
             diffs.append(
-                f"variables differ: only A {sorted(names_a - names_b)}, only B {sorted(names_b - names_a)}"
+                f"variables differ: only A {sorted(names_a - names_b)}, "
+                f"only B {sorted(names_b - names_a)}"
             )
         for name in sorted(names_a & names_b):
             if not _values_equal(a[name], b[name]):
