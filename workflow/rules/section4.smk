@@ -7,8 +7,8 @@
 #                        results/fig15/vci.nc, results/fig18/omega_c.nc
 #   s4_<study>_figure    PNG + PDF from the dataset (restyling does not rerun the solver)
 #   s4_paper_comparison  results/paper_comparison.csv: the paper's numbers beside pencore's
-# Physics in pencore.studies.section4 (from_config, gather, paper_comparison); figures in
-# pencore.plotting_section4. Each rule gets only the config entries it reads (params), so
+# Physics in pencore.studies.{config,comparison} (from_config, gather, paper_comparison); figures in
+# pencore.plotting. Each rule gets only the config entries it reads (params), so
 # editing one study reruns only that study.
 include: "section4_common.smk"
 
