@@ -31,7 +31,7 @@ rule s4_study:
     params:
         kind=lambda wc: "start_height" if wc.name == "start_height" else wc.study,
         config=lambda wc: s4_params("start_height" if wc.name == "start_height" else wc.study),
-        code=PENCORE_CODE,
+        code=PHYSICS_CODE,
     script:
         "../scripts/section4_study.py"
 
@@ -51,7 +51,7 @@ rule s4_part:
     params:
         kind=lambda wc: wc.study,
         config=lambda wc: s4_params(wc.study),
-        code=PENCORE_CODE,
+        code=PHYSICS_CODE,
     script:
         "../scripts/section4_study.py"
 
@@ -74,7 +74,7 @@ rule s4_gather:
     params:
         kind=lambda wc: wc.study,
         config=lambda wc: s4_params(wc.study),
-        code=PENCORE_CODE,
+        code=PHYSICS_CODE,
     script:
         "../scripts/section4_gather.py"
 
@@ -107,6 +107,7 @@ for _kind, (_entry, _dataset) in S4_DATASETS.items():
             "../envs/pencore.yaml"
         params:
             kind=_kind,
+            code=PLOTTING_CODE,
         script:
             "../scripts/section4_figure.py"
 
@@ -136,7 +137,7 @@ rule s4_paper_comparison:
     params:
         yaw_convention=S4["yaw_convention"],
         vci_threshold=S4["fig15"]["threshold_deg"],
-        code=PENCORE_CODE,
+        code=PHYSICS_CODE,
     script:
         "../scripts/section4_compare.py"
 

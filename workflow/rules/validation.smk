@@ -47,7 +47,7 @@ rule table2:
     params:
         study=canonical(VALIDATION["table2"]),
         numerics=canonical(config["numerics"]),
-        code=PENCORE_CODE,
+        code=PHYSICS_CODE,
     script:
         "../scripts/table2.py"
 
@@ -66,7 +66,7 @@ rule fig5:
     params:
         study=canonical(VALIDATION["fig5"]),
         numerics=canonical(config["numerics"]),
-        code=PENCORE_CODE,
+        code=PHYSICS_CODE,
     script:
         "../scripts/fig5.py"
 
@@ -84,7 +84,7 @@ rule verification:
     params:
         study=canonical(VALIDATION["verification"]),
         numerics=canonical(config["numerics"]),
-        code=PENCORE_CODE,
+        code=PHYSICS_CODE,
     script:
         "../scripts/verification.py"
 
@@ -111,6 +111,7 @@ rule table2_figure:
         "../envs/pencore.yaml"
     params:
         kind="table2",
+        code=PLOTTING_CODE,
     script:
         "../scripts/plot.py"
 
@@ -136,6 +137,7 @@ rule fig5_figure:
         "../envs/pencore.yaml"
     params:
         kind="fig5",
+        code=PLOTTING_CODE,
     script:
         "../scripts/plot.py"
 
@@ -161,6 +163,7 @@ rule verification_figure:
         "../envs/pencore.yaml"
     params:
         kind="verification",
+        code=PLOTTING_CODE,
     script:
         "../scripts/plot.py"
 
