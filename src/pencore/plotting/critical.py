@@ -8,7 +8,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from .style import _LCL, _MARKERS, _VI, _c, _pname, new_figure, styled
+from .style import _LCL, _MARKERS, _VI, _c, _pname, convention_label, new_figure, styled
 
 __all__ = ["plot_fig8", "plot_fig12", "plot_fig15", "plot_fig18"]
 
@@ -58,6 +58,29 @@ def _search_errorbars(
 def _jitter(x: np.ndarray, k: int, n: int) -> float:
     span = float(np.ptp(x)) if np.size(x) > 1 else 1.0
     return (k - 0.5 * (n - 1)) * 0.012 * span
+
+
+def _ordered_legend(ax, fig: Figure, order: list[str], ncols: int = 2) -> None:
+    """Legend below the axes (outside the data), entries in ``order``.
+
+    Matplotlib lists plain lines before errorbar containers, whatever the order they were
+    drawn in; this puts them back in the order given (labels not in ``order`` go last).
+    """
+    handles, labels = ax.get_legend_handles_labels()
+    rank = {label: i for i, label in enumerate(order)}
+    pairs = sorted(zip(handles, labels, strict=True), key=lambda hl: rank.get(hl[1], len(rank)))
+    fig.legend(
+        [h for h, _ in pairs],
+        [lab for _, lab in pairs],
+        loc="outside lower center",
+        ncols=ncols,
+        fontsize=7,
+        frameon=False,
+    )
+
+
+_PAPER_FIG18 = r"paper, #2 at 1000 m/s ($20 < \omega_c \leq 25$ rad/s)"
+_SEARCH_LABELS = ["above the search range", "verdict not monotone"]
 
 
 def _legend_search(ax) -> None:
@@ -194,7 +217,7 @@ def plot_fig15(ds: xr.Dataset, threshold: float | None = None) -> Figure:
     ax.set_xlabel(_LCL)
     ax.set_ylabel(r"Critical impact velocity $V_{ci}$ (m/s)")
     ax.set_title(
-        f"normal impact with yaw ({ds.attrs.get('yaw_convention', '?')}); "
+        f"normal impact with yaw ({convention_label(ds.attrs.get('yaw_convention', '?'))}); "
         "unstable: reverses or final deviation > threshold",
         fontsize=9,
     )
@@ -209,8 +232,11 @@ def plot_fig18(ds: xr.Dataset) -> Figure:
     fig = new_figure(6.4, 4.6)
     ax = fig.add_subplot()
     v = ds["velocity"].values
+    order: list[str] = []
     for k, p in enumerate(ds["projectile"].values):
         sub = ds.sel(projectile=p)
+        label = f"{_pname(p)}, $L_c/L$ = {float(sub['lc_over_l']):.3f}"
+        order.append(label)
         _search_errorbars(
             ax,
             v,
@@ -218,7 +244,7 @@ def plot_fig18(ds: xr.Dataset) -> Figure:
             "omega_c",
             _c(k),
             _MARKERS[k % len(_MARKERS)],
-            f"{_pname(p)}, $L_c/L$ = {float(sub['lc_over_l']):.3f}",
+            label,
             _jitter(v, k, ds.sizes["projectile"]),
         )
     ax.errorbar(
@@ -228,8 +254,9 @@ def plot_fig18(ds: xr.Dataset) -> Figure:
         fmt="*",
         ms=11,
         color="k",
-        label="paper, #2 at 1000 m/s (20 < ω_c ≤ 25)",
+        label=_PAPER_FIG18,
     )
+    order += [_PAPER_FIG18, *_SEARCH_LABELS]
     _legend_search(ax)
     ax.set_xlabel(_VI)
     ax.set_ylabel(r"Critical angular velocity $\omega_c$ (rad/s)")
@@ -241,5 +268,5 @@ def plot_fig18(ds: xr.Dataset) -> Figure:
             fontsize=9,
         )
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, frameon=False)
+    _ordered_legend(ax, fig, order)
     return fig

@@ -19,7 +19,20 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-__all__ = ["STYLE", "styled", "new_figure", "save_figure"]
+__all__ = ["STYLE", "styled", "new_figure", "save_figure", "convention_label"]
+
+#: Reader-facing names of the yaw conventions (config names stay out of titles/legends).
+CONVENTION_LABELS = {
+    "axis_tilted": "axis tilted, velocity normal",
+    "velocity_tilted": "velocity tilted, axis normal",
+}
+
+
+def convention_label(convention: object) -> str:
+    """Words for a yaw-convention config name, e.g. ``axis_tilted`` -> "axis tilted, ..."."""
+    c = str(convention)
+    return CONVENTION_LABELS.get(c, c.replace("_", " "))
+
 
 #: The one place for figure style: matplotlib rcParams applied (with
 #: :func:`matplotlib.rc_context`) while a figure is built and while it is saved.
@@ -97,6 +110,7 @@ _COLOURS = [
 
 
 _MARKERS = ["o", "s", "^", "D", "v", "P"]
+_LINESTYLES = ["-", "--", "-.", ":"]
 
 
 def _c(k: int) -> str:

@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import xarray as xr
 from matplotlib.figure import Figure
+from matplotlib.ticker import FuncFormatter
 
-from .style import _c, _finite, _pname, new_figure, styled
+from .style import _c, _finite, _pname, convention_label, new_figure, styled
 
 __all__ = ["plot_fig7", "plot_fig11", "plot_fig13", "plot_fig16", "plot_start_height"]
 
@@ -104,10 +105,13 @@ def plot_fig13(ds: xr.Dataset) -> Figure:
     for k, v in enumerate(ds["velocity"].values):
         for c in ds["convention"].values:
             sub = ds.sel(velocity=v, convention=c)
-            lab = f"$V_i$ = {v:g} m/s, {c}: $\\varphi$ = {float(sub['final_deviation']):.3g}°"
-            _path(ax1, sub, "tip", color=_c(k), ls=styles.get(str(c), "--"), lw=1.2, label=lab)
             y, d = sub["tip_y"].values, sub["deviation_signed"].values
             ok = _finite(y, d)
+            # the legend carries the sign that panel (b) shows (final_deviation is |phi|)
+            sign = -1.0 if ok.any() and d[ok][-1] < 0 else 1.0
+            phi = sign * float(sub["final_deviation"])
+            lab = f"$V_i$ = {v:g} m/s, {convention_label(c)}: $\\varphi$ = {phi:.3g}°"
+            _path(ax1, sub, "tip", color=_c(k), ls=styles.get(str(c), "--"), lw=1.2, label=lab)
             ax2.plot(d[ok], y[ok], color=_c(k), ls=styles.get(str(c), "--"), lw=1.2)
     _surface(ax1)
     ax1.set_xlabel("x (m)")
@@ -121,6 +125,8 @@ def plot_fig13(ds: xr.Dataset) -> Figure:
     ax1.grid(alpha=0.3)
     ax1.legend(fontsize=6.5, frameon=False)
     ax2.set_xscale("symlog", linthresh=0.1)
+    # plain signed numbers: the default symlog labels read "-10^0" for -1
+    ax2.xaxis.set_major_formatter(FuncFormatter(lambda x, _pos: f"{x:g}".replace("-", "\u2212")))
     ax2.set_xlabel(r"deviation from the normal $\varphi$ = 90° + atan(dy/dx) (deg, signed)")
     ax2.set_ylabel("nose-tip y (m)")
     ax2.set_title("(b) solid: axis tilted (velocity normal); dotted: velocity tilted", fontsize=9)

@@ -6,7 +6,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from .style import _LCL, _c, _pname, new_figure, styled
+from .style import _LCL, _LINESTYLES, _MARKERS, _c, _pname, new_figure, styled
 from .trajectories import _path, _surface
 
 __all__ = ["plot_fig9"]
@@ -22,7 +22,19 @@ def plot_fig9(ds: xr.Dataset) -> Figure:
     j0 = int(np.argmin(np.abs(fr - f0)))
     for k, p in enumerate(ds["projectile"].values):
         sub = ds.sel(projectile=p)
-        _path(ax1, sub, "cm", color=_c(k), lw=1.2, label=_pname(p))
+        # the four paths nearly coincide: colour, line style and marker each tell them apart
+        _path(
+            ax1,
+            sub,
+            "cm",
+            color=_c(k),
+            lw=1.2,
+            ls=_LINESTYLES[k % len(_LINESTYLES)],
+            marker=_MARKERS[k % len(_MARKERS)],
+            markevery=(0.1 + 0.05 * k, 0.2),
+            ms=5,
+            label=_pname(p),
+        )
         ax1.plot(
             [float(sub["x_1"][j0]), float(sub["x_2"][j0])],
             [float(sub["y_1"][j0]), float(sub["y_2"][j0])],
@@ -45,8 +57,12 @@ def plot_fig9(ds: xr.Dataset) -> Figure:
         ax2.plot(
             lcl,
             ds["delta_theta"].values[:, j],
-            marker="o" if j == j0 else ".",
-            lw=1.5 if j == j0 else 0.6,
+            # the fractions give nearly the same angles: distinct markers, sizes and styles
+            marker=_MARKERS[j % len(_MARKERS)],
+            ms=9 - 1.5 * j,
+            mfc="none" if j != j0 else None,
+            ls=_LINESTYLES[j % len(_LINESTYLES)],
+            lw=1.5 if j == j0 else 0.9,
             color="k" if j == j0 else _c(j),
             label=f"Points at {f:g} of peak curvature" + (" (primary)" if j == j0 else ""),
         )
