@@ -325,18 +325,24 @@ def test_gather_joins_parts_in_any_order():
 
 # ----------------------------------------------------------------------------- end to end
 
+#: Figure files: the name alone is unique (figNN_ prefix), so report downloads do not clash.
 S4_FIGURES = (
-    "fig7/trajectories",
-    "fig8/vcr",
-    "fig9/turning_angle",
-    "fig11/trajectories",
-    "fig12/vcr_yaw",
-    "fig13/trajectories",
-    "fig15/vci",
-    "fig16/trajectories",
-    "fig16/start_height",
-    "fig18/omega_c",
+    "fig7/fig07_trajectories",
+    "fig8/fig08_vcr",
+    "fig9/fig09_turning_angle",
+    "fig11/fig11_trajectories",
+    "fig12/fig12_vcr_yaw",
+    "fig13/fig13_trajectories",
+    "fig15/fig15_vci",
+    "fig16/fig16_trajectories",
+    "fig16/fig16_start_height",
+    "fig18/fig18_omega_c",
 )
+
+
+def test_figure_file_names_are_unique():
+    names = [f.rsplit("/", 1)[1] for f in S4_FIGURES] + ["table2", "fig5", "verification"]
+    assert len(set(names)) == len(names)
 
 
 def _snakemake(cwd: Path, *args: str, timeout: float = 600) -> subprocess.CompletedProcess:

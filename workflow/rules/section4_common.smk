@@ -64,4 +64,7 @@ def s4_parts(study):
 
 
 def s4_figure_path(study, ext):
-    return S4_DATASETS[study][1].replace(".nc", f".{ext}")
+    """results/<dir>/figNN_<dataset stem>.<ext>: unique file names across the report."""
+    entry, dataset = S4_DATASETS[study]
+    directory, stem = dataset.rsplit("/", 1)
+    return f"{directory}/fig{int(entry[3:]):02d}_{stem.removesuffix('.nc')}.{ext}"
