@@ -35,6 +35,7 @@ PLOTTING_CODE = plotting_source_hash()
 include: "workflow/rules/common.smk"
 include: "workflow/rules/validation.smk"
 include: "workflow/rules/section4.smk"
+include: "workflow/rules/tables.smk"
 include: "workflow/rules/archive.smk"
 
 

@@ -30,9 +30,9 @@ S4_DATASETS = {
     "fig18": ("fig18", "results/fig18/omega_c.nc"),
 }
 S4_FIGURE_TITLES = {
-    "fig7": "Fig. 7 trajectories and slopes",
-    "fig8": "Fig. 8 Vcr vs obliquity",
-    "fig9": "Fig. 9 turning angle vs Lc/L",
+    "fig7": "Fig. 07 trajectories and slopes",
+    "fig8": "Fig. 08 Vcr vs obliquity",
+    "fig9": "Fig. 09 turning angle vs Lc/L",
     "fig11": "Fig. 11 trajectories with yaw",
     "fig12": "Fig. 12 Vcr vs yaw",
     "fig13": "Figs 13-14 small yaw, normal impact",

@@ -23,20 +23,8 @@ rule table2:
     input:
         rows=VALIDATION["table2"]["csv"],
     output:
-        csv=report(
-            "results/validation/table2.csv",
-            caption="../report/table2.rst",
-            category="Validation",
-            subcategory="Table 2 (soil)",
-            labels={"name": "Table 2", "type": "table"},
-        ),
-        selection=report(
-            "results/validation/table2_selection.csv",
-            caption="../report/table2_selection.rst",
-            category="Validation",
-            subcategory="Table 2 (soil)",
-            labels={"name": "Table 2 candidates", "type": "table"},
-        ),
+        csv="results/validation/table2.csv",
+        selection="results/validation/table2_selection.csv",
         nc="results/validation/table2.nc",
     log:
         "results/logs/validation/table2.log",
@@ -97,7 +85,7 @@ rule table2_figure:
         png=report(
             "results/validation/table2.png",
             caption="../report/table2_figure.rst",
-            category="Validation",
+            category="1 Validation (paper Section 3)",
             subcategory="Table 2 (soil)",
             labels={"name": "Table 2", "type": "figure"},
         ),
@@ -123,7 +111,7 @@ rule fig5_figure:
         png=report(
             "results/validation/fig5.png",
             caption="../report/fig5.rst",
-            category="Validation",
+            category="1 Validation (paper Section 3)",
             subcategory="Fig. 5 (concrete, aluminium)",
             labels={"name": "Fig. 5", "type": "figure"},
         ),
@@ -149,7 +137,7 @@ rule verification_figure:
         png=report(
             "results/validation/verification.png",
             caption="../report/verification.rst",
-            category="Verification",
+            category="3 Verification (closed form)",
             subcategory="Closed form, normal impact",
             labels={"name": "Verification", "type": "figure"},
         ),
