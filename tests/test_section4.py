@@ -9,6 +9,7 @@ the reported numbers), so the repository's own ``results/`` is never touched.
 from __future__ import annotations
 
 import json
+import logging
 import math
 import shutil
 import subprocess
@@ -504,3 +505,17 @@ def test_archived_section4_datasets_and_comparison():
     key = "Fig. 13: deviation phi of #4, yaw 0.1 deg, Vi = 280 m/s, axis_tilted (configured)"
     assert float(phi[key]) == pytest.approx(0.163, abs=0.005)
     assert float(phi["Vcr of #2 at 45 deg obliquity (Fig. 7)"]) == pytest.approx(1574, abs=10)
+
+
+def test_find_threshold_logs_progress(caplog):
+    """Long searches report bracket, evaluations and verdicts on pencore.critical."""
+    from pencore.critical import find_threshold
+
+    with caplog.at_level(logging.INFO, logger="pencore.critical"):
+        r = find_threshold(lambda v: v > 3.3, 0.0, 10.0, 0.5, scan=3, name="Vtest")
+    assert r.status == "ok"
+    msgs = [rec.getMessage() for rec in caplog.records if rec.name == "pencore.critical"]
+    assert msgs[0] == "Vtest: search in [0, 10], tol 0.5"
+    assert any(m.startswith("Vtest: evaluation 1 at 0 -> False") for m in msgs)
+    assert len([m for m in msgs if ": evaluation " in m]) == r.n_evals
+    assert msgs[-1].startswith(f"Vtest: ok after {r.n_evals} evaluations")
