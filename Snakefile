@@ -6,6 +6,9 @@
 # Physics lives in the pencore package; rules call it through thin workflow/scripts/.
 from snakemake.utils import min_version, validate
 
+from snakemake.exceptions import WorkflowError
+
+from pencore.studies.config_check import ConfigError, validate_config
 from pencore.studies.sources import physics_source_hash, plotting_source_hash
 
 min_version("9.0")
@@ -14,7 +17,12 @@ min_version("9.0")
 configfile: "config/config.yaml"
 
 
-validate(config, "workflow/schemas/config.schema.yaml")
+# schema (types, signs, defaults), then relations between values; either error is one
+# line with the key path and value (pencore.studies.config_check)
+try:
+    validate_config(config, lambda c: validate(c, "workflow/schemas/config.schema.yaml"))
+except ConfigError as e:
+    raise WorkflowError(str(e)) from None
 
 
 report: "workflow/report/workflow.rst"
