@@ -9,7 +9,7 @@ from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
 from pencore.config_check import ConfigError, check_config, schema_error_message
-from pencore.io import package_source_hash
+from pencore.studies.sources import physics_source_hash, plotting_source_hash
 
 min_version("9.0")
 
@@ -37,15 +37,18 @@ report: "workflow/report/workflow.rst"
 # aggregated datasets to commit under results/archive/ to ARCHIVE_DATASETS (rule archive).
 ALL_TARGETS = []
 ARCHIVE_DATASETS = []
-# SHA-256 of pencore's source, given to every solver rule as params.code: Snakemake's
-# `code` trigger sees only a rule's own script, so without it a change in the physics
-# would not rerun the studies that depend on it.
-PENCORE_CODE = package_source_hash()
+# Hashes of pencore's source as params.code (Snakemake's `code` trigger sees only a rule's
+# own script): solver/study rules get the physics (all but pencore/plotting), figure rules
+# the plotting package; physics changes reach figures through their dataset inputs.
+# See pencore.studies.sources.
+PHYSICS_CODE = physics_source_hash()
+PLOTTING_CODE = plotting_source_hash()
 
 
 include: "workflow/rules/common.smk"
 include: "workflow/rules/validation.smk"
 include: "workflow/rules/section4.smk"
+include: "workflow/rules/tables.smk"
 include: "workflow/rules/archive.smk"
 
 

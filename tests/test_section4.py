@@ -9,6 +9,7 @@ the reported numbers), so the repository's own ``results/`` is never touched.
 from __future__ import annotations
 
 import json
+import logging
 import math
 import shutil
 import subprocess
@@ -25,7 +26,13 @@ import pencore
 from pencore.critical import CriticalResult
 from pencore.io import read_netcdf
 from pencore.library import InputError
-from pencore.studies import section4 as S
+from pencore.studies.common import grid, projectile_coords, start_from_height
+from pencore.studies.comparison import paper_comparison
+from pencore.studies.comparison_rows import _nose_rows
+from pencore.studies.config import from_config, gather, parts_of
+from pencore.studies.fig08_vcr import _search_vars
+from pencore.studies.trajectories import stack_trajectories
+from pencore.studies.trends import trend
 
 REPO = Path(__file__).resolve().parents[1]
 NAN = math.nan
@@ -36,43 +43,43 @@ NAN = math.nan
 
 def test_trend_falls_holds_and_rises_does_not():
     par = [15.0, 30.0, 45.0]
-    down = S.trend([("a", par, [300, 200, 100], [305, 205, 105])], "falls")
+    down = trend([("a", par, [300, 200, 100], [305, 205, 105])], "falls")
     assert (down.verdict, down.n_with, down.n_against) == ("holds", 2, 0)
-    up = S.trend([("a", par, [100, 200, 300], [105, 205, 305])], "falls")
+    up = trend([("a", par, [100, 200, 300], [105, 205, 305])], "falls")
     assert (up.verdict, up.n_with, up.n_against) == ("does not hold", 0, 2)
     assert "a: 15->30" in up.note()
-    assert S.trend([("a", par, [100, 200, 300], [105, 205, 305])], "rises").verdict == "holds"
+    assert trend([("a", par, [100, 200, 300], [105, 205, 305])], "rises").verdict == "holds"
 
 
 def test_trend_mixed_flat_and_order():
     # one step down, one step up: partly
-    mixed = S.trend([("a", [1, 2, 3], [300, 100, 200], [305, 105, 205])], "falls")
+    mixed = trend([("a", [1, 2, 3], [300, 100, 200], [305, 105, 205])], "falls")
     assert mixed.verdict == "partly holds" and (mixed.n_with, mixed.n_against) == (1, 1)
     # overlapping brackets are equal within the tolerance: flat, which does not support
     # the claim on its own
-    flat = S.trend([("a", [1, 2], [100, 102], [105, 107])], "falls")
+    flat = trend([("a", [1, 2], [100, 102], [105, 107])], "falls")
     assert (flat.verdict, flat.n_flat) == ("does not hold", 1)
     # a flat step beside a falling one still holds
-    assert S.trend([("a", [1, 2, 3], [200, 100, 102], [205, 105, 107])]).verdict == "holds"
+    assert trend([("a", [1, 2, 3], [200, 100, 102], [205, 105, 107])]).verdict == "holds"
     # parameters are sorted before comparing
-    unsorted = S.trend([("a", [45, 15, 30], [100, 300, 200], [105, 305, 205])], "falls")
+    unsorted = trend([("a", [45, 15, 30], [100, 300, 200], [105, 305, 205])], "falls")
     assert unsorted.verdict == "holds" and unsorted.n_with == 2
 
 
 def test_trend_open_brackets_from_out_of_range_searches():
     # above_range: lo = top of the range, hi = NaN (no event up to 500)
     line = ("p", [0.50, 0.52, 0.57], [500, 500, 19.5], [NAN, NAN, 20.0])
-    t = S.trend([line], "falls")
+    t = trend([line], "falls")
     # >500 -> >500 cannot be compared; >500 -> 20 falls
     assert (t.verdict, t.n_with, t.n_undetermined) == ("holds", 1, 1)
     # a value rising out of the range is against "falls"
-    t = S.trend([("p", [1, 2], [19.5, 500], [20.0, NAN])], "falls")
+    t = trend([("p", [1, 2], [19.5, 500], [20.0, NAN])], "falls")
     assert t.verdict == "does not hold" and t.n_against == 1
     # unknown (both NaN, e.g. max_iter without bounds) is undetermined
-    t = S.trend([("p", [1, 2], [NAN, 10], [NAN, 11])], "falls")
+    t = trend([("p", [1, 2], [NAN, 10], [NAN, 11])], "falls")
     assert (t.verdict, t.n_undetermined) == ("undetermined", 1)
     with pytest.raises(ValueError):
-        S.trend([], "wobbles")
+        trend([], "wobbles")
 
 
 def _search(values, tol=5.0):
@@ -89,13 +96,13 @@ def _search(values, tol=5.0):
 def _fig8(vcr):
     """Synthetic Fig. 8 dataset on (projectile, obliquity) from an array of Vcr."""
     obl = np.array([15.0, 45.0, 75.0])
-    data = S._search_vars(
+    data = _search_vars(
         _search(vcr), "vcr", "m s-1", "critical reverse velocity", ("projectile", "obliquity")
     )
     return xr.Dataset(
         data,
         coords={
-            **S.projectile_coords(["p2", "p4"]),
+            **projectile_coords(["p2", "p4"]),
             "obliquity": ("obliquity", obl, {"units": "degree"}),
         },
     )
@@ -107,7 +114,7 @@ def _rows(df, start):
 
 def test_comparison_fig8_trends_follow_the_data():
     falls = _fig8(np.array([[3000.0, 1574.0, 600.0], [2100.0, 1100.0, 400.0]]))
-    df = S.paper_comparison(fig8=falls, table3=False)
+    df = paper_comparison(fig8=falls, table3=False)
     assert list(df.columns[:6]) == [
         "quantity",
         "paper_value",
@@ -127,7 +134,7 @@ def test_comparison_fig8_trends_follow_the_data():
     rises = _fig8(np.array([[600.0, 1574.0, 3000.0], [700.0, 2000.0, 3500.0]]))
     got = dict(
         zip(
-            *S.paper_comparison(fig8=rises, table3=False)[["quantity", "pencore_value"]].T.values,
+            *paper_comparison(fig8=rises, table3=False)[["quantity", "pencore_value"]].T.values,
             strict=True,
         )
     )
@@ -135,7 +142,7 @@ def test_comparison_fig8_trends_follow_the_data():
     assert got["Fig. 8: Vcr against Lc/L"] == "does not hold"
     # a search above its range is reported as a bound, not a number
     above = _fig8(np.array([[3000.0, NAN, 600.0], [2100.0, 1100.0, 400.0]]))
-    row = _rows(S.paper_comparison(fig8=above, table3=False), "Vcr of #2").iloc[0]
+    row = _rows(paper_comparison(fig8=above, table3=False), "Vcr of #2").iloc[0]
     assert row["pencore_value"] == "> 4000" and "above_range" in row["note"]
 
 
@@ -149,22 +156,20 @@ def test_comparison_fig9_fig18_and_verdict_rows():
             )
         },
         coords={
-            **S.projectile_coords(["p1", "p2", "p3", "p4"]),
+            **projectile_coords(["p1", "p2", "p3", "p4"]),
             "bracket_fraction": ("bracket_fraction", [0.02, 0.05]),
         },
         attrs={"primary_bracket_fraction": 0.05},
     )
-    df = S.paper_comparison(fig9=fig9, table3=False)
+    df = paper_comparison(fig9=fig9, table3=False)
     assert df["pencore_value"].tolist() == ["holds"]
     fig9["delta_theta"] = fig9["delta_theta"][::-1].assign_coords(
         projectile=fig9["projectile"], lc_over_l=fig9["lc_over_l"]
     )
-    assert S.paper_comparison(fig9=fig9, table3=False)["pencore_value"].tolist() == [
-        "does not hold"
-    ]
+    assert paper_comparison(fig9=fig9, table3=False)["pencore_value"].tolist() == ["does not hold"]
 
     # Fig. 18: p2 never turns back in range, p4 falls with Vi
-    data = S._search_vars(
+    data = _search_vars(
         _search(np.array([[NAN, NAN], [62.0, 20.0]])),
         "omega_c",
         "rad s-1",
@@ -173,9 +178,9 @@ def test_comparison_fig9_fig18_and_verdict_rows():
     )
     fig18 = xr.Dataset(
         data,
-        coords={**S.projectile_coords(["p2", "p4"]), "velocity": ("velocity", [500.0, 1000.0])},
+        coords={**projectile_coords(["p2", "p4"]), "velocity": ("velocity", [500.0, 1000.0])},
     )
-    df = S.paper_comparison(fig18=fig18, table3=False)
+    df = paper_comparison(fig18=fig18, table3=False)
     got = dict(zip(df["quantity"], df["pencore_value"], strict=True))
     assert got["omega_c of #2 at 1000 m/s (Figs 16-17)"] == "> 4000"
     assert got["Fig. 18: omega_c against impact velocity"] == "holds"
@@ -189,7 +194,7 @@ def test_comparison_fig9_fig18_and_verdict_rows():
         },
         coords={"velocity": [1641.0, 1650.0, 1700.0]},
     )
-    df = S.paper_comparison(fig7=fig7, table3=False)
+    df = paper_comparison(fig7=fig7, table3=False)
     verdicts = df[df["kind"] == "verdict"].set_index("quantity")["difference"]
     assert verdicts.str.contains("1641").index.size == 3
     assert verdicts[verdicts.index.str.contains("1641")].item() == "differs"
@@ -203,23 +208,23 @@ def test_comparison_nose_direction_statements():
         [[["+x", "+x", "-x"], ["+x", "+x", "+x"]], [["+x", "+x", "-x"], ["+x", "+x", "-x"]]],
         dtype=object,
     )
-    data = S._search_vars(_search(np.full((2, 2, 3), 1000.0)), "vcr", "m s-1", "Vcr", dims)
+    data = _search_vars(_search(np.full((2, 2, 3), 1000.0)), "vcr", "m s-1", "Vcr", dims)
     data["nose_direction"] = (dims, nd)
     ds = xr.Dataset(
         data,
         coords={
-            **S.projectile_coords(["p2", "p4"]),
+            **projectile_coords(["p2", "p4"]),
             "obliquity": ("obliquity", [30.0, 60.0]),
             "yaw": ("yaw", yaw),
         },
     )
-    got = {r["quantity"]: r["pencore_value"] for r in S._nose_rows(ds)}
+    got = {r["quantity"]: r["pencore_value"] for r in _nose_rows(ds)}
     assert got["Fig. 12: nose points +x at Vcr for every negative yaw"] == "yes"
     assert got["Fig. 12: flip to -x more likely at 30 than 60 deg"] == "yes"  # 2 vs 1
     assert got["Fig. 12: flip to -x more likely for larger Lc/L (p4 than p2)"] == "yes"
     assert got["Fig. 12: the flip to -x happens only for yaw > 1 deg"] == "yes"
     ds["nose_direction"][0, 0, 0] = "-x"  # a negative yaw that flips
-    got = {r["quantity"]: r["pencore_value"] for r in S._nose_rows(ds)}
+    got = {r["quantity"]: r["pencore_value"] for r in _nose_rows(ds)}
     assert got["Fig. 12: nose points +x at Vcr for every negative yaw"] == "no"
     assert got["Fig. 12: the flip to -x happens only for yaw > 1 deg"] == "no"
 
@@ -238,7 +243,7 @@ def test_comparison_table2_and_table3_rows():
             "depth_measure": ["path_length"],
         }
     )
-    df = S.paper_comparison(table2=t2)
+    df = paper_comparison(table2=t2)
     row = _rows(df, "Table 2 test 2").iloc[0]
     assert row["difference"] == pytest.approx(-0.10) and row["units"] == "m"
     t3 = _rows(df, "Table 3")
@@ -251,23 +256,23 @@ def test_comparison_table2_and_table3_rows():
 
 
 def test_grid_start_and_parts():
-    np.testing.assert_allclose(S.grid(15, 75, 7.5), np.arange(15, 75.1, 7.5))
-    assert S.grid(-4, 4, 1).tolist() == [-4, -3, -2, -1, 0, 1, 2, 3, 4]
+    np.testing.assert_allclose(grid(15, 75, 7.5), np.arange(15, 75.1, 7.5))
+    assert grid(-4, 4, 1).tolist() == [-4, -3, -2, -1, 0, 1, 2, 3, 4]
     with pytest.raises(InputError):
-        S.grid(1, 0, 1)
-    assert S.start_from_height(0.0) is None
-    assert S.start_from_height(0.5) == (0.0, 0.5, 0.0)
+        grid(1, 0, 1)
+    assert start_from_height(0.0) is None
+    assert start_from_height(0.5) == (0.0, 0.5, 0.0)
     with pytest.raises(InputError):
-        S.start_from_height(-1)
+        start_from_height(-1)
     cfg = {"projectiles": ["p2", "p4"], "obliquity_deg": [30.0, 60.0]}
-    assert S.parts_of("fig12", cfg) == [
+    assert parts_of("fig12", cfg) == [
         {"projectile": p, "obliquity": o} for p in ("p2", "p4") for o in (30.0, 60.0)
     ]
-    assert S.parts_of("fig8", cfg) == [{"projectile": "p2"}, {"projectile": "p4"}]
+    assert parts_of("fig8", cfg) == [{"projectile": "p2"}, {"projectile": "p4"}]
     with pytest.raises(InputError):
-        S.from_config("fig99", {}, {})
+        from_config("fig99", {}, {})
     with pytest.raises(InputError, match="projectile"):
-        S.from_config("fig8", {}, {})
+        from_config("fig8", {}, {})
 
 
 def test_stack_trajectories_shared_axis():
@@ -276,7 +281,7 @@ def test_stack_trajectories_shared_axis():
         (i,): pencore.simulate("p2", "soil", v, 45.0, prepared=pr)
         for i, v in enumerate((300.0, 600.0))
     }
-    ds = S.stack_trajectories(
+    ds = stack_trajectories(
         runs, {"velocity": (np.array([300.0, 600.0]), {"units": "m s-1"})}, n_time=80
     )
     assert ds["tip_x"].dims == ("velocity", "time")
@@ -295,7 +300,7 @@ def test_stack_trajectories_shared_axis():
 
 def test_gather_joins_parts_in_any_order():
     def part(p, o):
-        data = S._search_vars(
+        data = _search_vars(
             _search(np.array([[[1000.0 + o]]])),
             "vcr",
             "m s-1",
@@ -305,13 +310,13 @@ def test_gather_joins_parts_in_any_order():
         return xr.Dataset(
             data,
             coords={
-                **S.projectile_coords([p]),
+                **projectile_coords([p]),
                 "obliquity": ("obliquity", [o]),
                 "yaw": ("yaw", [0.0]),
             },
         )
 
-    ds = S.gather("fig12", [part("p4", 60.0), part("p2", 60.0), part("p4", 30.0), part("p2", 30.0)])
+    ds = gather("fig12", [part("p4", 60.0), part("p2", 60.0), part("p4", 30.0), part("p2", 30.0)])
     assert ds["vcr"].dims == ("projectile", "obliquity", "yaw")
     assert ds["projectile"].values.tolist() == ["p4", "p2"]
     assert ds["obliquity"].values.tolist() == [30.0, 60.0]
@@ -321,18 +326,24 @@ def test_gather_joins_parts_in_any_order():
 
 # ----------------------------------------------------------------------------- end to end
 
+#: Figure files: the name alone is unique (figNN_ prefix), so report downloads do not clash.
 S4_FIGURES = (
-    "fig7/trajectories",
-    "fig8/vcr",
-    "fig9/turning_angle",
-    "fig11/trajectories",
-    "fig12/vcr_yaw",
-    "fig13/trajectories",
-    "fig15/vci",
-    "fig16/trajectories",
-    "fig16/start_height",
-    "fig18/omega_c",
+    "fig7/fig07_trajectories",
+    "fig8/fig08_vcr",
+    "fig9/fig09_turning_angle",
+    "fig11/fig11_trajectories",
+    "fig12/fig12_vcr_yaw",
+    "fig13/fig13_trajectories",
+    "fig15/fig15_vci",
+    "fig16/fig16_trajectories",
+    "fig16/fig16_start_height",
+    "fig18/fig18_omega_c",
 )
+
+
+def test_figure_file_names_are_unique():
+    names = [f.rsplit("/", 1)[1] for f in S4_FIGURES] + ["table2", "fig5", "verification"]
+    assert len(set(names)) == len(names)
 
 
 def _snakemake(cwd: Path, *args: str, timeout: float = 600) -> subprocess.CompletedProcess:
@@ -466,7 +477,7 @@ def test_archived_fig8_contract_and_bracket_is_real():
     assert ds["vcr"].dims == ("projectile", "obliquity")
     assert ds["vcr"].attrs["units"] == "m s-1"
     assert ds["projectile"].values.tolist() == ["p1", "p2", "p3", "p4"]
-    np.testing.assert_allclose(ds["obliquity"], S.grid(15, 75, 7.5))
+    np.testing.assert_allclose(ds["obliquity"], grid(15, 75, 7.5))
     assert ds["obliquity"].attrs["units"] == "degree"
     ok = ds["status"] == "ok"
     assert ((ds["vcr_hi"] - ds["vcr_lo"]).where(ok) <= 5.0 + 1e-9).all()
@@ -494,3 +505,17 @@ def test_archived_section4_datasets_and_comparison():
     key = "Fig. 13: deviation phi of #4, yaw 0.1 deg, Vi = 280 m/s, axis_tilted (configured)"
     assert float(phi[key]) == pytest.approx(0.163, abs=0.005)
     assert float(phi["Vcr of #2 at 45 deg obliquity (Fig. 7)"]) == pytest.approx(1574, abs=10)
+
+
+def test_find_threshold_logs_progress(caplog):
+    """Long searches report bracket, evaluations and verdicts on pencore.critical."""
+    from pencore.critical import find_threshold
+
+    with caplog.at_level(logging.INFO, logger="pencore.critical"):
+        r = find_threshold(lambda v: v > 3.3, 0.0, 10.0, 0.5, scan=3, name="Vtest")
+    assert r.status == "ok"
+    msgs = [rec.getMessage() for rec in caplog.records if rec.name == "pencore.critical"]
+    assert msgs[0] == "Vtest: search in [0, 10], tol 0.5"
+    assert any(m.startswith("Vtest: evaluation 1 at 0 -> False") for m in msgs)
+    assert len([m for m in msgs if ": evaluation " in m]) == r.n_evals
+    assert msgs[-1].startswith(f"Vtest: ok after {r.n_evals} evaluations")

@@ -8,6 +8,8 @@ repository's own ``results/`` is never touched.
 from __future__ import annotations
 
 import json
+import os
+import re
 import shutil
 import subprocess
 import sys
@@ -339,6 +341,54 @@ def test_e2e_rerun_is_targeted(e2e):
     assert "rule verification:" in out and "params have changed" in out
     for other in ("table2", "fig5", "table2_figure", "fig5_figure"):
         assert f"rule {other}:" not in out
+
+
+def _planned_rules(out: str) -> set[str]:
+    return set(re.findall(r"^(?:local)?rule (\w+):", out, flags=re.M))
+
+
+def _dry_run_with_src(wd: Path, src: Path) -> set[str]:
+    env = {**os.environ, "PYTHONPATH": str(src)}
+    r = subprocess.run(
+        [sys.executable, "-m", "snakemake", "-n", "--cores", "1"]
+        + ["--configfile", ".test/config.yaml"],
+        cwd=wd,
+        capture_output=True,
+        text=True,
+        timeout=600,
+        env=env,
+    )
+    assert r.returncode == 0, r.stderr[-3000:]
+    return _planned_rules(r.stdout + r.stderr)
+
+
+@pytest.mark.slow
+def test_e2e_rerun_scope_plotting_vs_physics(e2e, tmp_path):
+    """A plotting edit replots only; a physics edit reruns the solver rules."""
+    src = tmp_path / "src"
+    shutil.copytree(
+        REPO / "src" / "pencore", src / "pencore", ignore=shutil.ignore_patterns("__pycache__")
+    )
+    assert _dry_run_with_src(e2e, src) == set()  # same content, same hashes
+
+    style = src / "pencore" / "plotting" / "style.py"
+    original = style.read_text()
+    style.write_text(original + "\n# a comment\n")
+    planned = _planned_rules_nonempty(_dry_run_with_src(e2e, src))
+    # figure and HTML-table rules (both render with pencore.plotting), and the target rule
+    assert all(n.endswith(("_figure", "_html")) or n == "all" for n in planned), planned
+    assert {"table2_figure", "fig5_figure", "verification_figure"} <= planned
+    style.write_text(original)
+
+    physics = src / "pencore" / "studies" / "common.py"
+    physics.write_text(physics.read_text() + "\n# a comment\n")
+    planned = _planned_rules_nonempty(_dry_run_with_src(e2e, src))
+    assert {"table2", "fig5", "verification", "s4_study", "s4_part"} <= planned, planned
+
+
+def _planned_rules_nonempty(planned: set[str]) -> set[str]:
+    assert planned, "the dry run planned nothing"
+    return planned
 
 
 @pytest.mark.slow

@@ -22,6 +22,7 @@ the evidence behind each number.
 
 from __future__ import annotations
 
+import logging
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, fields
@@ -32,6 +33,10 @@ import numpy as np
 from .analysis import DEFAULT_SPEED_FRACTION, final_deviation
 from .library import InputError
 from .solver import Numerics, prepare, simulate
+
+#: Progress of the searches (bracket, evaluations, verdicts) at INFO; the workflow
+#: scripts route it to the rule's log file.
+log = logging.getLogger("pencore.critical")
 
 __all__ = [
     "VELOCITY_TOL",
@@ -129,8 +134,12 @@ def find_threshold(
     *,
     max_iter: int = 60,
     scan: int | None = None,
+    name: str = "threshold",
 ) -> CriticalResult:
     """Lowest value in ``[lo, hi]`` where ``verdict`` switches from False to True.
+
+    Progress (the bracket, each evaluation and its verdict, the outcome) is logged at
+    INFO through ``logging.getLogger("pencore.critical")``, prefixed with ``name``.
 
     Parameters
     ----------
@@ -152,6 +161,8 @@ def find_threshold(
         FIRST False -> True transition of the scan is bisected, so the result is the
         lowest threshold found (a flip narrower than the scan spacing can still be
         missed). Default None: only the ends are checked.
+    name : str, optional
+        What is searched (``"Vcr"``, ``"Vci"``, ``"omega_c"``), for the progress log.
 
     Returns
     -------
@@ -175,16 +186,37 @@ def find_threshold(
     seen: dict[float, bool] = {}
     history: list[tuple[float, bool]] = []
 
+    bracket = [float(lo), float(hi)]  # current bracket, for the progress log only
+    log.info("%s: search in [%s, %s], tol %s", name, _fmt(lo), _fmt(hi), _fmt(tol))
+
     def ev(v: float) -> bool:
         v = float(v)
         if v not in seen:
             seen[v] = bool(verdict(v))
             history.append((v, seen[v]))
+            log.info(
+                "%s: evaluation %d at %s -> %s (bracket [%s, %s])",
+                name,
+                len(history),
+                _fmt(v),
+                seen[v],
+                _fmt(bracket[0]),
+                _fmt(bracket[1]),
+            )
         return seen[v]
 
     def result(
         value: float, a: float, b: float, monotone: bool, status: str, message: str
     ) -> CriticalResult:
+        log.info(
+            "%s: %s after %d evaluations, value %s in [%s, %s]",
+            name,
+            status,
+            len(history),
+            _fmt(value),
+            _fmt(a),
+            _fmt(b),
+        )
         return CriticalResult(
             value, a, b, len(history), monotone, status, message, tuple(history), tol
         )
@@ -225,6 +257,7 @@ def find_threshold(
         ]
         first = next(i for i in range(len(grid) - 1) if not verdicts[i] and verdicts[i + 1])
         a, b = float(grid[first]), float(grid[first + 1])
+        bracket[:] = [a, b]
         if any(v1 and not v2 for _, v1, _, v2 in flips):
             monotone = False
             desc = "; ".join(
@@ -251,6 +284,7 @@ def find_threshold(
             b = mid
         else:
             a = mid
+        bracket[:] = [a, b]
         n_iter += 1
     value = 0.5 * (a + b)
     if b - a > tol:
@@ -345,7 +379,7 @@ def vcr(
     def verdict(v: float) -> bool:
         return _turns_back(pr, sim, v, obliquity, yaw, omega)
 
-    return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan)
+    return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="Vcr")
 
 
 def omega_c(
@@ -375,7 +409,7 @@ def omega_c(
     def verdict(w: float) -> bool:
         return _turns_back(pr, sim, velocity, obliquity, yaw, w)
 
-    return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan)
+    return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="omega_c")
 
 
 def normal_impact_angles(yaw: float, convention: str = "axis_tilted") -> tuple[float, float]:
@@ -468,4 +502,4 @@ def vci(
             return True
         return bool(final_deviation(ds, fraction) > threshold_deg)
 
-    return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan)
+    return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="Vci")

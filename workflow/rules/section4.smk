@@ -7,8 +7,8 @@
 #                        results/fig15/vci.nc, results/fig18/omega_c.nc
 #   s4_<study>_figure    PNG + PDF from the dataset (restyling does not rerun the solver)
 #   s4_paper_comparison  results/paper_comparison.csv: the paper's numbers beside pencore's
-# Physics in pencore.studies.section4 (from_config, gather, paper_comparison); figures in
-# pencore.plotting_section4. Each rule gets only the config entries it reads (params), so
+# Physics in pencore.studies.{config,comparison} (from_config, gather, paper_comparison); figures in
+# pencore.plotting. Each rule gets only the config entries it reads (params), so
 # editing one study reruns only that study.
 include: "section4_common.smk"
 
@@ -31,7 +31,7 @@ rule s4_study:
     params:
         kind=lambda wc: "start_height" if wc.name == "start_height" else wc.study,
         config=lambda wc: s4_params("start_height" if wc.name == "start_height" else wc.study),
-        code=PENCORE_CODE,
+        code=PHYSICS_CODE,
     script:
         "../scripts/section4_study.py"
 
@@ -51,7 +51,7 @@ rule s4_part:
     params:
         kind=lambda wc: wc.study,
         config=lambda wc: s4_params(wc.study),
-        code=PENCORE_CODE,
+        code=PHYSICS_CODE,
     script:
         "../scripts/section4_study.py"
 
@@ -74,7 +74,7 @@ rule s4_gather:
     params:
         kind=lambda wc: wc.study,
         config=lambda wc: s4_params(wc.study),
-        code=PENCORE_CODE,
+        code=PHYSICS_CODE,
     script:
         "../scripts/section4_gather.py"
 
@@ -93,7 +93,7 @@ for _kind, (_entry, _dataset) in S4_DATASETS.items():
             png=report(
                 s4_figure_path(_kind, "png"),
                 caption=f"../report/section4_{_kind}.rst",
-                category="Section 4",
+                category="2 Section 4 (Figs 7-18)",
                 subcategory=S4_FIGURE_TITLES[_kind],
                 labels={"name": S4_FIGURE_TITLES[_kind], "type": "figure"},
             ),
@@ -107,6 +107,7 @@ for _kind, (_entry, _dataset) in S4_DATASETS.items():
             "../envs/pencore.yaml"
         params:
             kind=_kind,
+            code=PLOTTING_CODE,
         script:
             "../scripts/section4_figure.py"
 
@@ -119,13 +120,7 @@ rule s4_paper_comparison:
         **{kind: dataset for kind, (_, dataset) in S4_DATASETS.items()},
         table2="results/validation/table2.csv",
     output:
-        csv=report(
-            "results/paper_comparison.csv",
-            caption="../report/paper_comparison.rst",
-            category="Section 4",
-            subcategory="Comparison with the paper",
-            labels={"name": "paper comparison", "type": "table"},
-        ),
+        csv="results/paper_comparison.csv",
     log:
         "results/logs/section4/paper_comparison.log",
     benchmark:
@@ -136,7 +131,7 @@ rule s4_paper_comparison:
     params:
         yaw_convention=S4["yaw_convention"],
         vci_threshold=S4["fig15"]["threshold_deg"],
-        code=PENCORE_CODE,
+        code=PHYSICS_CODE,
     script:
         "../scripts/section4_compare.py"
 

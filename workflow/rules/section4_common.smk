@@ -1,5 +1,5 @@
 # Configuration helpers of the Section 4 rules (workflow/rules/section4.smk); no rules here.
-from pencore.studies.section4 import parts_of
+from pencore.studies.config import parts_of
 
 S4 = config["section4"]
 
@@ -30,9 +30,9 @@ S4_DATASETS = {
     "fig18": ("fig18", "results/fig18/omega_c.nc"),
 }
 S4_FIGURE_TITLES = {
-    "fig7": "Fig. 7 trajectories and slopes",
-    "fig8": "Fig. 8 Vcr vs obliquity",
-    "fig9": "Fig. 9 turning angle vs Lc/L",
+    "fig7": "Fig. 07 trajectories and slopes",
+    "fig8": "Fig. 08 Vcr vs obliquity",
+    "fig9": "Fig. 09 turning angle vs Lc/L",
     "fig11": "Fig. 11 trajectories with yaw",
     "fig12": "Fig. 12 Vcr vs yaw",
     "fig13": "Figs 13-14 small yaw, normal impact",
@@ -64,4 +64,7 @@ def s4_parts(study):
 
 
 def s4_figure_path(study, ext):
-    return S4_DATASETS[study][1].replace(".nc", f".{ext}")
+    """results/<dir>/figNN_<dataset stem>.<ext>: unique file names across the report."""
+    entry, dataset = S4_DATASETS[study]
+    directory, stem = dataset.rsplit("/", 1)
+    return f"{directory}/fig{int(entry[3:]):02d}_{stem.removesuffix('.nc')}.{ext}"

@@ -23,20 +23,8 @@ rule table2:
     input:
         rows=VALIDATION["table2"]["csv"],
     output:
-        csv=report(
-            "results/validation/table2.csv",
-            caption="../report/table2.rst",
-            category="Validation",
-            subcategory="Table 2 (soil)",
-            labels={"name": "Table 2", "type": "table"},
-        ),
-        selection=report(
-            "results/validation/table2_selection.csv",
-            caption="../report/table2_selection.rst",
-            category="Validation",
-            subcategory="Table 2 (soil)",
-            labels={"name": "Table 2 candidates", "type": "table"},
-        ),
+        csv="results/validation/table2.csv",
+        selection="results/validation/table2_selection.csv",
         nc="results/validation/table2.nc",
     log:
         "results/logs/validation/table2.log",
@@ -47,7 +35,7 @@ rule table2:
     params:
         study=canonical(VALIDATION["table2"]),
         numerics=canonical(config["numerics"]),
-        code=PENCORE_CODE,
+        code=PHYSICS_CODE,
     script:
         "../scripts/table2.py"
 
@@ -66,7 +54,7 @@ rule fig5:
     params:
         study=canonical(VALIDATION["fig5"]),
         numerics=canonical(config["numerics"]),
-        code=PENCORE_CODE,
+        code=PHYSICS_CODE,
     script:
         "../scripts/fig5.py"
 
@@ -84,7 +72,7 @@ rule verification:
     params:
         study=canonical(VALIDATION["verification"]),
         numerics=canonical(config["numerics"]),
-        code=PENCORE_CODE,
+        code=PHYSICS_CODE,
     script:
         "../scripts/verification.py"
 
@@ -97,7 +85,7 @@ rule table2_figure:
         png=report(
             "results/validation/table2.png",
             caption="../report/table2_figure.rst",
-            category="Validation",
+            category="1 Validation (paper Section 3)",
             subcategory="Table 2 (soil)",
             labels={"name": "Table 2", "type": "figure"},
         ),
@@ -111,6 +99,7 @@ rule table2_figure:
         "../envs/pencore.yaml"
     params:
         kind="table2",
+        code=PLOTTING_CODE,
     script:
         "../scripts/plot.py"
 
@@ -122,7 +111,7 @@ rule fig5_figure:
         png=report(
             "results/validation/fig5.png",
             caption="../report/fig5.rst",
-            category="Validation",
+            category="1 Validation (paper Section 3)",
             subcategory="Fig. 5 (concrete, aluminium)",
             labels={"name": "Fig. 5", "type": "figure"},
         ),
@@ -136,6 +125,7 @@ rule fig5_figure:
         "../envs/pencore.yaml"
     params:
         kind="fig5",
+        code=PLOTTING_CODE,
     script:
         "../scripts/plot.py"
 
@@ -147,7 +137,7 @@ rule verification_figure:
         png=report(
             "results/validation/verification.png",
             caption="../report/verification.rst",
-            category="Verification",
+            category="3 Verification (closed form)",
             subcategory="Closed form, normal impact",
             labels={"name": "Verification", "type": "figure"},
         ),
@@ -161,6 +151,7 @@ rule verification_figure:
         "../envs/pencore.yaml"
     params:
         kind="verification",
+        code=PLOTTING_CODE,
     script:
         "../scripts/plot.py"
 

@@ -4,7 +4,7 @@ import pandas as pd
 from _common import start_log
 
 from pencore.io import read_netcdf
-from pencore.studies.section4 import paper_comparison
+from pencore.studies.comparison import paper_comparison
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], "paper_comparison")

@@ -1,9 +1,9 @@
-"""Rules s4_<study>_figure: dataset -> pencore.plotting_section4 -> PNG and PDF."""
+"""Rules s4_<study>_figure: dataset -> pencore.plotting.PLOTS -> PNG and PDF."""
 
 from _common import start_log
 
 from pencore.io import read_netcdf
-from pencore.plotting_section4 import PLOTS, save_figure
+from pencore.plotting import PLOTS, save_figure
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], f"plot_{smk.params.kind}")

@@ -3,7 +3,7 @@
 from _common import start_log
 
 from pencore.io import read_netcdf, write_netcdf
-from pencore.studies.section4 import gather
+from pencore.studies.config import gather
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 kind = smk.params.kind

@@ -1,6 +1,6 @@
 """Rules s4_study and s4_part: one Section 4 study (or one part of a split study).
 
-Thin adapter to pencore.studies.section4.from_config; the study is params.kind, the
+Thin adapter to pencore.studies.config.from_config; the study is params.kind, the
 part (if any) comes from the output's `part` wildcard: `p2` or `p2_30` (projectile,
 obliquity in degrees).
 """
@@ -10,7 +10,7 @@ import time
 from _common import start_log
 
 from pencore.io import write_netcdf
-from pencore.studies.section4 import from_config
+from pencore.studies.config import from_config
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 kind = smk.params.kind

@@ -299,7 +299,7 @@ def table2(
             "selection_rule": rule,
             "candidate_measures": ",".join(measures),
             "numerics_json": json.dumps(asdict(num), sort_keys=True),
-            "Conventions": "CF-1.10",
+            "Conventions": "CF-1.8",
         },
     )
     if "source" in rows.columns:
@@ -467,7 +467,7 @@ def _depth_grid(
             ),
         },
         attrs={
-            "Conventions": "CF-1.10",
+            "Conventions": "CF-1.8",
             "numerics_json": json.dumps(asdict(numerics), sort_keys=True),
         },
     )

@@ -1,67 +1,26 @@
-"""Figures of the studies (matplotlib, Agg canvas, PNG + PDF).
+"""Penetration-depth figures of Section 3: Table 2 bars, Fig. 5 and the verification runs.
 
-Figures are built with the object-oriented API on an Agg canvas, never through pyplot, so
-plotting works headless, keeps no global state, and can run in parallel jobs. Each
-``plot_*`` function takes the study's dataset and returns a
-:class:`matplotlib.figure.Figure`; :func:`save_figure` writes it to one or more files
-(the format follows the suffix).
-
-Notation follows the paper: impact velocity ``V_i``, angle of obliquity ``phi_1``, yaw
-angle ``phi_2``, calibre radius head ``CRH``.
+Notation follows the paper: impact velocity ``V_i``, calibre radius head ``CRH``.
 """
 
 from __future__ import annotations
 
-import os
 from collections.abc import Sequence
-from pathlib import Path
 
 import numpy as np
 import xarray as xr
-from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-__all__ = ["new_figure", "save_figure", "plot_table2", "plot_fig5", "plot_verification"]
+from .style import _DEPTH, _VI, new_figure, styled
+
+__all__ = ["plot_table2", "plot_fig5", "plot_verification"]
+
 
 _TARGET_TITLES = {
     "concrete": "Concrete (Forrestal et al. 1994)",
     "aluminium": "Aluminium 6061-T6511 (Piekutowski et al. 1999)",
     "soil": "Soil (Forrestal & Luk 1992)",
 }
-_VI = r"Impact velocity $V_i$ (m/s)"
-_DEPTH = "Penetration depth (m)"
-
-
-def new_figure(width: float = 6.4, height: float = 4.4) -> Figure:
-    """An empty figure on an Agg canvas (size in inches)."""
-    fig = Figure(figsize=(width, height), layout="constrained")
-    FigureCanvasAgg(fig)
-    return fig
-
-
-def save_figure(fig: Figure, *paths: str | os.PathLike[str], dpi: int = 150) -> list[Path]:
-    """Save ``fig`` to every path (format from the suffix, e.g. ``.png``, ``.pdf``).
-
-    Parent directories are created. Returns the paths written.
-    """
-    if not paths:
-        raise ValueError("save_figure needs at least one path")
-    out = []
-    for p in paths:
-        p = Path(p)
-        p.parent.mkdir(parents=True, exist_ok=True)
-        fig.savefig(p, dpi=dpi, metadata=_metadata(p))
-        out.append(p)
-    return out
-
-
-def _metadata(p: Path) -> dict[str, str | None]:
-    # no creation dates: identical inputs give identical PDFs
-    if p.suffix.lower() == ".pdf":
-        return {"Creator": "pencore", "CreationDate": None}
-    if p.suffix.lower() == ".png":
-        return {"Software": "pencore"}
-    return {}
 
 
 def _crh_label(crh: float) -> str:
@@ -72,9 +31,7 @@ def _crh_label(crh: float) -> str:
     return f"CRH = {crh:g}"
 
 
-# ----------------------------------------------------------------------------- Table 2
-
-
+@styled
 def plot_table2(ds: xr.Dataset) -> Figure:
     """Measured, paper-predicted and pencore depths of the Table 2 soil tests (bars)."""
     fig = new_figure(7.0, 4.2)
@@ -120,9 +77,7 @@ def plot_table2(ds: xr.Dataset) -> Figure:
     return fig
 
 
-# ----------------------------------------------------------------------------- Fig. 5
-
-
+@styled
 def plot_fig5(ds: xr.Dataset) -> Figure:
     """Depth against impact velocity, one panel per target (paper Fig. 5).
 
@@ -202,9 +157,7 @@ def plot_fig5(ds: xr.Dataset) -> Figure:
     return fig
 
 
-# ----------------------------------------------------------------------------- verification
-
-
+@styled
 def plot_verification(ds: xr.Dataset, cases: Sequence[str] | None = None) -> Figure:
     """pencore (symbols) against the closed form (lines), and their relative difference."""
     fig = new_figure(6.4, 6.0)

@@ -1,0 +1,66 @@
+"""Figures of the studies (matplotlib, Agg canvas, PNG + PDF), a module per figure family.
+
+=================  =====================================================================
+module             figures
+=================  =====================================================================
+``style``          :data:`STYLE` (rcParams), :func:`new_figure`, :func:`save_figure`
+``depth``          Section 3: Table 2 bars, Fig. 5, verification runs
+``trajectories``   Figs 7, 11, 13-14, 16-17 and the start-height study
+``critical``       Figs 8, 12 (Vcr), 15 (Vci), 18 (omega_c)
+``turning``        Fig. 9 (turning angle)
+=================  =====================================================================
+
+Each ``plot_*`` function takes the study's dataset and returns a
+:class:`matplotlib.figure.Figure`; :func:`save_figure` writes it (format from the suffix).
+:data:`PLOTS` maps the workflow's figure kinds to the functions.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from matplotlib.figure import Figure
+
+from .critical import plot_fig8, plot_fig12, plot_fig15, plot_fig18
+from .depth import plot_fig5, plot_table2, plot_verification
+from .style import STYLE, new_figure, save_figure, styled
+from .trajectories import plot_fig7, plot_fig11, plot_fig13, plot_fig16, plot_start_height
+from .turning import plot_fig9
+
+__all__ = [
+    "STYLE",
+    "styled",
+    "new_figure",
+    "save_figure",
+    "plot_table2",
+    "plot_fig5",
+    "plot_verification",
+    "plot_fig7",
+    "plot_fig8",
+    "plot_fig9",
+    "plot_fig11",
+    "plot_fig12",
+    "plot_fig13",
+    "plot_fig15",
+    "plot_fig16",
+    "plot_start_height",
+    "plot_fig18",
+    "PLOTS",
+]
+
+#: Figure kind (as used by the workflow) -> plotting function.
+PLOTS: dict[str, Callable[..., Figure]] = {
+    "table2": plot_table2,
+    "fig5": plot_fig5,
+    "verification": plot_verification,
+    "fig7": plot_fig7,
+    "fig8": plot_fig8,
+    "fig9": plot_fig9,
+    "fig11": plot_fig11,
+    "fig12": plot_fig12,
+    "fig13": plot_fig13,
+    "fig15": plot_fig15,
+    "fig16": plot_fig16,
+    "start_height": plot_start_height,
+    "fig18": plot_fig18,
+}

@@ -1,0 +1,159 @@
+"""Shared pieces of the Section 4 studies: the paper's projectiles and numbers, axes,
+start points, and attribute helpers.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Sequence
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from ..library import InputError, get_projectile
+
+__all__ = [
+    "PROJECTILES",
+    "PAPER",
+    "TRAJECTORY_VARIABLES",
+    "projectile_coords",
+    "start_from_height",
+    "grid",
+    "combine",
+]
+
+
+#: The paper's projectiles (Table 3), in order of rising Lc/L.
+PROJECTILES = ("p1", "p2", "p3", "p4")
+
+
+#: Numbers the paper states in Section 4 (provenance ``paper``), and brackets derived from
+#: them (provenance ``derived``: how).
+PAPER: dict[str, Any] = {
+    # Fig. 7 (#2, 45 deg, tip from (-1, 1) m): 1641 does not turn back, 1650 and 1700 do
+    "fig7_reverses": {1641.0: False, 1650.0: True, 1700.0: True},
+    "fig7_x_linear_m": 7.0,  # "curvilinear -> linear at x approx 7 m" for 1641-1700
+    # derived from fig7_reverses: Vcr of #2 at 45 deg is in (1641, 1650]
+    "vcr_p2_45_bracket": (1641.0, 1650.0),
+    # Figs 13-14 (#4, yaw 0.1 deg, normal impact): deviation phi (deg)
+    "fig13_phi_deg": {280.0: 0.16, 1000.0: 0.24},
+    "fig13_large_at": 2200.0,
+    # Figs 16-17 (#2, 1000 m/s, normal impact): deviation alpha (deg), reversal at 25
+    "fig16_alpha_deg": {5.0: 0.14, 20.0: 2.86},
+    "fig16_reverses_at": 25.0,
+    # derived: omega_c of #2 at 1000 m/s is in (20, 25] rad/s
+    "omega_c_p2_1000_bracket": (20.0, 25.0),
+    # Table 3
+    "table3": {"p1": (19.1, 0.504), "p2": (23.1, 0.525), "p3": (32.8, 0.553), "p4": (45.3, 0.571)},
+}
+
+
+#: Time histories kept in trajectory datasets (all written by :func:`pencore.simulate`,
+#: plus ``deviation_signed``).
+TRAJECTORY_VARIABLES = (
+    "tip_x",
+    "tip_y",
+    "cm_x",
+    "cm_y",
+    "vel_x",
+    "vel_y",
+    "slope",
+    "deviation",
+    "deviation_signed",
+    "theta",
+    "axis_x",
+    "speed",
+)
+
+
+_STR = object  # dtype of string variables (netCDF variable-length strings)
+
+
+def _attrs(units: str, long_name: str, **extra: Any) -> dict[str, Any]:
+    return {"units": units, "long_name": long_name, **extra}
+
+
+def projectile_coords(projectiles: Sequence[str]) -> dict[str, Any]:
+    """Coordinates on dimension ``projectile``: names, ``lc_over_l`` and ``mass``."""
+    names = list(projectiles)
+    if not names:
+        raise InputError("need at least one projectile")
+    lcl, mass = [], []
+    for p in names:
+        proj = get_projectile(p)
+        mp = proj.mass_properties()
+        lcl.append(mp.lc / proj.length)
+        mass.append(mp.mass)
+    return {
+        "projectile": (
+            "projectile",
+            np.array(names, dtype=_STR),
+            {"long_name": "projectile (paper Table 3)", "units": "1"},
+        ),
+        "lc_over_l": (
+            "projectile",
+            np.array(lcl),
+            _attrs("1", "nose tip to centre of mass over total length, L_c/L (pencore geometry)"),
+        ),
+        "mass": ("projectile", np.array(mass), _attrs("kg", "projectile mass")),
+    }
+
+
+def start_from_height(height: float) -> tuple[float, float, float] | None:
+    """Nose-tip start for a normal impact whose tip starts ``height`` (m) above y = 0.
+
+    ``0`` gives ``None``: :func:`pencore.simulate`'s default, the lowest point of the body
+    just touching the surface at x = 0.
+    """
+    h = float(height)
+    if not (math.isfinite(h) and h >= 0.0):
+        raise InputError(f"start height must be >= 0 m, got {height!r}")
+    return None if h == 0.0 else (0.0, h, 0.0)
+
+
+def grid(min: float, max: float, step: float) -> np.ndarray:
+    """Values from ``min`` to ``max`` inclusive in steps of ``step`` (rounded to 1e-9)."""
+    lo, hi, st = float(min), float(max), float(step)
+    if not (math.isfinite(lo) and math.isfinite(hi) and math.isfinite(st) and st > 0 and hi >= lo):
+        raise InputError(f"grid needs min <= max and step > 0, got {min}, {max}, {step}")
+    n = int(math.floor((hi - lo) / st + 1e-9)) + 1
+    return np.round(lo + st * np.arange(n), 9)
+
+
+def _axis(values: Iterable[float], what: str) -> np.ndarray:
+    v = np.asarray(list(values), dtype=float).ravel()
+    if v.size == 0 or not np.all(np.isfinite(v)):
+        raise InputError(f"{what} must be a non-empty list of numbers, got {list(v)}")
+    if np.unique(v).size != v.size:
+        raise InputError(f"{what} has repeated values: {list(v)}")
+    return v
+
+
+def _start(start: Sequence[float] | None) -> tuple[float, float, float] | None:
+    if start is None:
+        return None
+    s = tuple(float(x) for x in start)
+    if len(s) != 3 or not all(math.isfinite(x) for x in s):
+        raise InputError(f"start must be 3 finite coordinates (m), got {start!r}")
+    return s
+
+
+def _signed_deviation(ds: xr.Dataset) -> np.ndarray:
+    """In-plane velocity angle from -y, positive towards +x, unwrapped (degree)."""
+    return np.degrees(np.unwrap(np.arctan2(ds["vel_x"].values, -ds["vel_y"].values)))
+
+
+def combine(parts: Sequence[xr.Dataset], dim: str = "projectile") -> xr.Dataset:
+    """Concatenate per-job parts of a study along ``dim`` (attributes of the first)."""
+    parts = list(parts)
+    if not parts:
+        raise InputError("nothing to combine")
+    return xr.concat(
+        parts,
+        dim=dim,
+        data_vars="minimal",
+        coords="minimal",
+        compat="override",
+        combine_attrs="override",
+    )

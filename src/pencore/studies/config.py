@@ -1,0 +1,284 @@
+"""From the workflow configuration to studies: which studies exist, how they split into
+job parts, running one part (:func:`from_config`) and joining parts (:func:`gather`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import xarray as xr
+
+from .. import analysis
+from ..critical import OMEGA_TOL, VELOCITY_TOL
+from ..library import InputError
+from ..solver import Numerics
+from . import resolve_numerics
+from .common import combine, grid
+from .fig07_trajectories import fig7
+from .fig08_vcr import fig8, vcr_study
+from .fig09_turning_angle import fig9
+from .fig13_yaw import fig13
+from .fig15_vci import vci_study
+from .fig16_spin import fig16, start_height_study
+from .fig18_omega_c import omega_c_study
+from .trajectories import trajectory_set
+
+__all__ = ["STUDIES", "SPLIT_STUDIES", "parts_of", "from_config", "gather"]
+
+
+#: Studies that :func:`from_config` runs; those in :data:`SPLIT_STUDIES` run per job
+#: part (a projectile, or a projectile and an obliquity) and are joined by :func:`gather`.
+STUDIES = (
+    "fig7",
+    "fig8",
+    "fig9",
+    "fig11",
+    "fig12",
+    "fig13",
+    "fig15",
+    "fig16",
+    "start_height",
+    "fig18",
+)
+
+
+SPLIT_STUDIES = {
+    "fig8": ("projectile",),
+    "fig12": ("projectile", "obliquity"),
+    "fig15": ("projectile",),
+    "fig18": ("projectile",),
+}
+
+
+def _range(d: Mapping[str, Any]) -> tuple[float, float]:
+    lo, hi = float(d["min"]), float(d["max"])
+    if not lo < hi:
+        raise InputError(f"range needs min < max, got {dict(d)}")
+    return lo, hi
+
+
+def _values(v: Any) -> list[float]:
+    """A list of numbers, or a ``{min, max, step}`` grid."""
+    if isinstance(v, Mapping):
+        return [float(x) for x in grid(v["min"], v["max"], v["step"])]
+    return [float(x) for x in v]
+
+
+def parts_of(study: str, cfg: Mapping[str, Any]) -> list[dict[str, Any]]:
+    """Job parts of a split study: ``[{"projectile": "p1"}, ...]`` or with
+    ``"obliquity"`` too (deg), from the study's configuration ``cfg``."""
+    if study not in SPLIT_STUDIES:
+        raise InputError(f"{study!r} is not split into parts")
+    projs = list(cfg["projectiles"])
+    if study == "fig12":
+        return [
+            {"projectile": p, "obliquity": o} for p in projs for o in _values(cfg["obliquity_deg"])
+        ]
+    return [{"projectile": p} for p in projs]
+
+
+def from_config(
+    study: str,
+    cfg: Mapping[str, Any],
+    shared: Mapping[str, Any],
+    numerics: Numerics | Mapping[str, Any] | None = None,
+    *,
+    projectile: str | None = None,
+    obliquity: float | None = None,
+) -> xr.Dataset:
+    """Run one study (or one part of a split study) from its configuration entries.
+
+    Parameters
+    ----------
+    study : str
+        One of :data:`STUDIES`.
+    cfg : mapping
+        The study's entry of the ``section4`` configuration block (keys as in
+        ``config/config.yaml``; units in the key names).
+    shared : mapping
+        The block's shared keys (``target``, ``velocity_tol_m_s``, ``omega_tol_rad_s``,
+        ``scan_points``, ``trajectory_samples``, ``speed_fraction``, ``yaw_convention``,
+        ``start_height_m``); only those the study uses are read.
+    numerics : Numerics or mapping, optional
+        Overrides of pencore's numerical defaults.
+    projectile, obliquity
+        The part of a split study (:data:`SPLIT_STUDIES`) to run.
+    """
+    if study not in STUDIES:
+        raise InputError(f"unknown Section 4 study {study!r}; known: {', '.join(STUDIES)}")
+    if study in SPLIT_STUDIES and projectile is None:
+        raise InputError(f"study {study!r} runs per projectile: give projectile=")
+    target = shared.get("target", "soil")
+    n_time = int(shared.get("trajectory_samples", 500))
+    frac = float(shared.get("speed_fraction", analysis.DEFAULT_SPEED_FRACTION))
+    vtol = float(shared.get("velocity_tol_m_s", VELOCITY_TOL))
+    wtol = float(shared.get("omega_tol_rad_s", OMEGA_TOL))
+    scan = shared.get("scan_points", 9)
+    scan = None if scan is None else int(scan)
+    height = float(shared.get("start_height_m", 0.0))
+    num = resolve_numerics(numerics)
+    start = cfg.get("start_m")
+
+    if study == "fig7":
+        return fig7(
+            cfg["projectile"],
+            target,
+            float(cfg["obliquity_deg"]),
+            _values(cfg["velocities_m_s"]),
+            start=start,
+            numerics=num,
+            n_time=n_time,
+        )
+    if study == "fig8":
+        lo, hi = _range(cfg["velocity_range_m_s"])
+        return fig8(
+            [projectile],
+            _values(cfg["obliquity_deg"]),
+            target=target,
+            lo=lo,
+            hi=hi,
+            tol=vtol,
+            scan=scan,
+            start=start,
+            numerics=num,
+            low_speeds=_values(cfg.get("low_velocities_m_s", [])),
+        )
+    if study == "fig9":
+        return fig9(
+            list(cfg["projectiles"]),
+            target,
+            obliquity=float(cfg["obliquity_deg"]),
+            velocity=float(cfg["velocity_m_s"]),
+            start=start,
+            fractions=_values(cfg["bracket_fractions"]),
+            numerics=num,
+            n_time=n_time,
+        )
+    if study == "fig11":
+        ds = trajectory_set(
+            cfg["projectile"],
+            target,
+            "yaw",
+            _values(cfg["yaw_deg"]),
+            velocity=float(cfg["velocity_m_s"]),
+            obliquity=float(cfg["obliquity_deg"]),
+            start=start,
+            numerics=num,
+            n_time=n_time,
+            speed_fraction=frac,
+        )
+        ds.attrs["title"] = "Paper Fig. 11: trajectories of #4 at 30 deg with yaw -1 and +1"
+        return ds
+    if study == "fig12":
+        if obliquity is None:
+            raise InputError("study 'fig12' runs per (projectile, obliquity): give obliquity=")
+        lo, hi = _range(cfg["velocity_range_m_s"])
+        ds = vcr_study(
+            [projectile],
+            [float(obliquity)],
+            _values(cfg["yaw_deg"]),
+            target=target,
+            lo=lo,
+            hi=hi,
+            tol=vtol,
+            scan=scan,
+            start=start,
+            numerics=num,
+            nose=True,
+            low_speeds=_values(cfg.get("low_velocities_m_s", [])),
+        )
+        ds.attrs["title"] = "Paper Figs 11-12: V_cr against yaw, final nose direction"
+        return ds
+    if study == "fig13":
+        return fig13(
+            cfg["projectile"],
+            target,
+            float(cfg["yaw_deg"]),
+            _values(cfg["velocities_m_s"]),
+            numerics=num,
+            n_time=n_time,
+            speed_fraction=frac,
+        )
+    if study == "fig15":
+        lo, hi = _range(cfg["velocity_range_m_s"])
+        ths = sorted(set(_values(cfg["thresholds_deg"])) | {float(cfg["threshold_deg"])})
+        return vci_study(
+            [projectile],
+            _values(cfg["yaw_deg"]),
+            ths,
+            target=target,
+            convention=shared.get("yaw_convention", "axis_tilted"),
+            lo=lo,
+            hi=hi,
+            tol=vtol,
+            scan=scan,
+            speed_fraction=frac,
+            primary_threshold=float(cfg["threshold_deg"]),
+            numerics=num,
+        )
+    if study == "fig16":
+        return fig16(
+            cfg["projectile"],
+            target,
+            float(cfg["velocity_m_s"]),
+            _values(cfg["omega_rad_s"]),
+            start_height=height,
+            numerics=num,
+            n_time=n_time,
+            speed_fraction=frac,
+        )
+    if study == "start_height":
+        return start_height_study(
+            cfg["projectile"],
+            target,
+            float(cfg["velocity_m_s"]),
+            _values(cfg["omega_rad_s"]),
+            _values(cfg["start_heights_m"]),
+            numerics=num,
+            speed_fraction=frac,
+        )
+    # fig18
+    lo, hi = _range(cfg["omega_range_rad_s"])
+    return omega_c_study(
+        [projectile],
+        _values(cfg["velocities_m_s"]),
+        target=target,
+        lo=lo,
+        hi=hi,
+        tol=wtol,
+        scan=scan,
+        start_height=height,
+        numerics=num,
+    )
+
+
+def gather(study: str, parts: Sequence[xr.Dataset]) -> xr.Dataset:
+    """Join the parts of a split study (:data:`SPLIT_STUDIES`) into one dataset.
+
+    Parts may come in any order; projectiles keep their first-seen order, obliquities are
+    sorted.
+    """
+    if study not in SPLIT_STUDIES:
+        raise InputError(f"{study!r} is not split into parts")
+    parts = list(parts)
+    if not parts:
+        raise InputError("no parts to gather")
+    projs = list(dict.fromkeys(str(p["projectile"].values[0]) for p in parts))
+    by_p: dict[str, list[xr.Dataset]] = {p: [] for p in projs}
+    for p in parts:
+        by_p[str(p["projectile"].values[0])].append(p)
+    rows = []
+    for p in projs:
+        ps = by_p[p]
+        if study == "fig12":
+            ps = sorted(ps, key=lambda d: float(d["obliquity"].values[0]))
+            rows.append(combine(ps, "obliquity") if len(ps) > 1 else ps[0])
+        else:
+            if len(ps) != 1:
+                raise InputError(f"{len(ps)} parts for projectile {p}; expected 1")
+            rows.append(ps[0])
+    out = combine(rows, "projectile") if len(rows) > 1 else rows[0]
+    for k in ("study", "config_json", "config_sha256", "created_utc", "git_commit", "git_dirty"):
+        out.attrs.pop(k, None)
+    return out

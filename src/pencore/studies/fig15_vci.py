@@ -1,0 +1,102 @@
+"""Fig. 15: the critical velocity Vci on (projectile, yaw, deviation threshold)."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from .. import analysis, critical
+from ..critical import VELOCITY_TOL
+from ..library import InputError
+from ..solver import Numerics
+from . import resolve_numerics
+from .common import _attrs, _axis, projectile_coords
+from .fig08_vcr import _numerics_dict, _search_vars
+from .trajectories import _PARAM_ATTRS
+
+__all__ = ["vci_study"]
+
+
+def vci_study(
+    projectiles: Sequence[str],
+    yaws: Sequence[float],
+    thresholds: Sequence[float],
+    *,
+    target: str = "soil",
+    convention: str = "axis_tilted",
+    lo: float = 100.0,
+    hi: float = 4000.0,
+    tol: float = VELOCITY_TOL,
+    scan: int | None = 9,
+    speed_fraction: float = analysis.DEFAULT_SPEED_FRACTION,
+    primary_threshold: float | None = None,
+    numerics: Numerics | Mapping[str, Any] | None = None,
+) -> xr.Dataset:
+    """Critical impact velocity for instability Vci on ``(projectile, yaw, threshold)``.
+
+    Each cell is :func:`pencore.critical.vci`: the lowest normal-impact speed at which a
+    run with the given yaw turns back or ends with a deviation above ``threshold``
+    (deg). The tip starts touching the surface. ``primary_threshold`` (deg; default the
+    middle of ``thresholds``) is the one the figure and the comparison lead with; the
+    others show how Vci moves with the choice.
+    """
+    names = list(projectiles)
+    yw = _axis(yaws, "yaws")
+    th = np.sort(_axis(thresholds, "thresholds"))
+    if primary_threshold is None:
+        primary_threshold = float(th[(th.size - 1) // 2])
+    if not np.any(np.isclose(th, primary_threshold)):
+        raise InputError(
+            f"primary threshold {primary_threshold} is not one of the thresholds {list(th)}"
+        )
+    critical.normal_impact_angles(0.0, convention)
+    num = resolve_numerics(numerics)
+    res = np.empty((len(names), yw.size, th.size), dtype=object)
+    for ip, p in enumerate(names):
+        for iy, y in enumerate(yw):
+            for it, t in enumerate(th):
+                res[ip, iy, it] = critical.vci(
+                    p,
+                    target,
+                    float(y),
+                    lo,
+                    hi,
+                    float(t),
+                    tol,
+                    fraction=speed_fraction,
+                    convention=convention,
+                    scan=scan,
+                    numerics=num,
+                )
+    dims = ("projectile", "yaw", "threshold")
+    data = _search_vars(res, "vci", "m s-1", "critical impact velocity for instability V_ci", dims)
+    return xr.Dataset(
+        data,
+        coords={
+            **projectile_coords(names),
+            "yaw": ("yaw", yw, _PARAM_ATTRS["yaw"]),
+            "threshold": (
+                "threshold",
+                th,
+                _attrs("degree", "final deviation above which a run counts as unstable"),
+            ),
+        },
+        attrs={
+            "title": "Paper Fig. 15: critical impact velocity for instability V_ci",
+            "target": target,
+            "yaw_convention": convention,
+            "primary_threshold_deg": float(primary_threshold),
+            "search_range_m_s": np.array([float(lo), float(hi)]),
+            "tolerance_m_s": float(tol),
+            "scan_points": -1 if scan is None else int(scan),
+            "speed_fraction": float(speed_fraction),
+            "verdict": "reversed, or final deviation (at the last state with speed >= "
+            f"{speed_fraction:g} x impact speed) > threshold",
+            "numerics_json": json.dumps(_numerics_dict(num)),
+            "Conventions": "CF-1.8",
+        },
+    )

@@ -1,0 +1,54 @@
+# CSV tables rendered as HTML pages for the report (a CSV shows only as a download).
+# name -> (csv, caption, category, subcategory, title)
+REPORT_TABLES = {
+    "table2": (
+        "results/validation/table2.csv",
+        "table2.rst",
+        "1 Validation (paper Section 3)",
+        "Table 2 (soil)",
+        "Table 2: soil penetration",
+    ),
+    "table2_selection": (
+        "results/validation/table2_selection.csv",
+        "table2_selection.rst",
+        "1 Validation (paper Section 3)",
+        "Table 2 (soil)",
+        "Table 2: candidate projectiles and depth measures",
+    ),
+    "paper_comparison": (
+        "results/paper_comparison.csv",
+        "paper_comparison.rst",
+        "2 Section 4 (Figs 7-18)",
+        "Comparison with the paper",
+        "Comparison with the paper",
+    ),
+}
+
+
+for _name, (_csv, _caption, _category, _subcategory, _title) in REPORT_TABLES.items():
+
+    rule:
+        name:
+            f"{_name}_html"
+        input:
+            csv=_csv,
+        output:
+            html=report(
+                _csv.replace(".csv", ".html"),
+                caption=f"../report/{_caption}",
+                category=_category,
+                subcategory=_subcategory,
+                labels={"name": _title, "type": "table"},
+            ),
+        log:
+            f"results/logs/tables/{_name}.log",
+        localrule: True
+        conda:
+            "../envs/pencore.yaml"
+        params:
+            title=_title,
+            code=PLOTTING_CODE,
+        script:
+            "../scripts/table_html.py"
+
+    ALL_TARGETS.append(_csv.replace(".csv", ".html"))
