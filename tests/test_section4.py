@@ -9,9 +9,9 @@ the reported numbers), so the repository's own ``results/`` is never touched.
 from __future__ import annotations
 
 import json
-import re
 import logging
 import math
+import re
 import shutil
 import subprocess
 import sys
