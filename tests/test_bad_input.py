@@ -124,10 +124,14 @@ API_OBJECT_CASES = [
     (lambda: pencore.target.Medium("m", "1e6"), "coefficients", "list"),
     (
         lambda: pencore.target.Target(
-            "slab", (pencore.target.Layer(pencore.library.MEDIA["soil"], 1.0),)
+            "slab",
+            (
+                pencore.target.Layer(pencore.library.MEDIA["soil"], 1.0),
+                pencore.target.Layer.gap(0.5),
+            ),
         ),
-        "finite targets",
-        "1.0",
+        "gap must lie between",
+        "layer 1",
     ),
     (
         lambda: pencore.target.Target(
@@ -224,7 +228,9 @@ YAML_CASES = [
     ("t", "thickness: 1.0", "thickness: -1.0", ["thickness", "-1.0"]),
     ("t", "thickness: 1.0", "thickness: 0", ["thickness", "0"]),
     ("t", "thickness: 1.0", "thicknes: 1.0", ["'thicknes'", "did you mean 'thickness'"]),
-    ("t", "  - medium: soil", "  - medium: soil\n    thickness: 1.0", ["finite targets", "1.0"]),
+    ("t", "  - medium: soil", "  - gap: 0.5\n  - medium: soil", ["layer 1", "gap", "between"]),
+    ("t", "  - medium: soil", "  - gap: -0.5\n  - medium: soil", ["thickness", "-0.5"]),
+    ("t", "  - medium: soil", "  - {gap: 0.5, medium: soil}", ["unknown key", "'medium'"]),
     ("t", "  - medium: soil", "  - medium: mud", ["unknown medium", "'mud'"]),
     ("t", "  - medium: soil", "  - 42", ["layer 1", "42"]),
     ("t", "  - medium: soil", "  - thickness: 2.0", ["layer 1", "medium"]),

@@ -47,6 +47,7 @@ from .stepping import (
     CHUNK_STEPS,
     NY,
     OUTCOMES,
+    PERFORATED,
     RUNNING,
     SF_CLEAR,
     SF_T,
@@ -58,6 +59,7 @@ from .stepping import (
     _defer_sigint,
     _normalise,
     _stop_code,
+    perforated,
     speed_of,
 )
 
@@ -184,6 +186,9 @@ def explicit_chunk(
                 if stop_at_reversal:
                     code = 3
                     stop = True
+        if not stop and si[SI_ENTERED] == 1 and perforated(y, rings, bounds):
+            code = PERFORATED
+            stop = True
         if (
             stop
             or n % stride == 0

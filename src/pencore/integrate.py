@@ -24,7 +24,9 @@ preallocated (:func:`pencore.solver.simulate` drives it).
 Stopping: the run ends when, after first contact, the speed falls below ``v_stop``
 (``stopped``), no part of the body is below the surface any more (``exited``), the
 centre-of-mass velocity turns towards the surface while in the target and
-``stop_at_reversal`` is set (``reversed``), or ``t_max`` is reached (``time_limit``).
+``stop_at_reversal`` is set (``reversed``), the whole body is below the rear face of a
+finite target and moving away from it (``perforated``, :func:`pencore.stepping.perforated`),
+or ``t_max`` is reached (``time_limit``).
 It fails with ``step_underflow`` when the step needed for the error tolerance falls below
 ``h_min`` (a stiff or chattering right-hand side, e.g. ``eps = 0``) and with
 ``non_finite`` when the state stops being finite (a runaway).
@@ -46,6 +48,7 @@ from .stepping import (  # noqa: F401 - re-exported: the integrator's public nam
     NON_FINITE,
     NY,
     OUTCOMES,
+    PERFORATED,
     RUNNING,
     SF_CLEAR,
     SF_ERR,
@@ -66,6 +69,7 @@ from .stepping import (  # noqa: F401 - re-exported: the integrator's public nam
     _stalled,
     _stop_code,
     body_reach,
+    perforated,
     speed_of,
 )
 
@@ -330,6 +334,9 @@ def integrate_chunk(
                 if stop_at_reversal:
                     code = 3
                     break
+        if si[SI_ENTERED] == 1 and perforated(y, rings, bounds):
+            code = PERFORATED
+            break
         h = _next_step(h, err)
     sf[SF_T] = t
     sf[SF_H] = h

@@ -345,7 +345,9 @@ def _medium_from(x: Any, what: str) -> Medium:
 def target_from_dict(d: dict[str, Any]) -> Target:
     """Build a target from a mapping: either a single medium or ``layers``.
 
-    The last layer must be semi-infinite (no ``thickness``); unknown keys and values
+    A layer is ``{medium: ..., thickness: ...}`` (no ``thickness``: semi-infinite, last
+    layer only) or an air gap ``{gap: thickness}`` between two layers of a medium. A
+    finite last layer makes a plate that can be perforated. Unknown keys and values
     outside :data:`pencore.validate.LIMITS` raise :class:`InputError`.
     """
     if not isinstance(d, dict):
@@ -361,7 +363,11 @@ def target_from_dict(d: dict[str, Any]) -> Target:
     for k, lay in enumerate(d["layers"]):
         w = f"{what} layer {k}"
         lay = _mapping(lay, w)
-        check_keys(lay, ("thickness", "medium"), w)
+        if "gap" in lay:
+            check_keys(lay, ("gap",), w)
+            layers.append(Layer.gap(_num(lay, "gap", w, "thickness")))
+            continue
+        check_keys(lay, ("thickness", "medium", "gap"), w)
         if "medium" not in lay:
             raise InputError(f"{w}: needs a 'medium' (a name or a mapping)")
         th = _num(lay, "thickness", w) if "thickness" in lay else math.inf

@@ -66,11 +66,14 @@ OUTCOMES = (
     "step_underflow",
     "non_finite",
     "running",
+    "perforated",
 )
 STEP_LIMIT = 4
 STEP_UNDERFLOW = 5
 NON_FINITE = 6
 RUNNING = 7
+#: The whole body is below the rear face of a finite target, moving away from it.
+PERFORATED = 8
 
 #: Indices into the float state array ``sf`` of :func:`pencore.integrate.integrate_chunk`.
 SF_T, SF_H, SF_T_CONTACT, SF_CLEAR, SF_ERR = 0, 1, 2, 3, 4
@@ -141,6 +144,27 @@ def body_reach(rings):
         if rr > reach:
             reach = rr
     return reach
+
+
+@nb.njit(cache=True)
+def perforated(y, rings, bounds):
+    """True when the target is finite and every surface ring of state ``y`` lies below
+    the rear face of its last plate (``bounds[-1, 1]``) while the centre of mass moves
+    away from it (``vy < 0``): no element can be loaded again (no gravity-driven return
+    is followed). Always False for a semi-infinite target (rear face ``-inf``)."""
+    rear = bounds[bounds.shape[0] - 1, 1]
+    if not (rear > -np.inf) or y[8] >= 0.0:
+        return False
+    n = math.sqrt(y[3] * y[3] + y[4] * y[4] + y[5] * y[5] + y[6] * y[6])
+    w, x, yq, z = y[3] / n, y[4] / n, y[5] / n, y[6] / n
+    r10 = 2 * (x * yq + w * z)
+    r11 = w * w - x * x + yq * yq - z * z
+    r12 = 2 * (yq * z - w * x)
+    rk = math.sqrt(r11 * r11 + r12 * r12)
+    for i in range(rings.shape[0]):
+        if y[1] + r10 * rings[i, 0] + rk * rings[i, 1] >= rear:
+            return False
+    return True
 
 
 @nb.njit(cache=True)

@@ -1,7 +1,11 @@
 """Targets: media with a polynomial normal-resistance law and a friction law, in layers.
 
 The target occupies the half-space ``y <= 0``; the free surface is ``y = 0``. Layers are
-planar and stacked downwards; the last layer is semi-infinite.
+planar and stacked downwards. The last layer is semi-infinite (the paper's targets) or
+finite: then the target is a plate (or a stack of plates) with nothing behind it, and a
+projectile that clears its rear face has perforated it. Air gaps between plates are
+layers without a medium (:meth:`Layer.gap`); surface elements in a gap, or below the
+rear face of the last plate, carry no load.
 
 Resistance law (paper Eq. 11), normal stress on a surface element in contact::
 
@@ -111,15 +115,27 @@ class Medium:
 
 @dataclass(frozen=True)
 class Layer:
-    """A medium and its thickness (m); ``inf`` for the last, semi-infinite layer."""
+    """A medium and its thickness (m); ``inf`` for a semi-infinite last layer.
 
-    medium: Medium
+    ``medium=None`` is an air gap (no load): see :meth:`gap`.
+    """
+
+    medium: Medium | None
     thickness: float = math.inf
+
+    @classmethod
+    def gap(cls, thickness: float) -> Layer:
+        """An air gap of ``thickness`` (m) between two plates."""
+        return cls(None, thickness)
+
+    @property
+    def is_gap(self) -> bool:
+        return self.medium is None
 
 
 @dataclass(frozen=True)
 class Target:
-    """A layered half-space below ``y = 0``."""
+    """A layered half-space, or a stack of plates, below ``y = 0``."""
 
     name: str
     layers: tuple[Layer, ...] = field(default_factory=tuple)
@@ -133,14 +149,15 @@ class Target:
             if not isinstance(lay, Layer):
                 raise TargetError(f"{what}: layer {k} must be a Layer, got {lay!r}")
             last = k == len(layers) - 1
+            if lay.is_gap and (k == 0 or last):
+                raise TargetError(
+                    f"{what}: layer {k} is a gap; a gap must lie between two layers of a "
+                    "medium (the first layer starts at the surface y = 0)"
+                )
+            if not lay.is_gap and not isinstance(lay.medium, Medium):
+                raise TargetError(f"{what}: layer {k} medium must be a Medium or None (gap)")
             if last and math.isinf(lay.thickness) and lay.thickness > 0:
                 continue
-            if last:
-                raise TargetError(
-                    f"{what}: the last layer is {lay.thickness!r} m thick, but finite "
-                    "targets (perforation) are not supported yet; leave out the last "
-                    "layer's thickness to make it semi-infinite"
-                )
             if math.isinf(lay.thickness):
                 raise TargetError(f"{what}: only the last layer may be infinite (layer {k})")
             _check("thickness", lay.thickness, f"{what} layer {k}")
@@ -156,30 +173,59 @@ class Target:
         return self.layers[0].medium
 
     @property
+    def solid_layers(self) -> tuple[Layer, ...]:
+        """The layers that are not gaps."""
+        return tuple(lay for lay in self.layers if not lay.is_gap)
+
+    @property
     def frictionless(self) -> bool:
-        return all(lay.medium.frictionless for lay in self.layers)
+        return all(lay.medium.frictionless for lay in self.solid_layers)
+
+    @property
+    def thickness(self) -> float:
+        """Total thickness (m), gaps included; ``inf`` for a semi-infinite target."""
+        return math.fsum(lay.thickness for lay in self.layers)
+
+    @property
+    def finite(self) -> bool:
+        """True when the last layer is finite (the target can be perforated)."""
+        return math.isfinite(self.layers[-1].thickness)
+
+    @property
+    def rear_face(self) -> float:
+        """Height ``y`` (m) of the rear face of the last plate; ``-inf`` if semi-infinite."""
+        return -self.thickness
 
     def kernel_arrays(self) -> tuple[np.ndarray, ...]:
         """Arrays for the compiled kernel.
 
+        Gaps are left out (their elements carry no load), so consecutive rows need not
+        touch.
+
         Returns
         -------
         bounds : (n, 2) float
-            ``y_top, y_bottom`` of each layer (m); the last bottom is ``-inf``.
+            ``y_top, y_bottom`` of each layer of a medium (m); the last bottom is
+            ``-inf`` for a semi-infinite target, the rear face otherwise.
         coef : (n, p) float
             Resistance coefficients, zero-padded.
         fric : (n, k, 2) float
             Friction tables (speed, mu), padded by repeating the last row.
         """
-        n = len(self.layers)
-        p = max(len(lay.medium.coefficients) for lay in self.layers)
-        k = max(len(lay.medium.friction_speeds) for lay in self.layers)
+        solid = self.solid_layers
+        n = len(solid)
+        p = max(len(lay.medium.coefficients) for lay in solid)
+        k = max(len(lay.medium.friction_speeds) for lay in solid)
         bounds = np.empty((n, 2))
         coef = np.zeros((n, p))
         fric = np.empty((n, k, 2))
         top = 0.0
-        for j, lay in enumerate(self.layers):
+        j = 0
+        for lay in self.layers:
             bottom = top - lay.thickness
+            if lay.is_gap:
+                top = bottom
+                continue
             bounds[j] = top, bottom
             c = lay.medium.coefficients
             coef[j, : len(c)] = c
@@ -188,4 +234,5 @@ class Target:
                 ii = min(i, len(sp) - 1)
                 fric[j, i] = (sp[ii] + (i - ii) * 1.0, mu[ii])
             top = bottom
+            j += 1
         return bounds, coef, fric

@@ -19,27 +19,25 @@ from .target import Target
 __all__ = ["trajectory_dataset"]
 
 
-def _target_dict(t: Target) -> dict[str, Any]:
+def _layer_dict(lay: Any) -> dict[str, Any]:
+    if lay.is_gap:
+        return {"thickness": lay.thickness, "gap": True}
     return {
-        "name": t.name,
-        "layers": [
-            {
-                "thickness": lay.thickness,
-                "medium": {
-                    "name": lay.medium.name,
-                    "coefficients": list(lay.medium.coefficients),
-                    "friction": [
-                        list(p)
-                        for p in zip(
-                            lay.medium.friction_speeds, lay.medium.friction_mu, strict=True
-                        )
-                    ],
-                    "source": lay.medium.source,
-                },
-            }
-            for lay in t.layers
-        ],
+        "thickness": lay.thickness,
+        "medium": {
+            "name": lay.medium.name,
+            "coefficients": list(lay.medium.coefficients),
+            "friction": [
+                list(p)
+                for p in zip(lay.medium.friction_speeds, lay.medium.friction_mu, strict=True)
+            ],
+            "source": lay.medium.source,
+        },
     }
+
+
+def _target_dict(t: Target) -> dict[str, Any]:
+    return {"name": t.name, "layers": [_layer_dict(lay) for lay in t.layers]}
 
 
 def _projectile_dict(p: Projectile) -> dict[str, Any]:
@@ -197,4 +195,32 @@ def trajectory_dataset(
             "Conventions": "CF-1.8",
         },
     )
+    if run.outcome == "perforated":
+        ds.attrs.update(exit_attributes(ys[-1], axes[-1]))
     return ds
+
+
+def exit_attributes(y: np.ndarray, axis: np.ndarray) -> dict[str, float]:
+    """Residual velocity and exit attitude of a perforating run at the state ``y`` where the
+    whole body has cleared the rear face of the target (:func:`pencore.stepping.perforated`).
+
+    Returns
+    -------
+    dict
+        ``residual_velocity`` (m/s): centre-of-mass speed; ``exit_pitch_deg``: angle from
+        the target normal (-y) to the projectile axis, positive towards +x (as ``theta``);
+        ``exit_deviation_deg``: angle from the normal to the velocity;
+        ``exit_angle_of_attack_deg``: angle between the axis and the velocity;
+        ``exit_angular_velocity_rad_s``: magnitude of the transverse angular velocity.
+    """
+    vel = y[7:10]
+    speed = float(np.linalg.norm(vel))
+    cos_aoa = float(np.dot(axis, vel)) / max(speed, 1e-300)
+    return {
+        "residual_velocity": speed,
+        "residual_velocity_units": "m s-1",
+        "exit_pitch_deg": float(np.degrees(np.arctan2(axis[0], -axis[1]))),
+        "exit_deviation_deg": float(np.degrees(np.arctan2(np.hypot(vel[0], vel[2]), -vel[1]))),
+        "exit_angle_of_attack_deg": float(np.degrees(np.arccos(np.clip(cos_aoa, -1.0, 1.0)))),
+        "exit_angular_velocity_rad_s": float(np.hypot(y[11], y[12])),
+    }
