@@ -228,7 +228,12 @@ YAML_CASES = [
     ("t", "thickness: 1.0", "thickness: -1.0", ["thickness", "-1.0"]),
     ("t", "thickness: 1.0", "thickness: 0", ["thickness", "0"]),
     ("t", "thickness: 1.0", "thicknes: 1.0", ["'thicknes'", "did you mean 'thickness'"]),
-    ("t", "  - medium: soil", "  - gap: 0.5\n  - medium: soil", ["layer 1", "gap", "between"]),
+    (
+        "t",
+        "  - medium: soil",
+        "  - medium: soil\n    thickness: 1.0\n  - gap: 0.5",
+        ["layer 2", "gap", "between"],
+    ),
     ("t", "  - medium: soil", "  - gap: -0.5\n  - medium: soil", ["thickness", "-0.5"]),
     ("t", "  - medium: soil", "  - {gap: 0.5, medium: soil}", ["unknown key", "'medium'"]),
     ("t", "  - medium: soil", "  - medium: mud", ["unknown medium", "'mud'"]),
