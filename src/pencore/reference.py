@@ -29,6 +29,7 @@ from scipy.integrate import solve_ivp
 
 from .forces import default_model, rhs_model
 from .integrate import RunResult
+from .stepping import body_top
 
 __all__ = ["integrate_scipy"]
 
@@ -98,6 +99,12 @@ def integrate_scipy(
     def rising(t: float, y: np.ndarray) -> float:
         return float(y[8])
 
+    rear = float(bounds[-1, 1])
+
+    def cleared(t: float, y: np.ndarray) -> float:
+        # > 0 once every ring is below the rear face of a finite target
+        return rear - float(body_top(state(y), rings))
+
     contact = _event(clearance, terminal=False, direction=-1.0)
     left = _event(clearance, terminal=True, direction=1.0)
     stopped = _event(slow, terminal=True, direction=-1.0)
@@ -113,7 +120,8 @@ def integrate_scipy(
                 rtol=rtol,
                 atol=atol14,
                 max_step=max_travel / max(speed0, 1e-3),
-                events=(contact, left, stopped, reversal),
+                events=(contact, left, stopped, reversal)
+                + ((_event(cleared, terminal=True, direction=1.0),) if math.isfinite(rear) else ()),
             )
     except _Budget as exc:
         return RunResult(
@@ -127,6 +135,8 @@ def integrate_scipy(
     outcome = "time_limit"
     if sol.t_events[1].size:
         outcome = "exited"
+    elif len(sol.t_events) > 4 and sol.t_events[4].size:
+        outcome = "perforated"
     elif sol.t_events[2].size:
         outcome = "stopped"
     elif stop_at_reversal and sol.t_events[3].size:

@@ -147,6 +147,23 @@ def body_reach(rings):
 
 
 @nb.njit(cache=True)
+def body_top(y, rings):
+    """Height ``y`` (m) of the highest point of the surface rings in state ``y``."""
+    n = math.sqrt(y[3] * y[3] + y[4] * y[4] + y[5] * y[5] + y[6] * y[6])
+    w, x, yq, z = y[3] / n, y[4] / n, y[5] / n, y[6] / n
+    r10 = 2 * (x * yq + w * z)
+    r11 = w * w - x * x + yq * yq - z * z
+    r12 = 2 * (yq * z - w * x)
+    rk = math.sqrt(r11 * r11 + r12 * r12)
+    top = -np.inf
+    for i in range(rings.shape[0]):
+        h = y[1] + r10 * rings[i, 0] + rk * rings[i, 1]
+        if h > top:
+            top = h
+    return top
+
+
+@nb.njit(cache=True)
 def perforated(y, rings, bounds):
     """True when the target is finite and every surface ring of state ``y`` lies below
     the rear face of its last plate (``bounds[-1, 1]``) while the centre of mass moves
@@ -155,16 +172,7 @@ def perforated(y, rings, bounds):
     rear = bounds[bounds.shape[0] - 1, 1]
     if not (rear > -np.inf) or y[8] >= 0.0:
         return False
-    n = math.sqrt(y[3] * y[3] + y[4] * y[4] + y[5] * y[5] + y[6] * y[6])
-    w, x, yq, z = y[3] / n, y[4] / n, y[5] / n, y[6] / n
-    r10 = 2 * (x * yq + w * z)
-    r11 = w * w - x * x + yq * yq - z * z
-    r12 = 2 * (yq * z - w * x)
-    rk = math.sqrt(r11 * r11 + r12 * r12)
-    for i in range(rings.shape[0]):
-        if y[1] + r10 * rings[i, 0] + rk * rings[i, 1] >= rear:
-            return False
-    return True
+    return body_top(y, rings) < rear
 
 
 @nb.njit(cache=True)
