@@ -1,4 +1,4 @@
-"""Command-line interface: ``pencore simulate | fit-table3 | list``.
+"""Command-line interface: ``pencore simulate | ballistic-limit | fit-table3 | list``.
 
 Every user error ends the program with exit status 2 and a single line on stderr,
 ``pencore: error: <message>``, naming the offending value and what is allowed; a solver
@@ -227,6 +227,9 @@ def build_parser() -> argparse.ArgumentParser:
         "directory must exist and be writable; written atomically",
     )
 
+    from .cli_ballistic import add_parser as _add_ballistic
+
+    _add_ballistic(sub)
     sub.add_parser(
         "fit-table3",
         help="fit the p1..p4 geometry (diameter and shank length in m) to the paper's "
@@ -350,6 +353,17 @@ def _cmd_simulate(args: argparse.Namespace) -> int:
         ("reversed", "yes" if a["reversed"] else "no"),
         ("final slope dy/dx", _fmt_slope(float(ds["final_slope"]))),
         ("final deviation from normal", f"{float(ds['final_deviation']):.4g} deg"),
+        *(
+            [
+                ("residual velocity", f"{a['residual_velocity']:.6g} m/s"),
+                (
+                    "exit pitch / angle of attack",
+                    f"{a['exit_pitch_deg']:.4g} / {a['exit_angle_of_attack_deg']:.4g} deg",
+                ),
+            ]
+            if a["outcome"] == "perforated"
+            else []
+        ),
         ("run time", f"{a['wall_time_s']:.3g} s integration, {total:.3g} s total"),
         ("steps", str(a["n_steps"])),
     ]
@@ -390,8 +404,15 @@ def _cmd_list(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_ballistic_limit(args: argparse.Namespace) -> int:
+    from .cli_ballistic import run
+
+    return run(args)
+
+
 _COMMANDS: dict[str, Callable[[argparse.Namespace], int]] = {
     "simulate": _cmd_simulate,
+    "ballistic-limit": _cmd_ballistic_limit,
     "fit-table3": _cmd_fit_table3,
     "list": _cmd_list,
 }

@@ -17,7 +17,9 @@ verdict switches from False to True:
 :func:`find_threshold` does the search on any verdict: it checks both ends of the
 bracket, optionally scans it coarsely to detect a non-monotone verdict, and bisects to a
 caller-given tolerance. Every verdict evaluated is returned, so a workflow can archive
-the evidence behind each number.
+the evidence behind each number. The ballistic limit of a finite target
+(``ballistic_limit``, lowest speed that perforates) is the same search, in
+:mod:`pencore.perforation` and re-exported here.
 """
 
 from __future__ import annotations
@@ -50,6 +52,7 @@ __all__ = [
     "vci",
     "YAW_CONVENTIONS",
     "normal_impact_angles",
+    "ballistic_limit",  # noqa: F822 - lazy, see __getattr__
 ]
 
 #: Default (and widest recommended) bracket width for critical velocities (m/s).
@@ -503,3 +506,12 @@ def vci(
         return bool(final_deviation(ds, fraction) > threshold_deg)
 
     return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="Vci")
+
+
+def __getattr__(name: str) -> Any:
+    # ballistic_limit lives in pencore.perforation (which imports this module)
+    if name == "ballistic_limit":
+        from .perforation import ballistic_limit
+
+        return ballistic_limit
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
