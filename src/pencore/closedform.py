@@ -29,7 +29,7 @@ import numpy as np
 from .geometry import Projectile
 from .target import Medium
 
-__all__ = ["axial_force", "tunnel_depth", "nose_entry_speed", "depth"]
+__all__ = ["axial_force", "tunnel_depth", "nose_entry_speed", "depth", "speed_at_depth"]
 
 
 def _coeffs(medium: Medium) -> tuple[float, float]:
@@ -133,3 +133,22 @@ def depth(projectile: Projectile, medium: Medium, velocity: float) -> float:
     if v1 == 0.0:
         return z
     return z + tunnel_depth(projectile, medium, v1)
+
+
+def speed_at_depth(projectile: Projectile, medium: Medium, velocity: float, z: float) -> float:
+    """Speed (m/s) at tip depth ``z`` (m) >= the nose length, normal frictionless impact on
+    a half-space: the nose-entry speed (:func:`nose_entry_speed`) followed by the
+    tunnel-phase solution ``V^2 = (V1^2 + a0/(N* a2)) exp(-2 pi a^2 N* a2 (z - L_n)/m)
+    - a0/(N* a2)``; 0 once the body has stopped."""
+    a0, a2 = _coeffs(medium)
+    v1, zn = nose_entry_speed(projectile, medium, velocity)
+    if z < zn:
+        raise ValueError(f"z = {z!r} m is inside the nose-entry phase (nose length {zn!r} m)")
+    if v1 == 0.0:
+        return 0.0
+    a = projectile.radius
+    m = projectile.mass_properties().mass
+    v2, stopped = _advance(
+        v1 * v1, math.pi * a * a, math.pi * a * a * projectile.nose_factor(), a0, a2, m, z - zn
+    )
+    return 0.0 if stopped is not None else math.sqrt(v2)
