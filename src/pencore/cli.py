@@ -107,6 +107,8 @@ simulate options (all SI, angles in degrees):
   --omega RAD_S           initial angular velocity about +z (rad/s)
   --start X Y Z           initial nose-tip position (m)
   --stop-at-reversal      end the run at the first trajectory reversal
+  --crater-depth K        near-surface (crater) resistance ramp over K calibers
+  --free-surface-depth K  resistance ramp within K calibers of a free face
   --numerics KEY=VALUE    numerical parameter override (repeatable), e.g. rtol=1e-6
   --out FILE.nc           write the full trajectory as NetCDF
 Run 'pencore simulate --help' for details; 'pencore list' for the named projectiles
@@ -208,6 +210,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="end the run at the first reversal of the trajectory (dy/dx "
         "changes sign; outcome 'reversed')",
     )
+    _window_options(sim)
     sim.add_argument(
         "--numerics",
         type=_numerics_option,
@@ -250,6 +253,34 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 # ---------------------------------------------------------------- helpers
+
+
+def _window_options(p: argparse.ArgumentParser) -> None:
+    """``--crater-depth`` and ``--free-surface-depth`` (calibers), set on every medium."""
+    p.add_argument(
+        "--crater-depth",
+        type=_number("crater_depth"),
+        default=None,
+        metavar="K",
+        help="near-surface (crater) region in calibers: the resistance rises linearly from "
+        "0 at a layer's top face to full at K projectile diameters (Forrestal: K = 2; "
+        "default: each medium's own, 0 = off)",
+    )
+    p.add_argument(
+        "--free-surface-depth",
+        type=_number("free_surface_depth"),
+        default=None,
+        metavar="K",
+        help="free-surface reduction in calibers: the resistance falls linearly to 0 at a "
+        "free face (front face, rear face, faces next to a gap) over K projectile "
+        "diameters (default: each medium's own, 0 = off)",
+    )
+
+
+def _with_windows(target: Any, args: argparse.Namespace) -> Any:
+    if args.crater_depth is None and args.free_surface_depth is None:
+        return target
+    return target.with_windows(args.crater_depth, args.free_surface_depth)
 
 
 def _check_output(out: str) -> Path:
@@ -315,7 +346,7 @@ def _cmd_simulate(args: argparse.Namespace) -> int:
 
     out = _check_output(args.out) if args.out is not None else None
     projectile = _resolve("projectile", args.projectile, get_projectile)
-    target = _resolve("target", args.target, get_target)
+    target = _with_windows(_resolve("target", args.target, get_target), args)
     t0 = time.perf_counter()
     ds = simulate(
         projectile,

@@ -11,7 +11,7 @@ __all__ = ["add_parser", "run"]
 
 def add_parser(sub: argparse._SubParsersAction) -> None:
     """Register ``ballistic-limit`` on the subparsers of :func:`pencore.cli.build_parser`."""
-    from .cli import _number, _numerics_option, _obliquity, _velocity
+    from .cli import _number, _numerics_option, _obliquity, _velocity, _window_options
 
     p = sub.add_parser(
         "ballistic-limit",
@@ -51,6 +51,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         metavar="M_S",
         help="width of the final bracket in m/s (default: 5)",
     )
+    _window_options(p)
     p.add_argument(
         "--numerics",
         type=_numerics_option,
@@ -63,7 +64,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the search and print the result; errors propagate to :func:`pencore.cli.main`."""
-    from .cli import _resolve
+    from .cli import _resolve, _with_windows
     from .library import get_projectile, get_target
     from .perforation import ballistic_limit
     from .solver import Numerics
@@ -72,7 +73,7 @@ def run(args: argparse.Namespace) -> int:
     if not args.lo < args.hi:
         raise InputError(f"--lo {args.lo:g} must be below --hi {args.hi:g} (m/s)")
     projectile = _resolve("projectile", args.projectile, get_projectile)
-    target = _resolve("target", args.target, get_target)
+    target = _with_windows(_resolve("target", args.target, get_target), args)
     r = ballistic_limit(
         projectile,
         target,

@@ -29,7 +29,14 @@ import numpy as np
 from .geometry import Projectile
 from .target import Medium
 
-__all__ = ["axial_force", "tunnel_depth", "nose_entry_speed", "depth", "speed_at_depth"]
+__all__ = [
+    "axial_force",
+    "tunnel_depth",
+    "nose_entry_speed",
+    "depth",
+    "speed_at_depth",
+    "crater_entry_speed",
+]
 
 
 def _coeffs(medium: Medium) -> tuple[float, float]:
@@ -126,10 +133,51 @@ def _advance(v2, a, b, a0, a2, m, dz):
     return new, None
 
 
+def crater_entry_speed(
+    projectile: Projectile, medium: Medium, velocity: float, n: int = 2000
+) -> tuple[float, float]:
+    """Speed (m/s) and tip depth (m) at the end of the near-surface region, with the
+    crater ramp of :mod:`pencore.target` (``medium.crater_depth`` calibers, ``c = k d``):
+    a band of the nose at depth ``zeta`` carries ``min(1, zeta / c)`` of its stress, so
+
+        m d(V^2)/dz = -2 (a0 A_c(z) + a2 B_c(z) V^2),
+        A_c(z) = sum dA_j min(1, (z - s_j)^+ / c),  B_c likewise,
+
+    (``s_j`` a band's distance from the tip), still linear in ``V^2``: integrated exactly
+    on ``n`` intervals of tip depth with the midpoint values of ``A_c``, ``B_c`` (error
+    O(1/n^2)), up to ``z = L_n + c``, past which every band carries the full stress.
+    Returns ``(0, z_stop)`` if the body stops before.
+    """
+    a0, a2 = _coeffs(medium)
+    c = medium.crater_depth * projectile.diameter
+    if c <= 0.0:
+        return nose_entry_speed(projectile, medium, velocity)
+    m = projectile.mass_properties().mass
+    s, area, b2 = _entry_profile(projectile)
+    da = np.diff(area, prepend=0.0)
+    db = np.diff(b2, prepend=0.0)
+    zend = projectile.nose_length + c
+    dz = zend / n
+    v2 = velocity * velocity
+    for i in range(n):
+        zm = (i + 0.5) * dz
+        g = np.clip((zm - s) / c, 0.0, 1.0)
+        v2, stopped_at = _advance(v2, float(da @ g), float(db @ g), a0, a2, m, dz)
+        if stopped_at is not None:
+            return 0.0, i * dz + stopped_at
+    return math.sqrt(v2), zend
+
+
 def depth(projectile: Projectile, medium: Medium, velocity: float) -> float:
     """Tip depth (m) at rest for normal, zero-yaw, frictionless impact: exact nose-entry
-    phase (:func:`nose_entry_speed`) plus the tunnel-phase closed form."""
-    v1, z = nose_entry_speed(projectile, medium, velocity)
+    phase (:func:`nose_entry_speed`, or :func:`crater_entry_speed` with a crater region)
+    plus the tunnel-phase closed form."""
+    if medium.free_surface_depth > 0.0:
+        raise ValueError("closed forms have no free-surface reduction")
+    if medium.crater_depth > 0.0:
+        v1, z = crater_entry_speed(projectile, medium, velocity)
+    else:
+        v1, z = nose_entry_speed(projectile, medium, velocity)
     if v1 == 0.0:
         return z
     return z + tunnel_depth(projectile, medium, v1)
@@ -152,3 +200,30 @@ def speed_at_depth(projectile: Projectile, medium: Medium, velocity: float, z: f
         v1 * v1, math.pi * a * a, math.pi * a * a * projectile.nose_factor(), a0, a2, m, z - zn
     )
     return 0.0 if stopped is not None else math.sqrt(v2)
+
+
+def forrestal_crater_depth(
+    projectile: Projectile, medium: Medium, velocity: float, k: float = 2.0
+) -> float:
+    """Depth (m) with the crater region as a total force linear in tip depth, ``F = c z``
+    for ``z < k d`` (Forrestal et al., IJIE 15 (1994) 395-405; k = 2 there), and
+    ``F = pi a^2 (a0 + N* a2 V^2)`` below. ``c`` follows from continuity at ``z = k d``,
+    ``c k d = pi a^2 (a0 + N* a2 V1^2)``, and the work ``c (k d)^2 / 2`` of the crater
+    phase, which give (derived here from those two conditions)::
+
+        V1^2 = (m V0^2 - k d pi a^2 a0) / (m + k d pi a^2 N* a2)
+
+    For comparison with pencore's per-element ramp (:func:`crater_entry_speed`); it
+    assumes the nose is embedded at ``z = k d`` (``k d >= L_n``)."""
+    a0, a2 = _coeffs(medium)
+    a = projectile.radius
+    kd = k * projectile.diameter
+    if kd < projectile.nose_length:
+        raise ValueError(f"k d = {kd!r} m is shorter than the nose ({projectile.nose_length!r} m)")
+    m = projectile.mass_properties().mass
+    area = math.pi * a * a * kd
+    v1sq = (m * velocity**2 - area * a0) / (m + area * projectile.nose_factor() * a2)
+    if v1sq <= 0.0:
+        # stops in the crater: m V0^2 / 2 = c z^2 / 2 with c from the V1 = 0 limit
+        return math.sqrt(m * velocity**2 * kd / (math.pi * a * a * a0))
+    return kd + tunnel_depth(projectile, medium, math.sqrt(v1sq))

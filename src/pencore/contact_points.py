@@ -30,7 +30,7 @@ import math
 import numba as nb
 import numpy as np
 
-from .dynamics import quat_to_matrix
+from .dynamics import depth_factor, quat_to_matrix
 
 #: Most samples :func:`push_path` adds per accepted step (the rest is the virtual vertex).
 MAX_SAMPLES_PER_STEP = 32
@@ -227,6 +227,8 @@ def point_loads(y, pts, bounds, coef, fric, eps, with_friction, cavity, cav, pat
         if hw == 0.0:
             continue
         area = pts[i, 6] * hw
+        if bounds.shape[1] >= 5:
+            area *= depth_factor(height, bounds, lay)
         if cavity and pts[i, 7] > 0.0:
             qx = y[0] + rot[0, 0] * px + rot[0, 1] * py + rot[0, 2] * pz
             qy = y[1] + rot[1, 0] * px + rot[1, 1] * py + rot[1, 2] * pz

@@ -208,6 +208,34 @@ def _full_circle_cos_power(j):
     return v
 
 
+# ---------------------------------------------------------------- depth windows
+
+
+@nb.njit(cache=True)
+def depth_factor(height, bounds, lay):
+    """Load factor in [0, 1] of an element at ``height`` (m) in layer ``lay``.
+
+    1 unless ``bounds`` has the window columns of
+    :meth:`pencore.target.Target.kernel_arrays`: then the product of the crater ramp
+    ``min(1, (top - height) / c)`` and the free-surface ramps ``min(1, distance to a free
+    face / f)`` (lengths ``c``, ``f`` in m; 0 is off). See :mod:`pencore.target`.
+    """
+    if bounds.shape[1] < 5:
+        return 1.0
+    g = 1.0
+    top = bounds[lay, 0]
+    crater = bounds[lay, 2]
+    if crater > 0.0:
+        g *= min(1.0, max(top - height, 0.0) / crater)
+    ztop = bounds[lay, 3]
+    if ztop > 0.0:
+        g *= min(1.0, max(top - height, 0.0) / ztop)
+    zbot = bounds[lay, 4]
+    if zbot > 0.0:
+        g *= min(1.0, max(height - bounds[lay, 1], 0.0) / zbot)
+    return g
+
+
 # ---------------------------------------------------------------- contact loads
 
 
@@ -307,6 +335,12 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
                     bhi[m] = l1hi[m]
             if nbase == 0:
                 continue
+            # depth windows (crater, free surface) at the ring centre; 1 when off
+            wl = w
+            if bounds.shape[1] >= 5:
+                wl = w * depth_factor(y0, bounds, lay)
+                if wl == 0.0:
+                    continue
             # --- normal stress, closed form
             s0 = 0.0
             sc = 0.0
@@ -345,11 +379,11 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
                     s0 += a_
                     sc += b_
                     ss += c_
-            f[0] -= w * na * s0
-            f[1] -= w * nr * sc
-            f[2] -= w * nr * ss
-            mom[1] += w * q * ss
-            mom[2] -= w * q * sc
+            f[0] -= wl * na * s0
+            f[1] -= wl * nr * sc
+            f[2] -= wl * nr * ss
+            mom[1] += wl * q * ss
+            mom[2] -= wl * q * sc
             # --- friction, Gauss quadrature on the loaded arcs
             if n_gauss > 0 and fric[lay, :, 1].max() > 0.0:
                 level = -eps if eps > 0.0 else 0.0
@@ -367,7 +401,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
                     r,
                     na,
                     nr,
-                    w,
+                    wl,
                     v1,
                     v2,
                     v3,

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import functools
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -311,7 +311,17 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
     return p
 
 
-_MEDIUM_KEYS = ("name", "coefficients", "friction", "density", "source")
+_MEDIUM_KEYS = (
+    "name",
+    "coefficients",
+    "friction",
+    "density",
+    "source",
+    "crater_depth",
+    "free_surface_depth",
+)
+#: Depth-window keys (calibers) a layer may set on a named medium.
+_WINDOW_KEYS = ("crater_depth", "free_surface_depth")
 
 
 def _medium_from(x: Any, what: str) -> Medium:
@@ -339,7 +349,8 @@ def _medium_from(x: Any, what: str) -> Medium:
     else:
         sp, mu = (0.0,), (number(fr, "friction", w, allow_str=True),)
     rho = _num(x, "density", w, "medium_density") if "density" in x else math.nan
-    return Medium(name, coef_f, sp, mu, rho, str(x.get("source", "user file")))
+    windows = {k: _num(x, k, w) for k in _WINDOW_KEYS if k in x}
+    return Medium(name, coef_f, sp, mu, rho, str(x.get("source", "user file")), **windows)
 
 
 def target_from_dict(d: dict[str, Any]) -> Target:
@@ -367,11 +378,13 @@ def target_from_dict(d: dict[str, Any]) -> Target:
             check_keys(lay, ("gap",), w)
             layers.append(Layer.gap(_num(lay, "gap", w, "thickness")))
             continue
-        check_keys(lay, ("thickness", "medium", "gap"), w)
+        check_keys(lay, ("thickness", "medium", "gap", *_WINDOW_KEYS), w)
         if "medium" not in lay:
             raise InputError(f"{w}: needs a 'medium' (a name or a mapping)")
         th = _num(lay, "thickness", w) if "thickness" in lay else math.inf
-        layers.append(Layer(_medium_from(lay["medium"], w), th))
+        medium = _medium_from(lay["medium"], w)
+        windows = {k: _num(lay, k, w) for k in _WINDOW_KEYS if k in lay}
+        layers.append(Layer(replace(medium, **windows) if windows else medium, th))
     return Target(name, tuple(layers))
 
 

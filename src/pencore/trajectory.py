@@ -32,6 +32,12 @@ def _layer_dict(lay: Any) -> dict[str, Any]:
                 for p in zip(lay.medium.friction_speeds, lay.medium.friction_mu, strict=True)
             ],
             "source": lay.medium.source,
+            # the depth windows only when on (default runs record what they always did)
+            **{
+                k: getattr(lay.medium, k)
+                for k in ("crater_depth", "free_surface_depth")
+                if getattr(lay.medium, k) > 0.0
+            },
         },
     }
 

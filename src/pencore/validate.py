@@ -187,7 +187,23 @@ LIMITS: dict[str, Limit] = {
         1e4,
         lo_open=True,
         kind="physical / guard",
-        why="> 0; the last layer is semi-infinite",
+        why="> 0; leave it out for a semi-infinite last layer",
+    ),
+    "crater_depth": Limit(
+        "crater depth",
+        "calibers",
+        0.0,
+        100.0,
+        kind="physical / guard",
+        why=">= 0 (0: off); near-surface resistance ramp, Forrestal k = 2",
+    ),
+    "free_surface_depth": Limit(
+        "free-surface depth",
+        "calibers",
+        0.0,
+        100.0,
+        kind="physical / guard",
+        why=">= 0 (0: off); resistance ramp next to a free face",
     ),
     "medium_density": Limit(
         "medium density", "kg/m^3", 0.0, _RHO_MAX, lo_open=True, why="> 0 (for reference only)"
