@@ -1,0 +1,113 @@
+"""Near-surface (crater) and free-surface resistance ramps (issue 11).
+
+* off (the default) changes nothing, to the last bit;
+* with a crater the 1-D depth is the closed form of the ramp
+  (:func:`pencore.closedform.crater_entry_speed`), grows with k, and tends to the
+  reference as k -> 0;
+* the free-surface ramp leaves elements far from a free face unchanged, and on a thick
+  slab (rear face never reached) it is exactly the crater ramp of the front face.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from pencore import closedform, get_projectile, get_target, simulate
+from pencore.dynamics import contact_loads
+from pencore.initial import initial_state
+from pencore.library import target_from_dict
+from pencore.target import Layer, Target, TargetError
+
+CONCRETE = get_target("concrete").medium
+P2 = get_projectile("p2")
+
+
+def half_space(**kw) -> Target:
+    return Target.half_space(replace(CONCRETE, **kw))
+
+
+def test_off_is_bit_identical():
+    a = simulate("p2", "concrete", 350.0, 30.0, 1.0)
+    b = simulate("p2", half_space(crater_depth=0.0, free_surface_depth=0.0), 350.0, 30.0, 1.0)
+    for v in ("tip_x", "tip_y", "vel_x", "vel_y", "omega_3", "work"):
+        assert np.array_equal(a[v].values, b[v].values)
+    assert half_space().kernel_arrays(P2.diameter)[0].shape[1] == 2
+
+
+@pytest.mark.parametrize("k", [0.5, 2.0, 0.707 + P2.nose_length / P2.diameter])
+def test_crater_depth_matches_the_1d_closed_form(k):
+    t = half_space(crater_depth=k)
+    ds = simulate("p2", t, 400.0)
+    ref = closedform.depth(P2, t.medium, 400.0)
+    # same 2e-3 as the half-space check of test_physics (ring discretisation, rtol);
+    # the ramp itself is integrated to O(1/n^2) = 2.5e-7 by the closed form
+    assert float(ds.penetration_depth) == pytest.approx(ref, rel=2e-3)
+
+
+def test_crater_depth_increases_with_k_and_tends_to_the_reference():
+    depths = [float(simulate("p2", half_space(crater_depth=k), 400.0).penetration_depth)
+              for k in (0.0, 0.01, 0.5, 1.0, 2.0)]  # fmt: skip
+    assert all(b > a for a, b in zip(depths, depths[1:], strict=False))
+    # k -> 0: the work lost over the ramp is O(k d) of a ~1 m depth
+    assert depths[1] == pytest.approx(depths[0], rel=2e-3)
+    # closed form: the depth gain is continuous at k = 0 and grows with k
+    gains = [closedform.depth(P2, replace(CONCRETE, crater_depth=k), 400.0) for k in (1e-3, 2.0)]
+    assert gains[0] == pytest.approx(closedform.depth(P2, CONCRETE, 400.0), rel=1e-3)
+    assert gains[1] > gains[0]
+
+
+def test_pencore_ramp_versus_forrestal_linear_force():
+    # Forrestal's F = c z crater (k = 2) and pencore's per-element ramp differ: the ramp
+    # acts until the nose base is k d deep, F = c z only to k d. Both exceed the no-crater
+    # depth; pencore's exceeds Forrestal's. (A comparison, not a calibration.)
+    d0 = closedform.depth(P2, CONCRETE, 400.0)
+    df = closedform.forrestal_crater_depth(P2, CONCRETE, 400.0, 2.0)
+    dp = closedform.depth(P2, replace(CONCRETE, crater_depth=2.0), 400.0)
+    assert d0 < df < dp
+
+
+def test_free_surface_far_from_faces_is_unchanged():
+    # an element more than k_f d from every free face carries the full stress
+    t = target_from_dict(
+        {"name": "slab", "layers": [{"medium": "concrete", "thickness": 3.0,
+                                     "free_surface_depth": 1.0}]}
+    )  # fmt: skip
+    pr_on = t.kernel_arrays(P2.diameter)
+    pr_off = Target("plain", (Layer(CONCRETE, 3.0),)).kernel_arrays(P2.diameter)
+    rings = P2.rings(48, 24, 4).as_array()
+    y = initial_state(P2, rings, 300.0, math.radians(20.0), 0.0, 0.0, None, 0.0, "cm")
+    y[1] -= 1.5  # body around 1.5 m deep: > 1 caliber from both faces
+    f_on = contact_loads(y, rings, *pr_on, 1e-3, 0)
+    f_off = contact_loads(y, rings, *pr_off, 1e-3, 0)
+    assert np.array_equal(f_on[0], f_off[0]) and np.array_equal(f_on[1], f_off[1])
+    # and an element within the zone of the rear face is reduced
+    y[1] -= 1.5 - 0.05
+    assert abs(contact_loads(y, rings, *pr_on, 1e-3, 0)[0][0]) < abs(
+        contact_loads(y, rings, *pr_off, 1e-3, 0)[0][0]
+    )
+
+
+def test_free_surface_on_a_thick_slab_is_the_front_crater_ramp():
+    # the rear face is never reached, so only the front-face ramp acts: the same factor
+    # min(1, zeta / (k d)) as the crater ramp, hence the same trajectory to round-off
+    slab = Target("slab", (Layer(replace(CONCRETE, free_surface_depth=1.5), 3.0),))
+    a = simulate("p2", slab, 400.0, 15.0)
+    b = simulate("p2", half_space(crater_depth=1.5), 400.0, 15.0)
+    np.testing.assert_allclose(a.tip_y.values, b.tip_y.values, rtol=1e-12, atol=0)
+
+
+def test_free_surface_raises_the_residual_speed():
+    plain = Target("slab", (Layer(CONCRETE, 0.6),))
+    fs = plain.with_windows(free_surface_depth=1.0)
+    v_plain = simulate("p2", plain, 600.0).attrs["residual_velocity"]
+    v_fs = simulate("p2", fs, 600.0).attrs["residual_velocity"]
+    assert v_fs > v_plain
+
+
+def test_windows_need_the_diameter():
+    with pytest.raises(TargetError, match="diameter"):
+        half_space(crater_depth=2.0).kernel_arrays()
