@@ -49,6 +49,9 @@ include: "workflow/rules/common.smk"
 include: "workflow/rules/validation.smk"
 include: "workflow/rules/section4.smk"
 include: "workflow/rules/tables.smk"
+# >>> issue 11: perforation of finite slabs (beyond the paper) >>>
+include: "workflow/rules/perforation.smk"
+# <<< issue 11 <<<
 include: "workflow/rules/archive.smk"
 
 

@@ -23,6 +23,7 @@ module                     contents
 ``comparison_rows``        row helpers of the comparison table
 ``comparison``             :func:`paper_comparison`: the paper's numbers beside pencore's
 ``config``                 workflow config -> study parts, :func:`from_config`, :func:`gather`
+``perforation``            beyond the paper: ballistic limit map, residual velocity curve
 =========================  ===============================================================
 
 Conventions (those of :func:`pencore.simulate`): the target is ``y <= 0``; obliquity
