@@ -153,3 +153,57 @@ def test_recht_ipson_fit_recovers_its_parameters():
     assert fit["a"] == pytest.approx(0.9, rel=1e-4)
     assert fit["p"] == pytest.approx(2.4, rel=1e-4)
     assert recht_ipson(300.0, 400.0) == 0.0
+
+
+SLAB_YAML = "name: slab\nlayers:\n  - {medium: concrete, thickness: 0.8}\n"
+
+
+def test_cli_ballistic_limit(tmp_path, capsys):
+    from pencore.cli import main
+
+    f = tmp_path / "slab.yaml"
+    f.write_text(SLAB_YAML)
+    args = ["ballistic-limit", "--projectile", "p2", "--target", str(f), "--tol", "20"]
+    assert main(args) == 0
+    out = capsys.readouterr().out
+    assert "ballistic limit:" in out and "status:          ok" in out
+    # the same search through the API gives the same bracket
+    r = ballistic_limit("p2", slab(0.8), tol=20.0)
+    assert f"[{r.lo:.6g}, {r.hi:.6g}] m/s" in out
+
+
+@pytest.mark.parametrize(
+    ("extra", "needle"),
+    [
+        (["--lo", "500", "--hi", "400"], "--lo 500 must be below --hi 400"),
+        (["--tol", "-1"], "--tol"),
+        (["--crater-depth", "-2"], "crater depth"),
+        (["--obliquity", "95"], "--obliquity"),
+    ],
+)
+def test_cli_ballistic_limit_bad_input(tmp_path, capsys, extra, needle):
+    from pencore.cli import main
+
+    f = tmp_path / "slab.yaml"
+    f.write_text(SLAB_YAML)
+    assert main(["ballistic-limit", "--projectile", "p2", "--target", str(f), *extra]) == 2
+    err = capsys.readouterr().err
+    assert needle in err and err.count("\n") == 1
+
+
+def test_cli_half_space_is_refused(capsys):
+    from pencore.cli import main
+
+    assert main(["ballistic-limit", "--projectile", "p2", "--target", "concrete"]) == 2
+    assert "semi-infinite" in capsys.readouterr().err
+
+
+def test_cli_simulate_reports_the_residual_velocity(tmp_path, capsys):
+    from pencore.cli import main
+
+    f = tmp_path / "slab.yaml"
+    f.write_text(SLAB_YAML)
+    assert main(["simulate", "--projectile", "p2", "--target", str(f), "--velocity", "600"]) == 0
+    out = capsys.readouterr().out
+    vr = residual_velocity(simulate("p2", slab(0.8), 600.0))
+    assert "outcome:" in out and "perforated" in out and f"{vr:.6g} m/s" in out

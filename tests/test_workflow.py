@@ -66,7 +66,7 @@ def test_dry_run_lists_every_study(workdir):
     r = _snakemake(workdir, "-n", "--cores", "1")
     assert r.returncode == 0, r.stderr + r.stdout
     out = r.stdout + r.stderr
-    for rule in (*STUDY_RULES, *FIGURE_RULES, "all"):
+    for rule in (*STUDY_RULES, *FIGURE_RULES, "perforation_study", "perforation_figure", "all"):
         assert f"rule {rule}:" in out, f"rule {rule} missing from the dry run"
     # the archive is refreshed on request only, never by `all`
     assert "archive_dataset" not in out
