@@ -358,7 +358,9 @@ def _run(pr: _Prepared, y0: np.ndarray, velocity: float, stop_at_reversal: bool)
         t_max=num.t_max,
         rtol=num.rtol,
         atol=atol,
-        max_travel=num.max_travel,
+        # a step must not jump over a thin plate or gap: at most half the thinnest layer
+        # (no change for the paper's half-spaces, or layers thicker than 2 max_travel)
+        max_travel=min(num.max_travel, 0.5 * pr.target.thinnest),
         v_stop=num.v_stop,
         stop_at_reversal=stop_at_reversal,
         max_steps=num.max_steps,

@@ -231,6 +231,11 @@ class Target:
         return math.fsum(lay.thickness for lay in self.layers)
 
     @property
+    def thinnest(self) -> float:
+        """Smallest layer or gap thickness (m); ``inf`` for a half-space."""
+        return min(lay.thickness for lay in self.layers)
+
+    @property
     def finite(self) -> bool:
         """True when the last layer is finite (the target can be perforated)."""
         return math.isfinite(self.layers[-1].thickness)
