@@ -30,7 +30,8 @@ import math
 import numba as nb
 import numpy as np
 
-from .dynamics import depth_factor, quat_to_matrix
+from .dynamics import quat_to_matrix
+from .windows import depth_factor
 
 #: Most samples :func:`push_path` adds per accepted step (the rest is the virtual vertex).
 MAX_SAMPLES_PER_STEP = 32

@@ -45,6 +45,8 @@ import math
 import numba as nb
 import numpy as np
 
+from .windows import depth_factor
+
 TWO_PI = 2.0 * math.pi
 _MAXI = 16  # max number of arcs in an interval set
 _MAXD = 10  # max polynomial degree + 2
@@ -206,34 +208,6 @@ def _full_circle_cos_power(j):
     for i in range(2, j + 1, 2):
         v *= (i - 1.0) / i
     return v
-
-
-# ---------------------------------------------------------------- depth windows
-
-
-@nb.njit(cache=True)
-def depth_factor(height, bounds, lay):
-    """Load factor in [0, 1] of an element at ``height`` (m) in layer ``lay``.
-
-    1 unless ``bounds`` has the window columns of
-    :meth:`pencore.target.Target.kernel_arrays`: then the product of the crater ramp
-    ``min(1, (top - height) / c)`` and the free-surface ramps ``min(1, distance to a free
-    face / f)`` (lengths ``c``, ``f`` in m; 0 is off). See :mod:`pencore.target`.
-    """
-    if bounds.shape[1] < 5:
-        return 1.0
-    g = 1.0
-    top = bounds[lay, 0]
-    crater = bounds[lay, 2]
-    if crater > 0.0:
-        g *= min(1.0, max(top - height, 0.0) / crater)
-    ztop = bounds[lay, 3]
-    if ztop > 0.0:
-        g *= min(1.0, max(top - height, 0.0) / ztop)
-    zbot = bounds[lay, 4]
-    if zbot > 0.0:
-        g *= min(1.0, max(height - bounds[lay, 1], 0.0) / zbot)
-    return g
 
 
 # ---------------------------------------------------------------- contact loads

@@ -22,6 +22,7 @@ import numpy as np
 
 #: Modules whose compiled functions inline others' (their caches go stale together).
 KERNEL_MODULES = (
+    "windows",
     "dynamics",
     "contact_points",
     "forces",
@@ -45,7 +46,7 @@ def _invalidate_stale_caches() -> None:
     try:
         if stamp.exists() and stamp.read_text() == digest:
             return
-        for name in KERNEL_MODULES[1:]:  # dynamics inlines nothing from elsewhere
+        for name in KERNEL_MODULES[1:]:  # windows inlines nothing from elsewhere
             for f in cache_dir.glob(f"{name}.*.nb[ic]"):
                 f.unlink()
         cache_dir.mkdir(exist_ok=True)
