@@ -111,3 +111,19 @@ def test_free_surface_raises_the_residual_speed():
 def test_windows_need_the_diameter():
     with pytest.raises(TargetError, match="diameter"):
         half_space(crater_depth=2.0).kernel_arrays()
+
+
+def test_yaml_keys_and_their_limits():
+    from pencore.validate import InputError
+
+    medium = {"name": "c", "coefficients": [283.5e6, 0.0, 1960.0], "crater_depth": 2.0}
+    t = target_from_dict({"name": "t", "layers": [{"medium": medium}]})
+    assert t.medium.crater_depth == 2.0 and t.medium.free_surface_depth == 0.0
+    t = target_from_dict(
+        {"name": "t", "layers": [{"medium": "concrete", "thickness": 1.0, "crater_depth": 1.5}]}
+    )
+    assert t.medium.crater_depth == 1.5 and t.medium.coefficients == CONCRETE.coefficients
+    with pytest.raises(InputError, match="crater depth"):
+        target_from_dict({"name": "t", "layers": [{"medium": "concrete", "crater_depth": -1}]})
+    with pytest.raises(InputError, match="free-surface depth"):
+        replace(CONCRETE, free_surface_depth=1e3)

@@ -80,7 +80,9 @@ def trajectory_dataset(
     -------
     xarray.Dataset
         Time histories on dimension ``time`` (s), the scalars ``penetration_depth``,
-        ``path_length`` (m), ``final_slope``, ``final_deviation`` (deg), and attributes.
+        ``path_length`` (m), ``final_slope``, ``final_deviation`` (deg), and attributes;
+        a ``perforated`` run also has the residual velocity and exit attitude
+        (:func:`exit_attributes`).
     """
     ts, ys = run.ts, run.ys
     mp = projectile.mass_properties()
