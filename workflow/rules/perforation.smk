@@ -58,3 +58,4 @@ ALL_TARGETS.extend(
     for kind in PERFORATION_KINDS
     for ext in ("nc", "png", "pdf")
 )
+ARCHIVE_DATASETS.extend(f"results/perforation/{kind}.nc" for kind in PERFORATION_KINDS)

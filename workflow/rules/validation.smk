@@ -2,6 +2,7 @@
 #   table2        paper Table 2, soil (Forrestal & Luk 1992): selects projectile + measure
 #   fig5          paper Fig. 5, concrete and aluminium, with the closed form
 #   verification  pencore against pencore.closedform.depth, normal impact
+#   measurements  pencore against published measurements (shipped data files with sources)
 # Each study's rule gets its own config slice through params, so editing one study's
 # entry reruns only that study (rerun trigger `params`).
 import pandas as pd
@@ -75,6 +76,25 @@ rule verification:
         code=PHYSICS_CODE,
     script:
         "../scripts/verification.py"
+
+
+rule measurements:
+    input:
+        csv=[entry["csv"] for entry in VALIDATION["measurements"]],
+    output:
+        nc="results/validation/measurements.nc",
+    log:
+        "results/logs/validation/measurements.log",
+    benchmark:
+        "results/benchmarks/validation/measurements.tsv"
+    conda:
+        "../envs/pencore.yaml"
+    params:
+        study=canonical(VALIDATION["measurements"]),
+        numerics=canonical(config["numerics"]),
+        code=PHYSICS_CODE,
+    script:
+        "../scripts/measurements.py"
 
 
 # Figures: separate rules, so restyling a plot does not rerun the solver.
@@ -179,3 +199,32 @@ ARCHIVE_DATASETS.extend(
         "results/validation/verification.nc",
     ]
 )
+
+
+rule measurements_figure:
+    input:
+        nc="results/validation/measurements.nc",
+    output:
+        png=report(
+            "results/validation/measurements.png",
+            caption="../report/measurements.rst",
+            category="4 Beyond the paper",
+            subcategory="Validation against measurements",
+            labels={"name": "measured vs predicted", "type": "figure"},
+        ),
+        pdf="results/validation/measurements.pdf",
+    log:
+        "results/logs/validation/measurements_figure.log",
+    benchmark:
+        "results/benchmarks/validation/measurements_figure.tsv"
+    localrule: True
+    conda:
+        "../envs/pencore.yaml"
+    params:
+        kind="measurements",
+        code=PLOTTING_CODE,
+    script:
+        "../scripts/plot.py"
+
+
+ALL_TARGETS.extend(f"results/validation/measurements.{ext}" for ext in ("nc", "png", "pdf"))

@@ -8,7 +8,7 @@ module             figures
 ``trajectories``   Figs 7, 11, 13-14, 16-17 and the start-height study
 ``critical``       Figs 8, 12 (Vcr), 15 (Vci), 18 (omega_c)
 ``turning``        Fig. 9 (turning angle)
-``perforation``    beyond the paper: ballistic limit, residual velocity (issue 11)
+``perforation``    beyond the paper: ballistic limit, residual velocity, measured vs predicted
 =================  =====================================================================
 
 Each ``plot_*`` function takes the study's dataset and returns a
@@ -24,7 +24,7 @@ from matplotlib.figure import Figure
 
 from .critical import plot_fig8, plot_fig12, plot_fig15, plot_fig18
 from .depth import plot_fig5, plot_table2, plot_verification
-from .perforation import plot_ballistic_limit, plot_residual_velocity
+from .perforation import plot_ballistic_limit, plot_measurements, plot_residual_velocity
 from .style import STYLE, new_figure, save_figure, styled
 from .trajectories import plot_fig7, plot_fig11, plot_fig13, plot_fig16, plot_start_height
 from .turning import plot_fig9
@@ -49,6 +49,7 @@ __all__ = [
     "plot_fig18",
     "plot_ballistic_limit",
     "plot_residual_velocity",
+    "plot_measurements",
     "PLOTS",
 ]
 
@@ -64,6 +65,7 @@ PLOTS: dict[str, Callable[..., Figure]] = {
     "fig12": plot_fig12,
     "ballistic_limit": plot_ballistic_limit,
     "residual_velocity": plot_residual_velocity,
+    "measurements": plot_measurements,
     "fig13": plot_fig13,
     "fig15": plot_fig15,
     "fig16": plot_fig16,

@@ -1,5 +1,6 @@
 """Perforation figures (beyond the paper, issue 11): ballistic limit against slab thickness
-and obliquity, and residual velocity against impact velocity with the Recht-Ipson fit."""
+and obliquity, residual velocity against impact velocity with the Recht-Ipson fit, and
+measured against predicted for the validation against published measurements."""
 
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ from matplotlib.figure import Figure
 from .critical import _search_errorbars
 from .style import _MARKERS, _VI, _c, _pname, new_figure, styled
 
-__all__ = ["plot_ballistic_limit", "plot_residual_velocity"]
+__all__ = ["plot_ballistic_limit", "plot_residual_velocity", "plot_measurements"]
 
 
 @styled
@@ -66,4 +67,53 @@ def plot_residual_velocity(ds: xr.Dataset) -> Figure:
         f"{ds.attrs.get('obliquity_deg', 0.0):g}° (model prediction)",
         fontsize=9,
     )
+    return fig
+
+
+@styled
+def plot_measurements(ds: xr.Dataset) -> Figure:
+    """Measured against predicted, one panel per quantity, with the error statistics.
+
+    The 1:1 line and +-10 % / +-20 % bands; each data file in its own marker; the text
+    box gives n, the mean relative error with its 95 % interval, the RMS and the largest
+    relative error (pencore.studies.measurements.error_statistics).
+    """
+    quantities = list(ds["quantity"].values)
+    fig = new_figure(5.2 * len(quantities), 4.8)
+    for iq, q in enumerate(quantities):
+        ax = fig.add_subplot(1, len(quantities), iq + 1)
+        sel = ds["quantity_of_shot"].values == q
+        sub = ds.isel(shot=np.flatnonzero(sel))
+        units = str(sub["measured_units"].values[0]).replace("m s-1", "m/s")
+        m, p = sub["measured"].values, sub["predicted"].values
+        lo, hi = 0.0, 1.1 * float(max(m.max(), p.max()))
+        x = np.array([lo, hi])
+        ax.plot(x, x, "-", color="0.3", lw=0.8, label="predicted = measured")
+        for f, alpha in ((0.1, 0.18), (0.2, 0.09)):
+            ax.fill_between(x, x * (1 - f), x * (1 + f), color="0.5", alpha=alpha, lw=0,
+                            label=f"±{f:.0%}")  # fmt: skip
+        for k, name in enumerate(dict.fromkeys(sub["dataset"].values)):
+            d = sub["dataset"].values == name
+            label = str(sub["label"].values[d][0]) if "label" in sub else name
+            ax.plot(m[d], p[d], _MARKERS[k % len(_MARKERS)], color=_c(k), ms=6, label=label)
+        s = {k[5:]: float(ds[k].sel(quantity=q)) for k in ds.data_vars if k.startswith("stat_")}
+        ax.text(
+            0.03,
+            0.97,
+            f"n = {s['n']:.0f}\nmean error {s['mean_rel_error']:+.1%} "
+            f"(95 % CI {s['ci95_lo']:+.1%} to {s['ci95_hi']:+.1%})\n"
+            f"RMS {s['rms_rel_error']:.1%}, largest {s['max_abs_rel_error']:.1%}",
+            transform=ax.transAxes,
+            va="top",
+            fontsize=8,
+            bbox={"facecolor": "white", "edgecolor": "0.7", "alpha": 0.9},
+        )
+        qname = q.replace("_", " ")
+        ax.set_xlabel(f"Measured {qname} ({units})")
+        ax.set_ylabel(f"pencore {qname} ({units})")
+        ax.set_xlim(lo, hi)
+        ax.set_ylim(lo, hi)
+        ax.set_aspect("equal")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7, frameon=False, loc="lower right")
     return fig

@@ -1,0 +1,117 @@
+"""Validation against published measurements (pencore.studies.measurements): data-file
+checks, error statistics, predictions that are the solver's own results."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from pencore import simulate
+from pencore.library import get_target
+from pencore.studies.measurements import (
+    error_statistics,
+    load_measurements,
+    measured_vs_predicted,
+)
+from pencore.target import Layer, Target
+from pencore.validate import InputError
+
+HEADER = "test,velocity_m_s,obliquity_deg,yaw_deg,measured_depth_m,source\n"
+
+
+def _csv(tmp_path, text, name="m.csv"):
+    p = tmp_path / name
+    p.write_text(text)
+    return str(p)
+
+
+def _entry(path, **kw):
+    return {"name": "t", "csv": path, "projectile": "p2", "target": "soil", **kw}
+
+
+def test_error_statistics_closed_form():
+    # e = predicted / measured - 1 = +0.1 and -0.1: mean 0, RMS 0.1, largest 0.1, and the
+    # t interval of two values is mean +- t(0.975, 1) * sd / sqrt(2) with sd = 0.1 sqrt(2)
+    s = error_statistics([1.0, 2.0], [1.1, 1.8])
+    assert s["n"] == 2
+    assert s["mean_rel_error"] == pytest.approx(0.0, abs=1e-15)
+    assert s["rms_rel_error"] == pytest.approx(0.1, rel=1e-12)
+    assert s["max_abs_rel_error"] == pytest.approx(0.1, rel=1e-12)
+    assert s["ci95_hi"] == pytest.approx(12.706204736 * 0.1, rel=1e-8)
+    assert s["ci95_lo"] == pytest.approx(-s["ci95_hi"], rel=1e-12)
+    one = error_statistics([2.0], [3.0])
+    assert one["mean_rel_error"] == pytest.approx(0.5) and math.isnan(one["ci95_lo"])
+
+
+@pytest.mark.parametrize(
+    "text, needle",
+    [
+        ("test,velocity_m_s,obliquity_deg,yaw_deg,source\n1,300,0,0,x\n", "exactly one"),
+        (HEADER, "no rows"),
+        (HEADER + "1,300,0,0,4.0,\n", "no source"),
+        (HEADER + "1,-300,0,0,4.0,src\n", "velocity must be > 0"),
+        (HEADER + "1,abc,0,0,4.0,src\n", "velocity_m_s must be a finite number"),
+        ("test,velocity_m_s,obliquity_deg,source\n1,300,0,src\n", "lacks column"),
+        (
+            "test,velocity_m_s,obliquity_deg,yaw_deg,measured_residual_velocity_m_s,source\n"
+            "1,300,0,0,100,src\n",
+            "thickness_m > 0",
+        ),
+    ],
+)
+def test_bad_files_one_line(tmp_path, text, needle):
+    with pytest.raises(InputError, match=needle) as e:
+        load_measurements(_entry(_csv(tmp_path, text)))
+    assert "\n" not in str(e.value)
+
+
+def test_bad_entries(tmp_path):
+    path = _csv(tmp_path, HEADER + "1,300,0,0,4.0,src\n")
+    with pytest.raises(InputError, match="did you mean"):
+        load_measurements({**_entry(path), "projectil": "p2"})
+    with pytest.raises(InputError, match="no such file"):
+        load_measurements(_entry(str(tmp_path / "missing.csv")))
+    with pytest.raises(InputError, match="depth_measure"):
+        load_measurements(_entry(path, depth_measure="depth"))
+    with pytest.raises(InputError, match="no projectile/target"):
+        load_measurements({"name": "t", "csv": path})
+    with pytest.raises(InputError, match="duplicate shots"):
+        measured_vs_predicted([_entry(path), _entry(path)])
+
+
+def test_predictions_are_the_solver_results(tmp_path):
+    """A depth row predicts exactly the path length (or vertical depth) of the same run;
+    a residual-velocity row on a slab thinner than the depth predicts the run's residual
+    velocity, and one thicker than the depth predicts 0 (no perforation)."""
+    depth_csv = _csv(tmp_path, HEADER + "a,300,20,1,4.0,src\n", "d.csv")
+    rv_csv = _csv(
+        tmp_path,
+        "test,velocity_m_s,obliquity_deg,yaw_deg,thickness_m,"
+        "measured_residual_velocity_m_s,source\nthin,300,0,0,1.0,100,src\n"
+        "thick,300,0,0,20.0,0,src\n",
+        "r.csv",
+    )
+    ds = measured_vs_predicted(
+        [
+            _entry(depth_csv, name="d"),
+            _entry(depth_csv, name="v", depth_measure="vertical_depth"),
+            _entry(rv_csv, name="r"),
+        ]
+    )
+    run = simulate("p2", "soil", 300.0, 20.0, 1.0)
+    assert float(ds.predicted.sel(shot="d:a")) == float(run.path_length)
+    assert float(ds.predicted.sel(shot="v:a")) == float(run.penetration_depth)
+    medium = get_target("soil").layers[0].medium
+    thin = simulate("p2", Target("slab", (Layer(medium, 1.0),)), 300.0)
+    assert thin.attrs["outcome"] == "perforated"
+    assert float(ds.predicted.sel(shot="r:thin")) == float(thin.attrs["residual_velocity"])
+    assert float(ds.predicted.sel(shot="r:thick")) == 0.0
+    assert str(ds.outcome.sel(shot="r:thick").values) != "perforated"
+    # the statistics are those of the rows of each quantity
+    sel = ds.quantity_of_shot.values == "penetration_depth"
+    expect = error_statistics(ds.measured.values[sel], ds.predicted.values[sel])
+    got = float(ds.stat_rms_rel_error.sel(quantity="penetration_depth"))
+    assert got == pytest.approx(expect["rms_rel_error"], rel=1e-15)
+    assert np.allclose(ds.rel_error, ds.predicted / ds.measured - 1.0, equal_nan=True)
