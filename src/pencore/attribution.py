@@ -44,9 +44,11 @@ import json
 import math
 import time
 from collections.abc import Mapping
+from pathlib import Path
 from typing import Any
 
 import numpy as np
+import pandas as pd
 import xarray as xr
 
 from . import analysis, critical
@@ -57,16 +59,33 @@ from .solver import SPIN_CENTRES, prepare, simulate
 from .target import Target
 from .validate import InputError, check_keys, number
 
-__all__ = ["disputed_quantities", "PAPER", "CHOICES", "paper_comparison"]
+__all__ = ["disputed_quantities", "PAPER", "CHOICES", "paper_comparison"]  # noqa: F822
 
-#: The paper's values of the disputed quantities (Li & Flores-Johnson 2011).
-PAPER: dict[str, Any] = {
-    "alpha": {5.0: 0.14, 20.0: 2.86},  # deg, Sect. 4.3 text on Figs 16-17
-    "turned_back": {25.0: True},  # "moves back to the surface" at 25 rad/s
-    "vcr_bracket": (1641.0, 1650.0),  # m/s, Fig. 7 text: 1641 does not, 1650 does
-    "depth_280": 4.25,  # m, Table 2 test 2 (predicted)
-    "phi_p4": {280.0: 0.16, 1000.0: 0.24},  # deg, Sect. 4.3 text on Figs 13-14
-}
+TABLE2_CSV = Path(__file__).resolve().parents[2] / "config" / "table2.csv"
+
+
+def _paper() -> dict[str, Any]:
+    """The paper's values of the disputed quantities, from ``config/paper_claims.csv``
+    (:mod:`pencore.studies.claims`) and, for the Table 2 depth, ``config/table2.csv``."""
+    from .studies.claims import paper_values
+
+    pv = paper_values()
+    t2 = pd.read_csv(TABLE2_CSV, comment="#").set_index("test")
+    return {
+        "alpha": dict(pv["fig16_alpha_deg"]),  # deg, Sect. 4.3 text on Figs 16-17
+        "turned_back": {pv["fig16_reverses_at"]: True},  # "moves back to the surface"
+        "vcr_bracket": pv["vcr_p2_45_bracket"],  # m/s, Fig. 7 text: 1641 no, 1650 yes
+        "depth_280": float(t2.loc[2, "paper_predicted_depth_m"]),  # m, Table 2 test 2
+        "phi_p4": dict(pv["fig13_phi_deg"]),  # deg, Sect. 4.3 text on Figs 13-14
+    }
+
+
+def __getattr__(name: str) -> Any:
+    """``PAPER``: the paper's values of the disputed quantities (read from the claims)."""
+    if name == "PAPER":
+        return _paper()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 #: Allowed keys of a setting.
 CHOICES = (
@@ -170,6 +189,8 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
     ]
     wall["phi_p4"] = time.perf_counter() - t0
 
+    PAPER = _paper()  # noqa: N806 -- the module-level name, read once per call
+
     def attrs(units: str, long_name: str) -> dict[str, str]:
         return {"units": units, "long_name": long_name}
 
@@ -229,6 +250,7 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
 def paper_comparison(ds: xr.Dataset) -> dict[str, float]:
     """Relative differences (pencore / paper - 1) of one :func:`disputed_quantities`
     result, and whether the turn-back verdict at 25 rad/s agrees (1.0) or not (0.0)."""
+    PAPER = _paper()  # noqa: N806 -- the module-level name, read once per call
     out = {
         f"alpha_{w:g}": float(ds.alpha.sel(omega=w)) / PAPER["alpha"][w] - 1.0 for w in (5.0, 20.0)
     }

@@ -6,7 +6,8 @@
 #   s4_gather            joins the parts: results/fig8/vcr.nc, results/fig12/vcr_yaw.nc,
 #                        results/fig15/vci.nc, results/fig18/omega_c.nc
 #   s4_<study>_figure    PNG + PDF from the dataset (restyling does not rerun the solver)
-#   s4_paper_comparison  results/paper_comparison.csv: the paper's numbers beside pencore's
+#   s4_paper_comparison  results/paper_comparison.csv: every claim of config/paper_claims.csv
+#                        beside pencore's value
 # Physics in pencore.studies.{config,comparison} (from_config, gather, paper_comparison); figures in
 # pencore.plotting. Each rule gets only the config entries it reads (params), so
 # editing one study reruns only that study.
@@ -119,6 +120,7 @@ rule s4_paper_comparison:
     input:
         **{kind: dataset for kind, (_, dataset) in S4_DATASETS.items()},
         table2="results/validation/table2.csv",
+        claims="config/paper_claims.csv",
     output:
         csv="results/paper_comparison.csv",
     log:

@@ -4,14 +4,18 @@ import pandas as pd
 from _common import start_log
 
 from pencore.io import read_netcdf
+from pencore.studies.claims import load_claims
 from pencore.studies.comparison import paper_comparison
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], "paper_comparison")
 
-datasets = {k: read_netcdf(v) for k, v in smk.input.items() if k != "table2"}
+datasets = {k: read_netcdf(v) for k, v in smk.input.items() if k not in ("table2", "claims")}
 table2 = pd.read_csv(smk.input.table2)
+claims = load_claims(smk.input.claims)
+log.info("%d claims from %s", len(claims), smk.input.claims)
 df = paper_comparison(
+    claims=claims,
     **datasets,
     table2=table2,
     yaw_convention=smk.params.yaw_convention,

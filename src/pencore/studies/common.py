@@ -15,7 +15,7 @@ from ..library import InputError, get_projectile
 
 __all__ = [
     "PROJECTILES",
-    "PAPER",
+    "PAPER",  # noqa: F822 -- provided by the module __getattr__ below
     "TRAJECTORY_VARIABLES",
     "projectile_coords",
     "start_from_height",
@@ -28,25 +28,14 @@ __all__ = [
 PROJECTILES = ("p1", "p2", "p3", "p4")
 
 
-#: Numbers the paper states in Section 4 (provenance ``paper``), and brackets derived from
-#: them (provenance ``derived``: how).
-PAPER: dict[str, Any] = {
-    # Fig. 7 (#2, 45 deg, tip from (-1, 1) m): 1641 does not turn back, 1650 and 1700 do
-    "fig7_reverses": {1641.0: False, 1650.0: True, 1700.0: True},
-    "fig7_x_linear_m": 7.0,  # "curvilinear -> linear at x approx 7 m" for 1641-1700
-    # derived from fig7_reverses: Vcr of #2 at 45 deg is in (1641, 1650]
-    "vcr_p2_45_bracket": (1641.0, 1650.0),
-    # Figs 13-14 (#4, yaw 0.1 deg, normal impact): deviation phi (deg)
-    "fig13_phi_deg": {280.0: 0.16, 1000.0: 0.24},
-    "fig13_large_at": 2200.0,
-    # Figs 16-17 (#2, 1000 m/s, normal impact): deviation alpha (deg), reversal at 25
-    "fig16_alpha_deg": {5.0: 0.14, 20.0: 2.86},
-    "fig16_reverses_at": 25.0,
-    # derived: omega_c of #2 at 1000 m/s is in (20, 25] rad/s
-    "omega_c_p2_1000_bracket": (20.0, 25.0),
-    # Table 3
-    "table3": {"p1": (19.1, 0.504), "p2": (23.1, 0.525), "p3": (32.8, 0.553), "p4": (45.3, 0.571)},
-}
+def __getattr__(name: str) -> Any:
+    """``PAPER``: the paper's Section 3-4 numbers, read from ``config/paper_claims.csv``
+    (:func:`pencore.studies.claims.paper_values`) when first asked for."""
+    if name == "PAPER":
+        from .claims import paper_values
+
+        return paper_values()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 #: Time histories kept in trajectory datasets (all written by :func:`pencore.simulate`,

@@ -1,10 +1,15 @@
-"""The paper comparison table: every number and trend Section 4 of the paper states,
-beside pencore's.
+"""The paper comparison table: every claim of ``config/paper_claims.csv`` beside pencore's.
+
+Each claim names, in its ``computed_by`` column, an entry of :data:`HANDLERS`: a function
+of the claim and the study datasets that returns the claim's table rows (none when its
+study was not given). The paper's values come from the claim, never from code; verdicts
+on the paper's trends are computed from the datasets with :func:`trend`.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Mapping
 from typing import Any
 
 import numpy as np
@@ -13,15 +18,464 @@ import xarray as xr
 
 from .. import analysis
 from ..library import get_projectile
-from .common import PAPER
-from .comparison_rows import _COLUMNS, _nose_rows, _pencore_rel, _row, _search_lines, _search_value
+from ..validate import InputError
+from .claims import at, load_claims
+from .comparison_rows import (
+    _COLUMNS,
+    _nose_rows,
+    _pencore_rel,
+    _row,
+    _search_lines,
+    _search_value,
+)
 from .trends import trend
 
-__all__ = ["paper_comparison"]
+__all__ = ["paper_comparison", "HANDLERS"]
+
+Claim = Mapping[str, Any]
+Rows = list[dict[str, Any]]
+
+
+def _close(values: Any, v: float) -> bool:
+    return bool(np.any(np.isclose(np.asarray(values, float), v)))
+
+
+def _trend_row(quantity: str, claim: Claim, lines: list, source: str) -> dict[str, Any]:
+    tr = trend(lines, claim["value"])
+    return _row(quantity, claim["value"], tr.verdict, "", tr.note(), "trend", source)
+
+
+# ----------------------------------------------------------------------------- Tables 2, 3
+
+
+def _table2_rows(c: Claim, d: Mapping[str, Any]) -> Rows:
+    t2 = d.get("table2")
+    if t2 is None:
+        return []
+    rows = []
+    for _, r in t2.iterrows():
+        paper = float(r["paper_predicted_depth_m"])
+        pen = float(r["pencore_depth_m"])
+        rows.append(
+            _row(
+                f"Table 2 test {int(r['test'])}: penetration depth "
+                f"(V={r['velocity_m_s']:g} m/s, obliquity {r['obliquity_deg']:g} deg, "
+                f"yaw {r['yaw_deg']:g} deg)",
+                paper,
+                pen,
+                "m",
+                f"{_pencore_rel(pen, paper)}; measured {r['measured_depth_m']:g} m; "
+                f"pencore {r['projectile']}, {r['depth_measure']} (selected as closest "
+                "to the paper's column)",
+                "value",
+                "results/validation/table2.csv",
+            )
+        )
+    return rows
+
+
+def _table3(c: Claim, d: Mapping[str, Any], what: str) -> Rows:
+    if not d.get("table3", True):
+        return []
+    p = str(at(c["at"])[0]["projectile"])
+    proj = get_projectile(p)
+    mp = proj.mass_properties()
+    pen = float(mp.mass) if what == "mass" else float(mp.lc / proj.length)
+    return [
+        _row(
+            f"Table 3 {p}: {'mass' if what == 'mass' else 'Lc/L'}",
+            float(c["value"]),
+            pen,
+            c["units"],
+            "pencore geometry derived by pencore.library.table3_fit",
+            "value",
+            "pencore.library",
+        )
+    ]
+
+
+# ----------------------------------------------------------------------------- Figs 7-9
+
+
+def _fig7_reverses(c: Claim, d: Mapping[str, Any]) -> Rows:
+    fig7 = d.get("fig7")
+    v = float(at(c["at"])[0]["velocity"])
+    if fig7 is None or not _close(fig7["velocity"], v):
+        return []
+    pen_rev = bool(int(fig7["reversed"].sel(velocity=v, method="nearest")))
+    return [
+        _row(
+            f"Fig. 7 (#2, 45 deg, tip from (-1, 1) m): turns back at Vi = {v:g} m/s",
+            c["value"],
+            "yes" if pen_rev else "no",
+            "",
+            "",
+            "verdict",
+            "results/fig7/trajectories.nc: reversed",
+        )
+    ]
+
+
+def _fig7_x_linear(c: Claim, d: Mapping[str, Any]) -> Rows:
+    fig7 = d.get("fig7")
+    if fig7 is None:
+        return []
+    rows = []
+    for cond in at(c["at"]):
+        v = float(cond["velocity"])
+        if not _close(fig7["velocity"], v):
+            continue
+        x2 = float(fig7["x_linear"].sel(velocity=v, method="nearest"))
+        rows.append(
+            _row(
+                f"Fig. 7: x where the curved path becomes straight, Vi = {v:g} m/s",
+                float(c["value"]),
+                x2 if math.isfinite(x2) else "n/a",
+                "m",
+                "paper: approximately 7 m for 1641-1700 m/s; pencore: centre of "
+                "mass x at Point 2 (|curvature| below 5 % of its peak)",
+                "value",
+                "results/fig7/trajectories.nc: x_linear",
+            )
+        )
+    return rows
+
+
+def _vcr_p2_45(c: Claim, d: Mapping[str, Any]) -> Rows:
+    fig8 = d.get("fig8")
+    if fig8 is None or "p2" not in fig8["projectile"].values or not _close(fig8["obliquity"], 45):
+        return []
+    lo_p, hi_p = float(c["value"]), float(c["value_hi"])
+    val, note = _search_value(fig8, "vcr", {"projectile": "p2", "obliquity": 45.0})
+    mid = 0.5 * (lo_p + hi_p)
+    return [
+        _row(
+            "Vcr of #2 at 45 deg obliquity (Fig. 7)",
+            mid,
+            val,
+            c["units"],
+            f"paper: {lo_p:g} does not reverse, {hi_p:g} does (derived: midpoint "
+            f"of ({lo_p:g}, {hi_p:g}]); pencore {note}; {_pencore_rel(val, mid)}",
+            "value",
+            "results/fig8/vcr.nc: vcr",
+        )
+    ]
+
+
+def _search_trend(study: str, name: str, along: str, quantity: str, source: str):
+    def handler(c: Claim, d: Mapping[str, Any]) -> Rows:
+        ds = d.get(study)
+        if ds is None:
+            return []
+        return [_trend_row(quantity, c, _search_lines(ds, name, along), source)]
+
+    return handler
+
+
+def _fig9_lc(c: Claim, d: Mapping[str, Any]) -> Rows:
+    fig9 = d.get("fig9")
+    if fig9 is None:
+        return []
+    f0 = float(fig9.attrs.get("primary_bracket_fraction", analysis.DEFAULT_BRACKET_FRACTION))
+    fr = fig9["bracket_fraction"].values
+    fsel = fr[int(np.argmin(np.abs(fr - f0)))]
+    dth = fig9["delta_theta"].sel(bracket_fraction=fsel).values
+    tr = trend([("delta_theta", fig9["lc_over_l"].values, dth, dth)], c["value"])
+    spread = fig9["delta_theta"].max("bracket_fraction") - fig9["delta_theta"].min(
+        "bracket_fraction"
+    )
+    values = ", ".join(
+        f"{p}: {v:.2f} deg" for p, v in zip(fig9["projectile"].values, dth, strict=True)
+    )
+    return [
+        _row(
+            "Fig. 9: total turning angle d(theta)_12 against Lc/L (45 deg, 1000 m/s)",
+            c["value"],
+            tr.verdict,
+            "",
+            f"{tr.note()}; values {values} (bracket fraction {fsel:g}; other fractions "
+            f"move them by up to {float(spread.max()):.2f} deg)",
+            "trend",
+            "results/fig9/turning_angle.nc",
+        )
+    ]
+
+
+# ----------------------------------------------------------------------------- Figs 11-12
+
+
+def _fig11_nose(c: Claim, d: Mapping[str, Any]) -> Rows:
+    fig11 = d.get("fig11")
+    if fig11 is None:
+        return []
+    neg, pos = str(c["value"]).split("/")[::-1]  # "-x/+x": positive yaw -x, negative +x
+    rows = []
+    for y in fig11["yaw"].values:
+        if float(y) == 0.0:
+            continue
+        sub = fig11.sel(yaw=y)
+        rows.append(
+            _row(
+                f"Fig. 11 (#4, {fig11.attrs.get('velocity_fixed', 1000):g} m/s, "
+                f"{fig11.attrs.get('obliquity_fixed', 30):g} deg): nose direction at "
+                f"the end, yaw {y:g} deg",
+                neg if y < 0 else pos,
+                str(sub["nose_direction"].item()),
+                "",
+                "paper: implied by the text (negative yaw keeps the nose +x, positive "
+                "yaw can turn it to -x); pencore: sign of the axis x component at the "
+                f"end of the run ({sub['outcome'].item()}, final theta "
+                f"{float(sub['final_theta']):.0f} deg)",
+                "verdict",
+                "results/fig11/trajectories.nc: nose_direction",
+            )
+        )
+    return rows
+
+
+def _fig12_nose(c: Claim, d: Mapping[str, Any]) -> Rows:
+    fig12 = d.get("fig12")
+    if fig12 is None or "nose_direction" not in fig12:
+        return []
+    return _nose_rows(fig12)
+
+
+# ----------------------------------------------------------------------------- Figs 13-15
+
+
+def _fig13_phi(c: Claim, d: Mapping[str, Any]) -> Rows:
+    fig13 = d.get("fig13")
+    v, phi = float(at(c["at"])[0]["velocity"]), float(c["value"])
+    if fig13 is None or not _close(fig13["velocity"], v):
+        return []
+    rows = []
+    for conv in (str(x) for x in fig13["convention"].values):
+        pen = float(fig13["final_deviation"].sel(convention=conv, velocity=v))
+        tag = " (configured)" if conv == d.get("yaw_convention", "axis_tilted") else ""
+        rows.append(
+            _row(
+                f"Fig. 13: deviation phi of #4, yaw 0.1 deg, Vi = {v:g} m/s, {conv}{tag}",
+                phi,
+                pen,
+                c["units"],
+                f"{_pencore_rel(pen, phi)}; phi = final deviation (last state with "
+                "speed >= 0.1 Vi)",
+                "value",
+                "results/fig13/trajectories.nc",
+            )
+        )
+    return rows
+
+
+def _fig13_large(c: Claim, d: Mapping[str, Any]) -> Rows:
+    fig13 = d.get("fig13")
+    v = float(at(c["at"])[0]["velocity"])
+    if fig13 is None or not _close(fig13["velocity"], v):
+        return []
+    thr = d.get("vci_threshold")
+    thr = 5.0 if thr is None else float(thr)
+    rows = []
+    for conv in (str(x) for x in fig13["convention"].values):
+        pen = float(fig13["final_deviation"].sel(convention=conv, velocity=v))
+        rev = int(fig13["reversed"].sel(convention=conv, velocity=v))
+        rows.append(
+            _row(
+                f"Fig. 13: large deviation at Vi = {v:g} m/s, {conv}",
+                c["value"],
+                "yes" if (pen > thr or rev) else "no",
+                "",
+                f"pencore phi = {pen:.3g} deg, reversed = {rev}; 'large' = above "
+                f"the Vci threshold {thr:g} deg",
+                "verdict",
+                "results/fig13/trajectories.nc",
+            )
+        )
+    return rows
+
+
+def _fig15(along: str, label: str):
+    def handler(c: Claim, d: Mapping[str, Any]) -> Rows:
+        fig15 = d.get("fig15")
+        if fig15 is None:
+            return []
+        th = fig15["threshold"].values
+        thr = d.get("vci_threshold")
+        t0 = float(th[np.argmin(np.abs(th - (5.0 if thr is None else thr)))])
+        return [
+            _trend_row(
+                f"Fig. 15: Vci against {label} (threshold {t:g} deg"
+                f"{', primary' if t == t0 else ''})",
+                c,
+                _search_lines(fig15, "vci", along, fixed={"threshold": t}),
+                "results/fig15/vci.nc",
+            )
+            for t in th
+        ]
+
+    return handler
+
+
+# ----------------------------------------------------------------------------- Figs 16-18
+
+
+def _fig16_alpha(c: Claim, d: Mapping[str, Any]) -> Rows:
+    w, a = float(at(c["at"])[0]["omega"]), float(c["value"])
+    rows = []
+    fig16, sh = d.get("fig16"), d.get("start_height")
+    if fig16 is not None and _close(fig16["omega"], w):
+        h = float(fig16.attrs.get("start_height_m", 0.0))
+        pen = float(fig16["final_deviation"].sel(omega=w))
+        rows.append(
+            _row(
+                f"Fig. 16: deviation alpha of #2, 1000 m/s, omega = {w:g} rad/s",
+                a,
+                pen,
+                c["units"],
+                f"{_pencore_rel(pen, a)}; tip starting {h:g} m above the surface",
+                "value",
+                "results/fig16/trajectories.nc",
+            )
+        )
+    if sh is not None and _close(sh["omega"], w):
+        for hh in sh["start_height"].values:
+            pen = float(sh["alpha"].sel(omega=w, start_height=hh))
+            rev = int(sh["reversed"].sel(omega=w, start_height=hh))
+            rows.append(
+                _row(
+                    f"Start-height sensitivity: alpha at omega = {w:g} rad/s, tip {hh:g} m above",
+                    a,
+                    pen,
+                    c["units"],
+                    f"{_pencore_rel(pen, a)}; reversed = {rev}",
+                    "value",
+                    "results/fig16/start_height.nc",
+                )
+            )
+    return rows
+
+
+def _fig16_reverses(c: Claim, d: Mapping[str, Any]) -> Rows:
+    w = float(at(c["at"])[0]["omega"])
+    rows = []
+    fig16, sh = d.get("fig16"), d.get("start_height")
+    if fig16 is not None and _close(fig16["omega"], w):
+        h = float(fig16.attrs.get("start_height_m", 0.0))
+        rev = int(fig16["reversed"].sel(omega=w))
+        rows.append(
+            _row(
+                f"Fig. 16: turns back at omega = {w:g} rad/s (#2, 1000 m/s)",
+                c["value"],
+                "yes" if rev else "no",
+                "",
+                f"tip starting {h:g} m above the surface",
+                "verdict",
+                "results/fig16/trajectories.nc",
+            )
+        )
+    if sh is not None and _close(sh["omega"], w):
+        for hh in sh["start_height"].values:
+            pen = float(sh["alpha"].sel(omega=w, start_height=hh))
+            rev = int(sh["reversed"].sel(omega=w, start_height=hh))
+            rows.append(
+                _row(
+                    f"Start-height sensitivity: turns back at omega = {w:g} rad/s, "
+                    f"tip {hh:g} m above",
+                    c["value"],
+                    "yes" if rev else "no",
+                    "",
+                    f"alpha = {pen:.3g} deg",
+                    "verdict",
+                    "results/fig16/start_height.nc",
+                )
+            )
+    return rows
+
+
+def _omega_c_p2(c: Claim, d: Mapping[str, Any]) -> Rows:
+    fig18 = d.get("fig18")
+    if (
+        fig18 is None
+        or "p2" not in fig18["projectile"].values
+        or not _close(fig18["velocity"], 1000.0)
+    ):
+        return []
+    lo_p, hi_p = float(c["value"]), float(c["value_hi"])
+    val, note = _search_value(fig18, "omega_c", {"projectile": "p2", "velocity": 1000.0})
+    return [
+        _row(
+            "omega_c of #2 at 1000 m/s (Figs 16-17)",
+            0.5 * (lo_p + hi_p),
+            val,
+            c["units"],
+            f"paper: {lo_p:g} does not turn back, {hi_p:g} does (derived: midpoint of "
+            f"({lo_p:g}, {hi_p:g}]); pencore {note}",
+            "value",
+            "results/fig18/omega_c.nc",
+        )
+    ]
+
+
+#: ``computed_by`` of a claim -> function(claim, datasets) -> table rows.
+HANDLERS: dict[str, Callable[[Claim, Mapping[str, Any]], Rows]] = {
+    "table2_rows": _table2_rows,
+    "table3_mass": lambda c, d: _table3(c, d, "mass"),
+    "table3_lc": lambda c, d: _table3(c, d, "lc"),
+    "fig7_reverses": _fig7_reverses,
+    "fig7_x_linear": _fig7_x_linear,
+    "vcr_p2_45": _vcr_p2_45,
+    "fig8_obliquity": _search_trend(
+        "fig8", "vcr", "obliquity", "Fig. 8: Vcr against obliquity", "results/fig8/vcr.nc"
+    ),
+    "fig8_lc": _search_trend(
+        "fig8", "vcr", "projectile", "Fig. 8: Vcr against Lc/L", "results/fig8/vcr.nc"
+    ),
+    "fig9_lc": _fig9_lc,
+    "fig11_nose": _fig11_nose,
+    "fig12_yaw": _search_trend(
+        "fig12", "vcr", "yaw", "Fig. 12: Vcr against yaw", "results/fig12/vcr_yaw.nc"
+    ),
+    "fig12_obliquity": _search_trend(
+        "fig12",
+        "vcr",
+        "obliquity",
+        "Fig. 12: Vcr against obliquity (30 -> 60 deg)",
+        "results/fig12/vcr_yaw.nc",
+    ),
+    "fig12_lc": _search_trend(
+        "fig12",
+        "vcr",
+        "projectile",
+        "Fig. 12: Vcr against Lc/L (#2 -> #4)",
+        "results/fig12/vcr_yaw.nc",
+    ),  # fmt: skip
+    "fig12_nose": _fig12_nose,
+    "fig13_phi": _fig13_phi,
+    "fig13_large": _fig13_large,
+    "fig15_lc": _fig15("projectile", "Lc/L"),
+    "fig15_yaw": _fig15("yaw", "yaw"),
+    "fig16_alpha": _fig16_alpha,
+    "fig16_reverses": _fig16_reverses,
+    "omega_c_p2": _omega_c_p2,
+    "fig18_velocity": _search_trend(
+        "fig18",
+        "omega_c",
+        "velocity",
+        "Fig. 18: omega_c against impact velocity",
+        "results/fig18/omega_c.nc",
+    ),  # fmt: skip
+    "fig18_lc": _search_trend(
+        "fig18",
+        "omega_c",
+        "projectile",
+        "Fig. 18: omega_c against Lc/L",
+        "results/fig18/omega_c.nc",
+    ),  # fmt: skip
+}
 
 
 def paper_comparison(
     *,
+    claims: pd.DataFrame | None = None,
     fig7: xr.Dataset | None = None,
     fig8: xr.Dataset | None = None,
     fig9: xr.Dataset | None = None,
@@ -37,417 +491,40 @@ def paper_comparison(
     yaw_convention: str = "axis_tilted",
     vci_threshold: float | None = None,
 ) -> pd.DataFrame:
-    """Every number and trend the paper states in Sections 3-4, beside pencore's.
+    """Every claim of the claims file beside pencore's value, in the file's order.
 
-    Each argument is the dataset of one study (``None`` skips its rows); ``table2`` is the
-    validation table (``results/validation/table2.csv``). Verdicts on the paper's trends
-    are computed here from the datasets with :func:`trend`, never written in.
+    Parameters
+    ----------
+    claims : pandas.DataFrame, optional
+        :func:`pencore.studies.claims.load_claims` (default: ``config/paper_claims.csv``).
+    fig7 ... fig18, start_height : xarray.Dataset, optional
+        The study datasets; ``None`` skips the claims they compute.
+    table2 : pandas.DataFrame, optional
+        ``results/validation/table2.csv``. ``table3``: include the Table 3 rows.
 
     Returns
     -------
     pandas.DataFrame
         Columns ``quantity, paper_value, pencore_value, difference, units, note, kind,
-        source``. ``kind`` is ``value`` (``difference`` = pencore - paper), ``verdict``
-        (a yes/no statement; ``difference`` = agrees / differs) or ``trend``
-        (``paper_value`` is the claim, ``pencore_value`` holds / partly holds / does not
-        hold / undetermined, with the count of steps in ``note``).
+        source, claim, where``. ``kind`` is ``value`` (``difference`` = pencore - paper),
+        ``verdict`` (``difference`` = agrees / differs) or ``trend`` (``pencore_value``
+        holds / partly holds / does not hold / undetermined, the count of steps in
+        ``note``); brackets are compared at their midpoint, with the bracket in ``note``.
     """
-    rows: list[dict[str, Any]] = []
-    add = rows.append
-
-    # ---- Section 3: Table 2 and Table 3
-    if table2 is not None:
-        for _, r in table2.iterrows():
-            paper = float(r["paper_predicted_depth_m"])
-            pen = float(r["pencore_depth_m"])
-            add(
-                _row(
-                    f"Table 2 test {int(r['test'])}: penetration depth "
-                    f"(V={r['velocity_m_s']:g} m/s, obliquity {r['obliquity_deg']:g} deg, "
-                    f"yaw {r['yaw_deg']:g} deg)",
-                    paper,
-                    pen,
-                    "m",
-                    f"{_pencore_rel(pen, paper)}; measured {r['measured_depth_m']:g} m; "
-                    f"pencore {r['projectile']}, {r['depth_measure']} (selected as closest "
-                    "to the paper's column)",
-                    "value",
-                    "results/validation/table2.csv",
-                )
+    df = load_claims() if claims is None else claims
+    data = dict(
+        fig7=fig7, fig8=fig8, fig9=fig9, fig11=fig11, fig12=fig12, fig13=fig13, fig15=fig15,
+        fig16=fig16, start_height=start_height, fig18=fig18, table2=table2, table3=table3,
+        yaw_convention=yaw_convention, vci_threshold=vci_threshold,
+    )  # fmt: skip
+    rows: Rows = []
+    for c in df.to_dict("records"):
+        handler = HANDLERS.get(c["computed_by"])
+        if handler is None:
+            raise InputError(
+                f"paper claims: claim {c['id']!r} has computed_by {c['computed_by']!r}, "
+                f"which pencore does not know (one of {', '.join(HANDLERS)})"
             )
-    if table3:
-        for p, (m, lcl) in PAPER["table3"].items():
-            proj = get_projectile(p)
-            mp = proj.mass_properties()
-            add(
-                _row(
-                    f"Table 3 {p}: mass",
-                    m,
-                    float(mp.mass),
-                    "kg",
-                    "pencore geometry derived by pencore.library.table3_fit",
-                    "value",
-                    "pencore.library",
-                )
-            )
-            add(
-                _row(
-                    f"Table 3 {p}: Lc/L",
-                    lcl,
-                    float(mp.lc / proj.length),
-                    "1",
-                    "pencore geometry derived by pencore.library.table3_fit",
-                    "value",
-                    "pencore.library",
-                )
-            )
-
-    # ---- Fig. 7
-    if fig7 is not None:
-        vel = fig7["velocity"].values
-        for v, rev in PAPER["fig7_reverses"].items():
-            if np.any(np.isclose(vel, v)):
-                pen_rev = bool(int(fig7["reversed"].sel(velocity=v, method="nearest")))
-                add(
-                    _row(
-                        f"Fig. 7 (#2, 45 deg, tip from (-1, 1) m): turns back at Vi = {v:g} m/s",
-                        "yes" if rev else "no",
-                        "yes" if pen_rev else "no",
-                        "",
-                        "",
-                        "verdict",
-                        "results/fig7/trajectories.nc: reversed",
-                    )
-                )
-        for v in (1641.0, 1650.0, 1700.0):
-            if np.any(np.isclose(vel, v)):
-                x2 = float(fig7["x_linear"].sel(velocity=v, method="nearest"))
-                add(
-                    _row(
-                        f"Fig. 7: x where the curved path becomes straight, Vi = {v:g} m/s",
-                        PAPER["fig7_x_linear_m"],
-                        x2 if math.isfinite(x2) else "n/a",
-                        "m",
-                        "paper: approximately 7 m for 1641-1700 m/s; pencore: centre of "
-                        "mass x at Point 2 (|curvature| below 5 % of its peak)",
-                        "value",
-                        "results/fig7/trajectories.nc: x_linear",
-                    )
-                )
-
-    # ---- Fig. 8
-    if fig8 is not None:
-        lo_p, hi_p = PAPER["vcr_p2_45_bracket"]
-        if "p2" in fig8["projectile"].values and np.any(np.isclose(fig8["obliquity"], 45.0)):
-            val, note = _search_value(fig8, "vcr", {"projectile": "p2", "obliquity": 45.0})
-            mid = 0.5 * (lo_p + hi_p)
-            add(
-                _row(
-                    "Vcr of #2 at 45 deg obliquity (Fig. 7)",
-                    mid,
-                    val,
-                    "m s-1",
-                    f"paper: {lo_p:g} does not reverse, {hi_p:g} does (derived: midpoint "
-                    f"of ({lo_p:g}, {hi_p:g}]); pencore {note}; {_pencore_rel(val, mid)}",
-                    "value",
-                    "results/fig8/vcr.nc: vcr",
-                )
-            )
-        tr = trend(_search_lines(fig8, "vcr", "obliquity"), "falls")
-        add(
-            _row(
-                "Fig. 8: Vcr against obliquity",
-                "falls",
-                tr.verdict,
-                "",
-                tr.note(),
-                "trend",
-                "results/fig8/vcr.nc",
-            )
-        )
-        tr = trend(_search_lines(fig8, "vcr", "projectile"), "falls")
-        add(
-            _row(
-                "Fig. 8: Vcr against Lc/L",
-                "falls",
-                tr.verdict,
-                "",
-                tr.note(),
-                "trend",
-                "results/fig8/vcr.nc",
-            )
-        )
-
-    # ---- Fig. 9
-    if fig9 is not None:
-        f0 = float(fig9.attrs.get("primary_bracket_fraction", analysis.DEFAULT_BRACKET_FRACTION))
-        fsel = fig9["bracket_fraction"].values[
-            int(np.argmin(np.abs(fig9["bracket_fraction"].values - f0)))
-        ]
-        dth = fig9["delta_theta"].sel(bracket_fraction=fsel).values
-        tr = trend([("delta_theta", fig9["lc_over_l"].values, dth, dth)], "rises")
-        spread = fig9["delta_theta"].max("bracket_fraction") - fig9["delta_theta"].min(
-            "bracket_fraction"
-        )
-        add(
-            _row(
-                "Fig. 9: total turning angle d(theta)_12 against Lc/L (45 deg, 1000 m/s)",
-                "rises",
-                tr.verdict,
-                "",
-                tr.note()
-                + "; values "
-                + ", ".join(
-                    f"{p}: {v:.2f} deg" for p, v in zip(fig9["projectile"].values, dth, strict=True)
-                )
-                + f" (bracket fraction {fsel:g}; other fractions move them by up to "
-                f"{float(spread.max()):.2f} deg)",
-                "trend",
-                "results/fig9/turning_angle.nc",
-            )
-        )
-
-    # ---- Figs 11-12
-    if fig11 is not None:
-        for y in fig11["yaw"].values:
-            if float(y) == 0.0:
-                continue
-            expect = "+x" if y < 0 else "-x"
-            sub = fig11.sel(yaw=y)
-            add(
-                _row(
-                    f"Fig. 11 (#4, {fig11.attrs.get('velocity_fixed', 1000):g} m/s, "
-                    f"{fig11.attrs.get('obliquity_fixed', 30):g} deg): nose direction at "
-                    f"the end, yaw {y:g} deg",
-                    expect,
-                    str(sub["nose_direction"].item()),
-                    "",
-                    "paper: implied by the text (negative yaw keeps the nose +x, positive "
-                    "yaw can turn it to -x); pencore: sign of the axis x component at the "
-                    f"end of the run ({sub['outcome'].item()}, final theta "
-                    f"{float(sub['final_theta']):.0f} deg)",
-                    "verdict",
-                    "results/fig11/trajectories.nc: nose_direction",
-                )
-            )
-    if fig12 is not None:
-        tr = trend(_search_lines(fig12, "vcr", "yaw"), "falls")
-        add(
-            _row(
-                "Fig. 12: Vcr against yaw",
-                "falls",
-                tr.verdict,
-                "",
-                tr.note(),
-                "trend",
-                "results/fig12/vcr_yaw.nc",
-            )
-        )
-        tr = trend(_search_lines(fig12, "vcr", "obliquity"), "falls")
-        add(
-            _row(
-                "Fig. 12: Vcr against obliquity (30 -> 60 deg)",
-                "falls",
-                tr.verdict,
-                "",
-                tr.note(),
-                "trend",
-                "results/fig12/vcr_yaw.nc",
-            )
-        )
-        tr = trend(_search_lines(fig12, "vcr", "projectile"), "falls")
-        add(
-            _row(
-                "Fig. 12: Vcr against Lc/L (#2 -> #4)",
-                "falls",
-                tr.verdict,
-                "",
-                tr.note(),
-                "trend",
-                "results/fig12/vcr_yaw.nc",
-            )
-        )
-        if "nose_direction" in fig12:
-            for row in _nose_rows(fig12):
-                add(row)
-
-    # ---- Figs 13-14
-    if fig13 is not None:
-        convs = [str(c) for c in fig13["convention"].values]
-        for v, phi in PAPER["fig13_phi_deg"].items():
-            if not np.any(np.isclose(fig13["velocity"], v)):
-                continue
-            for c in convs:
-                pen = float(fig13["final_deviation"].sel(convention=c, velocity=v))
-                tag = " (configured)" if c == yaw_convention else ""
-                add(
-                    _row(
-                        f"Fig. 13: deviation phi of #4, yaw 0.1 deg, Vi = {v:g} m/s, {c}{tag}",
-                        phi,
-                        pen,
-                        "degree",
-                        f"{_pencore_rel(pen, phi)}; phi = final deviation (last state with "
-                        "speed >= 0.1 Vi)",
-                        "value",
-                        "results/fig13/trajectories.nc",
-                    )
-                )
-        v_l = PAPER["fig13_large_at"]
-        if np.any(np.isclose(fig13["velocity"], v_l)):
-            thr = 5.0 if vci_threshold is None else float(vci_threshold)
-            for c in convs:
-                pen = float(fig13["final_deviation"].sel(convention=c, velocity=v_l))
-                rev = int(fig13["reversed"].sel(convention=c, velocity=v_l))
-                add(
-                    _row(
-                        f"Fig. 13: large deviation at Vi = {v_l:g} m/s, {c}",
-                        "yes",
-                        "yes" if (pen > thr or rev) else "no",
-                        "",
-                        f"pencore phi = {pen:.3g} deg, reversed = {rev}; 'large' = above "
-                        f"the Vci threshold {thr:g} deg",
-                        "verdict",
-                        "results/fig13/trajectories.nc",
-                    )
-                )
-
-    # ---- Fig. 15
-    if fig15 is not None:
-        th = fig15["threshold"].values
-        t0 = float(th[np.argmin(np.abs(th - (5.0 if vci_threshold is None else vci_threshold)))])
-        for t in th:
-            tr = trend(_search_lines(fig15, "vci", "projectile", fixed={"threshold": t}), "falls")
-            add(
-                _row(
-                    f"Fig. 15: Vci against Lc/L (threshold {t:g} deg"
-                    f"{', primary' if t == t0 else ''})",
-                    "falls",
-                    tr.verdict,
-                    "",
-                    tr.note(),
-                    "trend",
-                    "results/fig15/vci.nc",
-                )
-            )
-            tr = trend(_search_lines(fig15, "vci", "yaw", fixed={"threshold": t}), "falls")
-            add(
-                _row(
-                    f"Fig. 15: Vci against yaw (threshold {t:g} deg"
-                    f"{', primary' if t == t0 else ''})",
-                    "falls",
-                    tr.verdict,
-                    "",
-                    tr.note(),
-                    "trend",
-                    "results/fig15/vci.nc",
-                )
-            )
-
-    # ---- Figs 16-17
-    if fig16 is not None:
-        h = float(fig16.attrs.get("start_height_m", 0.0))
-        for w, a in PAPER["fig16_alpha_deg"].items():
-            if np.any(np.isclose(fig16["omega"], w)):
-                pen = float(fig16["final_deviation"].sel(omega=w))
-                add(
-                    _row(
-                        f"Fig. 16: deviation alpha of #2, 1000 m/s, omega = {w:g} rad/s",
-                        a,
-                        pen,
-                        "degree",
-                        f"{_pencore_rel(pen, a)}; tip starting {h:g} m above the surface",
-                        "value",
-                        "results/fig16/trajectories.nc",
-                    )
-                )
-        w = PAPER["fig16_reverses_at"]
-        if np.any(np.isclose(fig16["omega"], w)):
-            rev = int(fig16["reversed"].sel(omega=w))
-            add(
-                _row(
-                    f"Fig. 16: turns back at omega = {w:g} rad/s (#2, 1000 m/s)",
-                    "yes",
-                    "yes" if rev else "no",
-                    "",
-                    f"tip starting {h:g} m above the surface",
-                    "verdict",
-                    "results/fig16/trajectories.nc",
-                )
-            )
-    if start_height is not None:
-        for w in start_height["omega"].values:
-            a_paper = PAPER["fig16_alpha_deg"].get(float(w))
-            for hh in start_height["start_height"].values:
-                pen = float(start_height["alpha"].sel(omega=w, start_height=hh))
-                rev = int(start_height["reversed"].sel(omega=w, start_height=hh))
-                if a_paper is not None:
-                    add(
-                        _row(
-                            f"Start-height sensitivity: alpha at omega = {w:g} rad/s, tip "
-                            f"{hh:g} m above",
-                            a_paper,
-                            pen,
-                            "degree",
-                            f"{_pencore_rel(pen, a_paper)}; reversed = {rev}",
-                            "value",
-                            "results/fig16/start_height.nc",
-                        )
-                    )
-                elif float(w) == PAPER["fig16_reverses_at"]:
-                    add(
-                        _row(
-                            f"Start-height sensitivity: turns back at omega = {w:g} rad/s, "
-                            f"tip {hh:g} m above",
-                            "yes",
-                            "yes" if rev else "no",
-                            "",
-                            f"alpha = {pen:.3g} deg",
-                            "verdict",
-                            "results/fig16/start_height.nc",
-                        )
-                    )
-
-    # ---- Fig. 18
-    if fig18 is not None:
-        if "p2" in fig18["projectile"].values and np.any(np.isclose(fig18["velocity"], 1000.0)):
-            lo_p, hi_p = PAPER["omega_c_p2_1000_bracket"]
-            mid = 0.5 * (lo_p + hi_p)
-            val, note = _search_value(fig18, "omega_c", {"projectile": "p2", "velocity": 1000.0})
-            add(
-                _row(
-                    "omega_c of #2 at 1000 m/s (Figs 16-17)",
-                    mid,
-                    val,
-                    "rad s-1",
-                    f"paper: 20 does not turn back, 25 does (derived: midpoint of (20, 25]); "
-                    f"pencore {note}",
-                    "value",
-                    "results/fig18/omega_c.nc",
-                )
-            )
-        tr = trend(_search_lines(fig18, "omega_c", "velocity"), "falls")
-        add(
-            _row(
-                "Fig. 18: omega_c against impact velocity",
-                "falls",
-                tr.verdict,
-                "",
-                tr.note(),
-                "trend",
-                "results/fig18/omega_c.nc",
-            )
-        )
-        tr = trend(_search_lines(fig18, "omega_c", "projectile"), "falls")
-        add(
-            _row(
-                "Fig. 18: omega_c against Lc/L",
-                "falls",
-                tr.verdict,
-                "",
-                tr.note(),
-                "trend",
-                "results/fig18/omega_c.nc",
-            )
-        )
-
-    return pd.DataFrame(rows, columns=_COLUMNS)
+        for r in handler(c, data):
+            rows.append({**r, "claim": c["id"], "where": c["where"]})
+    return pd.DataFrame(rows, columns=[*_COLUMNS, "claim", "where"])
