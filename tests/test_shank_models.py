@@ -240,3 +240,18 @@ def test_spin_about_the_tip_keeps_the_tip_velocity():
     assert y[7] == pytest.approx(-20.0 * pr.lc, rel=1e-12)  # w z x (lc, 0, 0) along -y axis
     with pytest.raises(pencore.InputError, match="spin_about"):
         pencore.simulate("p2", "soil", 300.0, spin_about="nose")
+
+
+def test_searches_take_the_shank_model():
+    """critical.vcr passes shank= to prepare(): factor 1 is the DAFL itself (identical
+    bracket), and a halved shank load lowers Vcr of #2 at 45 deg well below the default
+    (1067 against 1575 m/s in benchmarks/results/attribution.csv), so the two brackets
+    of width 100 m/s are disjoint."""
+    from pencore import critical
+
+    kw = dict(lo=600.0, hi=2600.0, tol=100.0, scan=None, start=(-1.0, 1.0, 0.0))
+    base = critical.vcr("p2", "soil", 45.0, **kw)
+    one = critical.vcr("p2", "soil", 45.0, shank={"kind": "factor", "factor": 1.0}, **kw)
+    half = critical.vcr("p2", "soil", 45.0, shank={"kind": "factor", "factor": 0.5}, **kw)
+    assert (one.lo, one.hi) == (base.lo, base.hi)
+    assert half.hi < base.lo

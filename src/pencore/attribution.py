@@ -33,6 +33,10 @@ The choices (keys of the dict; all optional):
 ``numerics``     mapping of :class:`pencore.Numerics` overrides (e.g. a coarse mesh);
 ``start_height`` tip height (m) above the surface at t = 0 for the normal impacts;
 ``spin_about``   ``"cm"`` (the paper: "about the centre of mass") or ``"tip"``;
+``reversal``     what "turns back" means: ``"turns_back"`` (default: the centre-of-mass
+                 velocity turns towards the surface while in the target) or ``"exits"``
+                 (the body comes back out of the target, the paper's words for Fig. 7
+                 read literally); applies to ``vcr`` and ``turned_back``
 ``yaw_reading``  ``"axis_tilted"`` or ``"velocity_tilted"``
                  (:func:`pencore.critical.normal_impact_angles`);
 ``friction``     constant Coulomb coefficient of the soil (the paper: frictionless).
@@ -95,10 +99,12 @@ CHOICES = (
     "start_height",
     "spin_about",
     "yaw_reading",
+    "reversal",
     "friction",
 )
 
 OMEGAS = (5.0, 20.0, 25.0)
+REVERSALS = ("turns_back", "exits")
 PHI_SPEEDS = (280.0, 1000.0)
 VCR_RANGE = (600.0, 2600.0)
 VCR_START = (-1.0, 1.0, 0.0)
@@ -123,10 +129,22 @@ def _setting(choices: Mapping[str, Any]) -> dict[str, Any]:
             f"attribution spin_about must be one of {', '.join(SPIN_CENTRES)}, "
             f"got {s['spin_about']!r}"
         )
+    s["reversal"] = s.get("reversal", "turns_back")
+    if s["reversal"] not in REVERSALS:
+        raise InputError(
+            f"attribution reversal must be one of {', '.join(REVERSALS)}, got {s['reversal']!r}"
+        )
     s["yaw_reading"] = s.get("yaw_reading", "axis_tilted")
     critical.normal_impact_angles(0.1, s["yaw_reading"])  # checks the name
     s["friction"] = number(s.get("friction", 0.0), "friction", "attribution")
     return s
+
+
+def _turned_back(ds: xr.Dataset, reversal: str) -> bool:
+    """Whether a run turned back, read as ``reversal`` (:data:`REVERSALS`)."""
+    if reversal == "exits":
+        return str(ds.attrs["outcome"]) == "exited"
+    return bool(ds.attrs["reversed"])
 
 
 def _target(friction: float) -> Target:
@@ -165,14 +183,15 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
         ds = simulate("p2", target, 1000.0, omega=w, start=start, prepared=p2,
                       spin_about=s["spin_about"])  # fmt: skip
         alpha.append(analysis.final_deviation(ds))
-        back.append(bool(ds.attrs["reversed"]))
+        back.append(_turned_back(ds, s["reversal"]))
     wall["alpha"] = time.perf_counter() - t0
 
     t0 = time.perf_counter()
 
     def verdict(v: float) -> bool:
-        ds = simulate("p2", target, v, 45.0, start=VCR_START, stop_at_reversal=True, prepared=p2)
-        return bool(ds.attrs["reversed"])
+        ds = simulate("p2", target, v, 45.0, start=VCR_START, prepared=p2,
+                      stop_at_reversal=s["reversal"] == "turns_back")  # fmt: skip
+        return _turned_back(ds, s["reversal"])
 
     res = critical.find_threshold(verdict, *VCR_RANGE, critical.VELOCITY_TOL, scan=5)
     wall["vcr"] = time.perf_counter() - t0

@@ -166,6 +166,15 @@ def check_config(config: Mapping[str, Any], root: str | Path = ".") -> None:
             _fail("validation.table2.csv", f"cannot read {str(path)!r}: {exc.strerror}")
         if len(lines) < 2:
             _fail("validation.table2.csv", f"{str(path)!r} has a header but no rows")
+    settings = config.get("attribution", {}).get("settings")
+    if settings:
+        from .studies.attribution import check_settings
+        from .validate import InputError
+
+        try:
+            check_settings(settings)
+        except InputError as exc:
+            _fail("attribution.settings", str(exc))
 
 
 def schema_error_message(config: Mapping[str, Any], schema: Mapping[str, Any]) -> str:

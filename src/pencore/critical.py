@@ -312,7 +312,9 @@ def _split(kwargs: dict[str, Any], fixed: set[str]) -> tuple[Numerics | None, di
     if bad:
         raise InputError(f"argument(s) {', '.join(sorted(bad))} are set by the search itself")
     numerics = kwargs.pop("numerics", None)
-    overrides = {k: kwargs.pop(k) for k in list(kwargs) if k in Numerics.__dataclass_fields__}
+    # numerics overrides and the models (shank=, emulation=) all go to prepare()
+    to_prepare = set(Numerics.__dataclass_fields__) | {"shank", "emulation"}
+    overrides = {k: kwargs.pop(k) for k in list(kwargs) if k in to_prepare}
     unknown = set(kwargs) - {"start"}
     if unknown:
         raise InputError(f"unknown argument(s): {', '.join(sorted(unknown))}")
@@ -374,7 +376,9 @@ def vcr(
         See :func:`find_threshold`; by default a 5-point scan guards against a
         non-monotone verdict.
     **simulate_kwargs
-        ``numerics=``, numerics overrides (``rtol=``, ``eps=``, ...) and ``start=``.
+        ``numerics=``, numerics overrides (``rtol=``, ``eps=``, ...), ``start=``, and the
+        shank contact model and paper-emulation numerics (``shank=``, ``emulation=``;
+        :mod:`pencore.models`).
     """
     numerics, overrides, sim = _split(dict(simulate_kwargs), _FIXED)
     pr = prepare(projectile, target, numerics, **overrides)

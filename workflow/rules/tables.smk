@@ -22,6 +22,13 @@ REPORT_TABLES = {
         "Comparison with the paper",
         "Comparison with the paper",
     ),
+    "attribution_table": (
+        "results/attribution/attribution_table.csv",
+        "attribution_table.rst",
+        "2 Section 4 (Figs 7-18)",
+        "Why the numbers differ",
+        "Attribution: the closest reading of each paper number",
+    ),
 }
 
 

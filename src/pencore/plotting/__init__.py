@@ -9,6 +9,7 @@ module             figures
 ``critical``       Figs 8, 12 (Vcr), 15 (Vci), 18 (omega_c)
 ``turning``        Fig. 9 (turning angle)
 ``perforation``    beyond the paper: ballistic limit, residual velocity, measured vs predicted
+``attribution``    why the numbers differ from the paper: one panel per disputed number
 =================  =====================================================================
 
 Each ``plot_*`` function takes the study's dataset and returns a
@@ -22,6 +23,7 @@ from collections.abc import Callable
 
 from matplotlib.figure import Figure
 
+from .attribution import plot_attribution
 from .critical import plot_fig8, plot_fig12, plot_fig15, plot_fig18
 from .depth import plot_fig5, plot_table2, plot_verification
 from .perforation import plot_ballistic_limit, plot_measurements, plot_residual_velocity
@@ -50,6 +52,7 @@ __all__ = [
     "plot_ballistic_limit",
     "plot_residual_velocity",
     "plot_measurements",
+    "plot_attribution",
     "PLOTS",
 ]
 
@@ -66,6 +69,7 @@ PLOTS: dict[str, Callable[..., Figure]] = {
     "ballistic_limit": plot_ballistic_limit,
     "residual_velocity": plot_residual_velocity,
     "measurements": plot_measurements,
+    "attribution": plot_attribution,
     "fig13": plot_fig13,
     "fig15": plot_fig15,
     "fig16": plot_fig16,

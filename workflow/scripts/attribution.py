@@ -1,0 +1,17 @@
+"""Rule attribution_setting: thin adapter to pencore.studies.attribution.run_setting."""
+
+from _common import start_log
+
+from pencore.io import write_netcdf
+from pencore.studies.attribution import NUMBERS, gather, run_setting
+
+smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
+setting = dict(smk.params.setting)
+log = start_log(smk.log[0], f"attribution_{setting['name']}")
+log.info("setting %s: %s", setting["name"], setting.get("choices"))
+ds = run_setting(setting)
+write_netcdf(ds, smk.output.nc, config_slice={"attribution.setting": setting}, study="attribution")
+one = gather([ds])
+for k, (label, units) in NUMBERS.items():
+    log.info("%s: %.6g %s (paper %.6g)", label, float(one[f"value_{k}"][0]), units,
+             float(one[f"paper_{k}"]))  # fmt: skip

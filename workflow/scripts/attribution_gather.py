@@ -1,0 +1,22 @@
+"""Rule attribution_gather: thin adapter to pencore.studies.attribution.gather/table."""
+
+import pandas as pd
+from _common import start_log
+
+from pencore.io import read_netcdf, write_netcdf
+from pencore.studies.attribution import attribution_table, gather
+
+smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
+log = start_log(smk.log[0], "attribution_gather")
+
+ds = gather([read_netcdf(p) for p in smk.input.parts])
+write_netcdf(
+    ds,
+    smk.output.nc,
+    config_slice={"attribution.settings": list(smk.params.settings)},
+    study="attribution",
+)
+table = attribution_table(ds)
+table.to_csv(smk.output.csv, index=False)
+with pd.option_context("display.width", 250, "display.max_colwidth", 60):
+    log.info("attribution:\n%s", table.to_string(index=False))
