@@ -49,6 +49,7 @@ include: "workflow/rules/common.smk"
 include: "workflow/rules/validation.smk"
 include: "workflow/rules/section4.smk"
 include: "workflow/rules/attribution.smk"
+include: "workflow/rules/ensemble.smk"
 include: "workflow/rules/tables.smk"
 # >>> issue 11: perforation of finite slabs (beyond the paper) >>>
 include: "workflow/rules/perforation.smk"

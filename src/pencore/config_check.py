@@ -166,6 +166,18 @@ def check_config(config: Mapping[str, Any], root: str | Path = ".") -> None:
             _fail("validation.table2.csv", f"cannot read {str(path)!r}: {exc.strerror}")
         if len(lines) < 2:
             _fail("validation.table2.csv", f"{str(path)!r} has a header but no rows")
+    cases = config.get("ensemble", {}).get("cases") or []
+    names = [c.get("name") for c in cases if isinstance(c, Mapping)]
+    if len(set(names)) != len(names):
+        _fail("ensemble.cases", f"duplicate case names {sorted(names)}")
+    for i, case in enumerate(cases):
+        from .studies.ensemble import check_case
+        from .validate import InputError
+
+        try:
+            check_case(case)
+        except InputError as exc:
+            _fail(f"ensemble.cases[{i}]", str(exc))
     settings = config.get("attribution", {}).get("settings")
     if settings:
         from .studies.attribution import check_settings

@@ -10,6 +10,7 @@ module             figures
 ``turning``        Fig. 9 (turning angle)
 ``perforation``    beyond the paper: ballistic limit, residual velocity, measured vs predicted
 ``attribution``    why the numbers differ from the paper: one panel per disputed number
+``ensemble``       Monte Carlo ensembles: distributions and convergence against N
 =================  =====================================================================
 
 Each ``plot_*`` function takes the study's dataset and returns a
@@ -26,6 +27,7 @@ from matplotlib.figure import Figure
 from .attribution import plot_attribution
 from .critical import plot_fig8, plot_fig12, plot_fig15, plot_fig18
 from .depth import plot_fig5, plot_table2, plot_verification
+from .ensemble import plot_ensemble
 from .perforation import plot_ballistic_limit, plot_measurements, plot_residual_velocity
 from .style import STYLE, new_figure, save_figure, styled
 from .trajectories import plot_fig7, plot_fig11, plot_fig13, plot_fig16, plot_start_height
@@ -53,6 +55,7 @@ __all__ = [
     "plot_residual_velocity",
     "plot_measurements",
     "plot_attribution",
+    "plot_ensemble",
     "PLOTS",
 ]
 
@@ -70,6 +73,7 @@ PLOTS: dict[str, Callable[..., Figure]] = {
     "residual_velocity": plot_residual_velocity,
     "measurements": plot_measurements,
     "attribution": plot_attribution,
+    "ensemble": plot_ensemble,
     "fig13": plot_fig13,
     "fig15": plot_fig15,
     "fig16": plot_fig16,

@@ -1,0 +1,355 @@
+"""Ensemble (Monte Carlo) studies: N impacts drawn from stated distributions, run in
+chunks that are separate jobs, gathered with outcome probabilities and distributions.
+
+An ensemble *case* names a projectile and a target, ``n_samples``, ``n_chunks``, a
+``seed``, and a distribution for each impact variable (config units at the edge):
+
+================  =========  ==========================================================
+key               units      meaning (as in :func:`pencore.simulate`)
+================  =========  ==========================================================
+``velocity_m_s``  m/s        impact speed
+``obliquity_deg`` degree     angle of the projectile axis from the target normal
+``yaw_deg``       degree     velocity angle minus axis angle
+``omega_rad_s``   rad/s      initial angular velocity about the in-plane normal
+``azimuth_deg``   degree     rotation of the whole impact about the target normal
+================  =========  ==========================================================
+
+A distribution is ``{dist: fixed, value}``, ``{dist: uniform, min, max}`` or
+``{dist: normal, mean, sd}`` with optional ``min`` / ``max`` (a truncated normal, drawn by
+inverse CDF); a bare number means ``fixed``. All N samples are drawn at once from
+``numpy.random.default_rng(seed)``, one row of uniforms per sample (a column per variable
+in the order of the table), so sample ``i`` is the same whatever the chunking and
+whatever N (:func:`sample_conditions`): a larger ensemble extends a smaller one.
+
+Per sample (:func:`run_chunk`): outcome, reversed, perforated (outcome ``perforated``;
+always 0 for a semi-infinite target), penetration depth and path length of the tip, the
+tip's horizontal travel in the impact plane (``downrange``) and across it
+(``cross_range``; zero by the model's symmetry, a check), and the final attitude
+(deviation of the velocity from the normal, angle of the axis from the normal).
+:func:`gather` adds probabilities with Wilson 95 % intervals, means with Student-t 95 %
+intervals, quantiles with distribution-free (binomial order-statistic) 95 % intervals,
+and the running estimates against N for the convergence plot.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import numpy as np
+import xarray as xr
+from scipy import stats
+
+from ..solver import prepare, simulate
+from ..validate import InputError, _as_float, check_keys
+
+__all__ = [
+    "VARIABLES",
+    "check_case",
+    "sample_conditions",
+    "chunk_indices",
+    "run_chunk",
+    "gather",
+    "wilson_interval",
+    "quantile_interval",
+]
+
+#: Impact variables: config key -> (simulate argument, units, long name).
+VARIABLES: dict[str, tuple[str, str, str]] = {
+    "velocity_m_s": ("velocity", "m s-1", "impact velocity"),
+    "obliquity_deg": ("obliquity", "degree", "obliquity (axis from the target normal)"),
+    "yaw_deg": ("yaw", "degree", "yaw (velocity angle minus axis angle)"),
+    "omega_rad_s": ("omega", "rad s-1", "initial angular velocity"),
+    "azimuth_deg": ("azimuth", "degree", "azimuth of the impact plane about the normal"),
+}
+CASE_KEYS = ("name", "projectile", "target", "n_samples", "n_chunks", "seed", *VARIABLES)
+QUANTILES = (0.05, 0.5, 0.95)
+#: Results with distributions (variable, units, long name).
+RESULTS = (
+    ("penetration_depth", "m", "deepest point of the nose tip below the surface"),
+    ("path_length", "m", "length of the nose-tip path below the surface"),
+    ("downrange", "m", "horizontal travel of the tip in the impact plane"),
+    ("final_deviation", "degree", "final deviation of the velocity from the normal"),
+    ("final_axis_angle", "degree", "final angle of the axis from the normal"),
+)
+
+
+def _num(value: Any, where: str) -> float:
+    v = _as_float(value, allow_str=False)
+    if v is None or not math.isfinite(v):
+        raise InputError(f"{where} must be a finite number, got {value!r}")
+    return v
+
+
+def _int(value: Any, where: str) -> int:
+    v = _as_float(value, allow_str=False)
+    if v is None or not math.isfinite(v) or v != math.floor(v) or abs(v) > 2**62:
+        raise InputError(f"{where} must be a whole number, got {value!r}")
+    return int(v)
+
+
+def _dist(spec: Any, where: str) -> dict[str, float | str]:
+    if isinstance(spec, bool):
+        raise InputError(f"{where} must be a number or a distribution, got {spec!r}")
+    if isinstance(spec, (int, float)):
+        return {"dist": "fixed", "value": _num(spec, where)}
+    if not isinstance(spec, Mapping):
+        raise InputError(f"{where} must be a number or a distribution, got {spec!r}")
+    kind = spec.get("dist")
+    keys = {"fixed": ("value",), "uniform": ("min", "max"), "normal": ("mean", "sd")}
+    if kind not in keys:
+        raise InputError(f"{where}: dist must be one of fixed, uniform, normal, got {kind!r}")
+    allowed = ("dist", *keys[kind], *(("min", "max") if kind == "normal" else ()))
+    check_keys(spec, allowed, where)
+    d: dict[str, float | str] = {"dist": kind}
+    for k in allowed[1:]:
+        if k in spec:
+            d[k] = _num(spec[k], f"{where}.{k}")
+        elif k in keys[kind]:
+            raise InputError(f"{where}: {kind} needs {k!r}")
+    lo, hi = d.get("min", -math.inf), d.get("max", math.inf)
+    if kind == "uniform" and not lo < hi:
+        raise InputError(f"{where}: uniform needs min < max, got {lo} and {hi}")
+    if kind == "normal":
+        if not d["sd"] > 0:
+            raise InputError(f"{where}: normal needs sd > 0, got {d['sd']}")
+        if not lo < hi:
+            raise InputError(f"{where}: min must be below max, got {lo} and {hi}")
+    return d
+
+
+def check_case(case: Mapping[str, Any]) -> dict[str, Any]:
+    """One ensemble case, checked, with every variable's distribution spelt out.
+
+    Raises
+    ------
+    InputError
+        One line naming the key: unknown keys (with a hint), N < 1, chunks outside
+        1..N, a bad distribution, or ranges the solver refuses (speed <= 0, obliquity
+        outside [0, 90) deg).
+    """
+    if not isinstance(case, Mapping):
+        raise InputError(f"ensemble case must be a mapping, got {case!r}")
+    name = case.get("name", "?")
+    where = f"ensemble {name}"
+    check_keys(case, CASE_KEYS, where)
+    for k in ("name", "projectile", "target"):
+        if not isinstance(case.get(k), str) or not case[k]:
+            raise InputError(f"{where}: {k} must be a non-empty string, got {case.get(k)!r}")
+    n = _int(case.get("n_samples", 100), f"{where}.n_samples")
+    chunks = _int(case.get("n_chunks", 1), f"{where}.n_chunks")
+    if n < 1 or not 1 <= chunks <= n:
+        raise InputError(f"{where}: need n_samples >= 1 and 1 <= n_chunks <= n_samples")
+    out: dict[str, Any] = {
+        "name": name,
+        "projectile": case["projectile"],
+        "target": case["target"],
+        "n_samples": n,
+        "n_chunks": chunks,
+        "seed": _int(case.get("seed", 0), f"{where}.seed"),
+    }
+    defaults = {"velocity_m_s": None, "obliquity_deg": 0.0, "yaw_deg": 0.0,
+                "omega_rad_s": 0.0, "azimuth_deg": 0.0}  # fmt: skip
+    for k, default in defaults.items():
+        if case.get(k, default) is None:
+            raise InputError(f"{where}: {k} is required")
+        out[k] = _dist(case.get(k, default), f"{where}.{k}")
+    _check_support(out["velocity_m_s"], 0.0, math.inf, f"{where}.velocity_m_s", open_lo=True)
+    _check_support(out["obliquity_deg"], 0.0, 90.0, f"{where}.obliquity_deg", open_hi=True)
+    return out
+
+
+def _support(d: Mapping[str, Any]) -> tuple[float, float]:
+    if d["dist"] == "fixed":
+        return float(d["value"]), float(d["value"])
+    if d["dist"] == "uniform":
+        return float(d["min"]), float(d["max"])
+    return float(d.get("min", -math.inf)), float(d.get("max", math.inf))
+
+
+def _check_support(d, lo, hi, where, open_lo=False, open_hi=False) -> None:  # noqa: ANN001
+    a, b = _support(d)
+    bad_lo = a <= lo if open_lo else a < lo
+    bad_hi = b >= hi if open_hi else b > hi
+    if bad_lo or bad_hi:
+        lo_s, hi_s = ("(" if open_lo else "[") + f"{lo:g}", f"{hi:g}" + (")" if open_hi else "]")
+        raise InputError(
+            f"{where}: values must lie in {lo_s}, {hi_s}; the distribution reaches "
+            f"[{a:g}, {b:g}] (set min/max)"
+        )
+
+
+def _transform(d: Mapping[str, Any], u: np.ndarray) -> np.ndarray:
+    """Uniform(0, 1) draws -> the distribution, by inverse CDF."""
+    if d["dist"] == "fixed":
+        return np.full(u.shape, float(d["value"]))
+    if d["dist"] == "uniform":
+        return float(d["min"]) + (float(d["max"]) - float(d["min"])) * u
+    mu, sd = float(d["mean"]), float(d["sd"])
+    a = stats.norm.cdf((float(d.get("min", -math.inf)) - mu) / sd)
+    b = stats.norm.cdf((float(d.get("max", math.inf)) - mu) / sd)
+    return mu + sd * stats.norm.ppf(a + (b - a) * u)
+
+
+def sample_conditions(case: Mapping[str, Any]) -> dict[str, np.ndarray]:
+    """All N impact conditions of a case (config units), identical for any chunking."""
+    c = check_case(case)
+    rng = np.random.default_rng(c["seed"])
+    n = c["n_samples"]
+    # row i holds sample i's uniforms (one per variable, also for fixed ones): the
+    # generator fills the (n, 5) array row by row, so sample i does not depend on n
+    u = rng.random((n, len(VARIABLES)))
+    return {k: _transform(c[k], u[:, j]) for j, k in enumerate(VARIABLES)}
+
+
+def chunk_indices(n_samples: int, n_chunks: int, chunk: int) -> np.ndarray:
+    """Sample indices of chunk ``chunk`` (0-based) of ``n_chunks`` nearly equal chunks."""
+    if not 0 <= chunk < n_chunks:
+        raise InputError(f"ensemble chunk {chunk} outside 0..{n_chunks - 1}")
+    return np.array_split(np.arange(n_samples), n_chunks)[chunk]
+
+
+def _one(pr: Any, c: Mapping[str, Any], cond: Mapping[str, float]) -> dict[str, Any]:
+    kw = {VARIABLES[k][0]: float(v) for k, v in cond.items()}
+    ds = simulate(c["projectile"], c["target"], prepared=pr, **kw)
+    az = math.radians(kw["azimuth"])
+    dx = float(ds["tip_x"][-1] - ds["tip_x"][0])
+    dz = float(ds["tip_z"][-1] - ds["tip_z"][0])
+    ax, ay = float(ds["axis_x"][-1]), float(ds["axis_y"][-1])
+    az_ = float(ds["axis_z"][-1])
+    outcome = str(ds.attrs["outcome"])
+    return {
+        "outcome": outcome,
+        "reversed": int(ds.attrs["reversed"]),
+        "perforated": int(outcome == "perforated"),
+        "penetration_depth": float(ds["penetration_depth"]),
+        "path_length": float(ds["path_length"]),
+        # the azimuth rotation maps +x to (cos az, 0, -sin az) and +z to (sin az, 0, cos az)
+        "downrange": dx * math.cos(az) - dz * math.sin(az),
+        "cross_range": dx * math.sin(az) + dz * math.cos(az),
+        "final_deviation": float(ds["final_deviation"]),
+        "final_axis_angle": math.degrees(math.acos(_clip(-ay / math.hypot(ax, ay, az_)))),
+    }
+
+
+def _clip(c: float) -> float:
+    return max(-1.0, min(1.0, c))
+
+
+def run_chunk(case: Mapping[str, Any], chunk: int, numerics: Any = None) -> xr.Dataset:
+    """Run the samples of one chunk; a Dataset on ``sample`` (global indices)."""
+    c = check_case(case)
+    idx = chunk_indices(c["n_samples"], c["n_chunks"], chunk)
+    cond = sample_conditions(c)
+    pr = prepare(c["projectile"], c["target"], numerics)
+    runs = [_one(pr, c, {k: v[i] for k, v in cond.items()}) for i in idx]
+    data: dict[str, Any] = {}
+    for k, (arg, units, long_name) in VARIABLES.items():
+        data[arg] = ("sample", cond[k][idx], {"units": units, "long_name": long_name})
+    units = dict((r[0], (r[1], r[2])) for r in RESULTS)
+    units["cross_range"] = ("m", "horizontal travel of the tip across the impact plane")
+    for k in runs[0] if runs else ():
+        vals = np.array([r[k] for r in runs])
+        if k == "outcome":
+            data[k] = ("sample", vals.astype(str), {"long_name": "how the run ended"})
+        elif k in ("reversed", "perforated"):
+            data[k] = ("sample", vals.astype(np.int32), {"long_name": f"1: {k}"})
+        else:
+            data[k] = ("sample", vals, {"units": units[k][0], "long_name": units[k][1]})
+    ds = xr.Dataset(data, coords={"sample": ("sample", idx.astype(np.int32))})
+    ds.attrs.update(case_json=json.dumps(c, sort_keys=True), chunk=chunk, n_chunks=c["n_chunks"])
+    return ds
+
+
+def wilson_interval(k: int, n: int, z: float = 1.959963984540054) -> tuple[float, float]:
+    """Wilson score interval (95 % by default) of a probability from k successes in n."""
+    if n <= 0 or not 0 <= k <= n:
+        raise InputError(f"wilson_interval needs 0 <= k <= n and n > 0, got k={k}, n={n}")
+    p = k / n
+    den = 1.0 + z * z / n
+    centre = (p + z * z / (2 * n)) / den
+    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / den
+    # exact ends at k = 0 and k = n (the formula gives them up to round-off)
+    return (0.0 if k == 0 else centre - half), (1.0 if k == n else centre + half)
+
+
+def quantile_interval(x: np.ndarray, q: float, level: float = 0.95) -> tuple[float, float, float]:
+    """Sample quantile and its distribution-free interval from order statistics: the
+    number of samples below the true quantile is Binomial(n, q)."""
+    xs = np.sort(np.asarray(x, float))
+    n = xs.size
+    est = float(np.quantile(xs, q))
+    lo = int(stats.binom.ppf((1 - level) / 2, n, q))
+    hi = int(stats.binom.ppf(1 - (1 - level) / 2, n, q)) + 1
+    return (
+        est,
+        float(xs[max(lo - 1, 0)]) if lo >= 1 else -math.inf,
+        (float(xs[hi - 1]) if hi <= n else math.inf),
+    )
+
+
+def gather(parts: Sequence[xr.Dataset]) -> xr.Dataset:
+    """Join chunk datasets on ``sample`` (sorted) and add the statistics (module doc)."""
+    if not parts:
+        raise InputError("ensemble gather: no parts")
+    ds = xr.concat(list(parts), dim="sample", data_vars="all").sortby("sample")
+    if np.any(np.diff(ds["sample"].values) != 1) or int(ds["sample"][0]) != 0:
+        raise InputError("ensemble gather: the parts do not cover samples 0..N-1 once each")
+    n = ds.sizes["sample"]
+    ds.attrs.pop("chunk", None)
+    for k in ("reversed", "perforated"):
+        hits = int(ds[k].sum())
+        lo, hi = wilson_interval(hits, n)
+        ds[f"p_{k}"] = ((), hits / n, {"units": "1", "long_name": f"probability {k}"})
+        ds[f"p_{k}_ci95"] = ("bound", [lo, hi], {"units": "1", "long_name": "Wilson 95 % interval"})
+    for name, units, long_name in RESULTS:
+        x = ds[name].values
+        mean, sd = float(np.mean(x)), float(np.std(x, ddof=1)) if n > 1 else math.nan
+        half = float(stats.t.ppf(0.975, n - 1) * sd / math.sqrt(n)) if n > 1 else math.nan
+        ds[f"{name}_mean"] = ((), mean, {"units": units, "long_name": f"mean {long_name}"})
+        ds[f"{name}_mean_ci95"] = ("bound", [mean - half, mean + half], {"units": units})
+        ds[f"{name}_sd"] = ((), sd, {"units": units, "long_name": f"standard deviation, {name}"})
+        qs = [quantile_interval(x, q) for q in QUANTILES]
+        ds[f"{name}_quantile"] = ("quantile", [q[0] for q in qs], {"units": units})
+        ds[f"{name}_quantile_ci95"] = (("quantile", "bound"), [q[1:] for q in qs], {"units": units})
+    # running estimates against N (powers of two, then N)
+    ns = sorted({*(2**k for k in range(3, int(math.log2(n)) + 1)), n}) if n >= 8 else [n]
+    rev = ds["reversed"].values
+    dep = ds["penetration_depth"].values
+    run = {"p_reversed": [], "p_lo": [], "p_hi": [], "depth": [], "depth_lo": [], "depth_hi": []}
+    for m in ns:
+        k = int(rev[:m].sum())
+        lo, hi = wilson_interval(k, m)
+        run["p_reversed"].append(k / m)
+        run["p_lo"].append(lo)
+        run["p_hi"].append(hi)
+        mu = float(dep[:m].mean())
+        h = float(stats.t.ppf(0.975, m - 1) * dep[:m].std(ddof=1) / math.sqrt(m)) if m > 1 else 0
+        run["depth"].append(mu)
+        run["depth_lo"].append(mu - h)
+        run["depth_hi"].append(mu + h)
+    ds = ds.assign_coords(
+        n_used=("n_used", np.array(ns, dtype=np.int32), {"long_name": "first N samples"})
+    )
+    ds["running_p_reversed"] = ("n_used", run["p_reversed"], {"units": "1"})
+    ds["running_p_reversed_ci95"] = (
+        ("n_used", "bound"),
+        np.c_[run["p_lo"], run["p_hi"]],
+        {"units": "1"},
+    )
+    ds["running_depth_mean"] = ("n_used", run["depth"], {"units": "m"})
+    ds["running_depth_mean_ci95"] = (
+        ("n_used", "bound"),
+        np.c_[run["depth_lo"], run["depth_hi"]],
+        {"units": "m"},
+    )
+    ds = ds.assign_coords(
+        quantile=("quantile", np.array(QUANTILES)), bound=("bound", np.array(["lower", "upper"]))
+    )
+    ds.attrs["title"] = "pencore ensemble: impacts drawn from stated distributions"
+    case = json.loads(ds.attrs["case_json"])
+    ds.attrs.update(projectile=case["projectile"], target=case["target"], ensemble=case["name"])
+    ds.attrs["n_samples"] = n
+    return ds
