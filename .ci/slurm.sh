@@ -16,10 +16,10 @@ fi
 REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 PY="${PYTHON:-python}"
 RUN_TIMEOUT="${PENCORE_SLURM_TIMEOUT:-300}"
-# The validation rules of .test/config.yaml run in seconds each; the section-4 parts take
-# minutes on 2 shared cores, too long to run twice (Slurm + local) in CI.
-# PENCORE_SLURM_TARGETS=all runs everything.
-TARGETS="${PENCORE_SLURM_TARGETS:-table2 fig5 verification table2_figure fig5_figure verification_figure}"
+# The validation rules and the ensemble (2 chunk jobs + gather + figure) of .test/config.yaml
+# run in seconds each; the section-4 parts take minutes on 2 shared cores, too long to run
+# twice (Slurm + local) in CI. PENCORE_SLURM_TARGETS=all runs everything.
+TARGETS="${PENCORE_SLURM_TARGETS:-table2 fig5 verification table2_figure fig5_figure verification_figure results/ensemble/p2_soil_oblique.nc results/ensemble/p2_soil_oblique.png}"
 T0=$(date +%s)
 WORK="$(mktemp -d /tmp/pencore-slurm.XXXXXX)"
 SLURM_DIR="$WORK/slurm"
