@@ -24,7 +24,11 @@ The quantities (projectile #2 in soil unless stated; paper values in :data:`PAPE
     Table 2 test 2: the tip path length (m) of the normal impact at 280 m/s (paper 4.25);
 ``phi_p4``
     deviation (deg) of projectile #4 in a normal impact with yaw 0.1 deg at 280 and
-    1000 m/s (paper Figs 13-14: 0.16, 0.24), read as ``yaw_reading``.
+    1000 m/s (paper Figs 13-14: 0.16, 0.24), read as ``yaw_reading``;
+``vcr_yaw``
+    Vcr (m/s) of #2 at 30 deg obliquity from (-1, 1) m at yaw 0 and 2 deg on
+    ``fig12_yaw`` (paper Fig. 12: Vcr falls with yaw; the model as written peaks near
+    yaw 0-1 deg).
 
 The choices (keys of the dict; all optional):
 
@@ -71,7 +75,7 @@ TABLE2_CSV = Path(__file__).resolve().parents[2] / "config" / "table2.csv"
 def _paper() -> dict[str, Any]:
     """The paper's values of the disputed quantities, from ``config/paper_claims.csv``
     (:mod:`pencore.studies.claims`) and, for the Table 2 depth, ``config/table2.csv``."""
-    from .studies.claims import paper_values
+    from .studies.claims import claim, paper_values
 
     pv = paper_values()
     t2 = pd.read_csv(TABLE2_CSV, comment="#").set_index("test")
@@ -81,6 +85,7 @@ def _paper() -> dict[str, Any]:
         "vcr_bracket": pv["vcr_p2_45_bracket"],  # m/s, Fig. 7 text: 1641 no, 1650 yes
         "depth_280": float(t2.loc[2, "paper_predicted_depth_m"]),  # m, Table 2 test 2
         "phi_p4": dict(pv["fig13_phi_deg"]),  # deg, Sect. 4.3 text on Figs 13-14
+        "fig12_vcr_yaw": claim("fig12_vcr_yaw")["value"],  # Fig. 12: "falls"
     }
 
 
@@ -108,6 +113,10 @@ REVERSALS = ("turns_back", "exits")
 PHI_SPEEDS = (280.0, 1000.0)
 VCR_RANGE = (600.0, 2600.0)
 VCR_START = (-1.0, 1.0, 0.0)
+#: Fig. 12 check: Vcr of #2 at 30 deg obliquity at these yaws (deg), same start and range
+FIG12_OBLIQUITY = 30.0
+FIG12_YAWS = (0.0, 2.0)
+FIG12_RANGE = (300.0, 4000.0)
 
 
 def _setting(choices: Mapping[str, Any]) -> dict[str, Any]:
@@ -165,6 +174,7 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
     xarray.Dataset
         ``alpha`` (deg) and ``turned_back`` on ``omega`` (rad/s); ``vcr``, ``vcr_lo``,
         ``vcr_hi`` (m/s); ``depth_280`` (m); ``phi_p4`` (deg) on ``phi_velocity`` (m/s);
+        ``vcr_yaw`` (m/s) on ``fig12_yaw`` (deg);
         the paper's values as ``paper_*``; wall times (s) per group. The setting is in
         the attribute ``setting_json``.
     """
@@ -208,6 +218,19 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
     ]
     wall["phi_p4"] = time.perf_counter() - t0
 
+    t0 = time.perf_counter()
+    vcr_yaw = []
+    for yaw in FIG12_YAWS:
+
+        def verdict12(v: float, yaw: float = yaw) -> bool:
+            ds = simulate("p2", target, v, FIG12_OBLIQUITY, yaw, start=VCR_START, prepared=p2,
+                          stop_at_reversal=s["reversal"] == "turns_back")  # fmt: skip
+            return _turned_back(ds, s["reversal"])
+
+        r = critical.find_threshold(verdict12, *FIG12_RANGE, critical.VELOCITY_TOL, scan=5)
+        vcr_yaw.append(r.value)
+    wall["vcr_yaw"] = time.perf_counter() - t0
+
     PAPER = _paper()  # noqa: N806 -- the module-level name, read once per call
 
     def attrs(units: str, long_name: str) -> dict[str, str]:
@@ -231,6 +254,7 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
             "vcr_lo": ((), res.lo, attrs("m s-1", "largest speed found not to turn back")),
             "vcr_hi": ((), res.hi, attrs("m s-1", "smallest speed found to turn back")),
             "depth_280": ((), depth, attrs("m", "tip path length, #2 normal 280 m/s")),
+            "vcr_yaw": ("fig12_yaw", np.array(vcr_yaw), attrs("m s-1", "Vcr, #2 30 deg")),
             "phi_p4": ("phi_velocity", np.array(phi), attrs("degree", "deviation phi, #4 yaw 0.1")),
             "paper_alpha": (
                 "omega",
@@ -257,6 +281,11 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
         coords={
             "omega": ("omega", np.array(OMEGAS), om_attrs),
             "phi_velocity": ("phi_velocity", np.array(PHI_SPEEDS), pv_attrs),
+            "fig12_yaw": (
+                "fig12_yaw",
+                np.array(FIG12_YAWS),
+                attrs("degree", "yaw of the Fig. 12 check (#2, 30 deg obliquity)"),
+            ),
         },
         attrs={
             "title": "pencore attribution: the paper's disputed quantities for one setting",

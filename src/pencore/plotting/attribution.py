@@ -20,6 +20,7 @@ _PANELS = [
     ("depth_280", "Table 2 test 2 depth (m)", False),
     ("phi_p4_280", r"$\varphi$, #4, 280 m/s (deg)", True),
     ("phi_p4_1000", r"$\varphi$, #4, 1000 m/s (deg)", True),
+    ("fig12_falls", r"Fig. 12: $V_{cr}$ (#2, 30°) falls, yaw 0→2°", False),
 ]
 
 
@@ -39,7 +40,7 @@ def plot_attribution(ds: xr.Dataset) -> Figure:
     y = np.arange(n)[::-1]
     tol = float(ds.attrs.get("tolerance", 0.03))
     gcol = {g: _c(i) for i, g in enumerate(dict.fromkeys(groups))}
-    fig = new_figure(15.0, max(2.6, 1.0 + 0.27 * n))
+    fig = new_figure(17.0, max(2.6, 1.0 + 0.27 * n))
     axes = fig.subplots(1, len(_PANELS), sharey=True, gridspec_kw={"wspace": 0.08})
     for ax, (key, title, log) in zip(axes, _PANELS, strict=True):
         v = ds[f"value_{key}"].values.astype(float)
@@ -47,7 +48,7 @@ def plot_attribution(ds: xr.Dataset) -> Figure:
         if "default" in names:
             ax.axhspan(y[names.index("default")] - 0.5, y[names.index("default")] + 0.5,
                        color="0.9", zorder=0)  # fmt: skip
-        if key == "turn_back_25":
+        if key in ("turn_back_25", "fig12_falls"):
             ax.axvline(p, color="crimson", lw=1.5)
             ax.set_xlim(-0.5, 1.5)
             ax.set_xticks([0, 1], ["no", "yes"])
@@ -69,7 +70,7 @@ def plot_attribution(ds: xr.Dataset) -> Figure:
         if log and finite.size and max(finite.max(), p) / min(finite.min(), p) > 20:
             ax.set_xscale("log")
             ax.xaxis.set_minor_formatter(NullFormatter())
-        elif key != "turn_back_25":
+        elif key not in ("turn_back_25", "fig12_falls"):
             ax.xaxis.set_major_locator(MaxNLocator(4))
         ax.set_title(title, fontsize=8)
         ax.grid(alpha=0.3, axis="x")

@@ -19,6 +19,7 @@ The paper numbers (values from ``config/paper_claims.csv``):
 ``depth_280``      Table 2 test 2: path length (m) at 280 m/s (4.25)
 ``phi_p4_280``     deviation phi (deg) of #4, yaw 0.1 deg, 280 m/s (0.16)
 ``phi_p4_1000``    the same at 1000 m/s (0.24)
+``fig12_falls``    Vcr of #2 at 30 deg falls from yaw 0 to 2 deg (Fig. 12: yes)
 =================  ===============================================================
 
 ``vcr`` is compared with the midpoint of the paper's bracket, and "within 3 %" for it
@@ -40,6 +41,9 @@ from ..validate import InputError, check_keys
 
 __all__ = ["NUMBERS", "TOLERANCE", "check_settings", "run_setting", "gather", "attribution_table"]
 
+#: Paper numbers that are yes/no verdicts (1.0 / 0.0): reproduced only when equal.
+VERDICTS = ("turn_back_25", "fig12_falls")
+
 #: Relative tolerance of "reproduces the paper's number".
 TOLERANCE = 0.03
 
@@ -52,6 +56,7 @@ NUMBERS: dict[str, tuple[str, str]] = {
     "depth_280": ("Table 2 test 2 depth at 280 m/s", "m"),
     "phi_p4_280": ("phi of #4, yaw 0.1 deg, 280 m/s (Fig. 13)", "degree"),
     "phi_p4_1000": ("phi of #4, yaw 0.1 deg, 1000 m/s (Fig. 14)", "degree"),
+    "fig12_falls": ("Vcr of #2 at 30 deg falls from yaw 0 to 2 deg (Fig. 12)", "1"),
 }
 SETTING_KEYS = ("name", "label", "group", "argued", "choices")
 
@@ -118,6 +123,9 @@ def _numbers(ds: xr.Dataset) -> dict[str, np.ndarray]:
         "depth_280": ds["depth_280"].values,
         "phi_p4_280": ds["phi_p4"].sel(phi_velocity=280.0).values,
         "phi_p4_1000": ds["phi_p4"].sel(phi_velocity=1000.0).values,
+        "fig12_falls": (
+            ds["vcr_yaw"].sel(fig12_yaw=2.0).values < ds["vcr_yaw"].sel(fig12_yaw=0.0).values
+        ).astype(float),
     }
 
 
@@ -132,6 +140,7 @@ def _paper(ds: xr.Dataset) -> dict[str, float]:
         "depth_280": PAPER["depth_280"],
         "phi_p4_280": PAPER["phi_p4"][280.0],
         "phi_p4_1000": PAPER["phi_p4"][1000.0],
+        "fig12_falls": 1.0 if PAPER["fig12_vcr_yaw"] == "falls" else 0.0,
     }
 
 
@@ -144,7 +153,7 @@ def _bracket() -> tuple[float, float]:
 def _miss(key: str, value: np.ndarray, paper: float) -> np.ndarray:
     """How far each value misses the paper, relative (0 = agrees; turn-back: 0 or 1;
     Vcr: distance outside the paper's bracket over its midpoint)."""
-    if key == "turn_back_25":
+    if key in VERDICTS:
         return (value != paper).astype(float)
     if key == "vcr":
         from ..attribution import PAPER
@@ -166,7 +175,7 @@ def gather(parts: Sequence[xr.Dataset]) -> xr.Dataset:
     for k, (label, units) in NUMBERS.items():
         ds[f"value_{k}"] = ("setting", vals[k], {"units": units, "long_name": f"pencore {label}"})
         ds[f"paper_{k}"] = ((), paper[k], {"units": units, "long_name": f"paper {label}"})
-        rel = vals[k] / paper[k] - 1.0 if k != "turn_back_25" else vals[k] - paper[k]
+        rel = vals[k] / paper[k] - 1.0 if k not in VERDICTS else vals[k] - paper[k]
         ds[f"rel_{k}"] = (
             "setting",
             rel,
@@ -174,7 +183,7 @@ def gather(parts: Sequence[xr.Dataset]) -> xr.Dataset:
         )
         miss = _miss(k, vals[k], paper[k])
         ds[f"miss_{k}"] = ("setting", miss, {"units": "1", "long_name": f"relative miss, {label}"})
-        ok &= miss <= (TOLERANCE if k != "turn_back_25" else 0.0)
+        ok &= miss <= (TOLERANCE if k not in VERDICTS else 0.0)
     ds["within_tolerance_all"] = (
         "setting",
         ok.astype(np.int32),
@@ -203,10 +212,10 @@ def attribution_table(ds: xr.Dataset) -> pd.DataFrame:
     for k, (label, units) in NUMBERS.items():
         miss = ds[f"miss_{k}"].values
         best = int(np.nanargmin(miss))
-        tol = TOLERANCE if k != "turn_back_25" else 0.0
+        tol = TOLERANCE if k not in VERDICTS else 0.0
 
         def fmt(v: float, key: str = k) -> str:
-            if key == "turn_back_25":
+            if key in VERDICTS:
                 return "yes" if v >= 0.5 else "no"
             return f"{v:.4g}"
 
