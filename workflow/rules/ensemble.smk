@@ -7,11 +7,6 @@
 ENSEMBLES = {c["name"]: c for c in config["ensemble"]["cases"]}
 
 
-def ensemble_parts(wildcards):
-    n = ENSEMBLES[wildcards.name]["n_chunks"]
-    return [f"results/ensemble/{wildcards.name}/parts/{k}.nc" for k in range(n)]
-
-
 rule ensemble_chunk:
     output:
         nc="results/ensemble/{name}/parts/{chunk}.nc",
@@ -34,7 +29,10 @@ rule ensemble_chunk:
 
 rule ensemble_gather:
     input:
-        parts=ensemble_parts,
+        parts=lambda wc: [
+            f"results/ensemble/{wc.name}/parts/{k}.nc"
+            for k in range(ENSEMBLES[wc.name]["n_chunks"])
+        ],
     output:
         nc="results/ensemble/{name}.nc",
     log:

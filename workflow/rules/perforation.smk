@@ -31,7 +31,7 @@ rule perforation_figure:
     output:
         png=report(
             "results/perforation/{kind}.png",
-            caption="../report/perforation_{kind}.rst",
+            caption="../report/perforation.rst",
             category="4 Beyond the paper",
             subcategory="Perforation",
             labels={"name": "{kind}", "type": "figure"},
