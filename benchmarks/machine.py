@@ -6,6 +6,7 @@ from __future__ import annotations
 import os
 import platform
 import subprocess
+from datetime import UTC
 
 
 def machine() -> dict[str, str | float | int]:
@@ -20,7 +21,7 @@ def machine() -> dict[str, str | float | int]:
     except (OSError, subprocess.CalledProcessError):
         pass
     load1, load5, load15 = os.getloadavg()
-    from datetime import datetime, timezone
+    from datetime import datetime
 
     return {
         "cpu_model": model,
@@ -28,5 +29,5 @@ def machine() -> dict[str, str | float | int]:
         "load_1min": round(load1, 2),
         "load_5min": round(load5, 2),
         "load_15min": round(load15, 2),
-        "measured_utc": datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%MZ"),
+        "measured_utc": datetime.now(UTC).strftime("%Y-%m-%dT%H:%MZ"),
     }

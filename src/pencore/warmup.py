@@ -5,8 +5,9 @@ pencore's kernels are compiled on first use and cached on disk (``cache=True``; 
 run or the first jobs of a reproduction would otherwise each pay ~20 s of compilation
 before their first result. ``python -m pencore.warmup`` runs one short trajectory of
 every kernel variant (the default DAFL on rings with the Rosenbrock integrator, the
-cavity and factor shank models, the panel surface and the explicit integrator), so that afterwards a fresh process loads the kernels
-from the cache (``benchmarks/bench_startup.py`` measures both).
+cavity and factor shank models, the panel surface and the explicit integrator), so that
+afterwards a fresh process loads the kernels from the cache
+(``benchmarks/bench_startup.py`` measures both).
 
 Run: ``python -m pencore.warmup`` (the README's set-up commands and ``.ci/run`` do).
 """
