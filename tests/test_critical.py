@@ -142,3 +142,21 @@ def test_normal_impact_angles():
         C.normal_impact_angles(0.1, "sideways")
     with pytest.raises(InputError, match="convention"):
         C.vci("p4", "soil", 0.1, 200.0, 3000.0, threshold_deg=5.0, convention="x")
+
+
+def test_vci_shared_runs_identical_to_separate_searches():
+    # a run does not depend on the threshold, so searches for several thresholds that
+    # share their runs must return exactly what separate searches return (same values,
+    # same evaluation histories), while running each speed once
+    kw = dict(scan=3, max_iter=3)
+    shared: dict[float, tuple[bool, float]] = {}
+    for thr in (0.2, 1.0):
+        alone = C.vci("p4", "soil", 0.1, 500.0, 3000.0, thr, 50.0, **kw)
+        together = C.vci("p4", "soil", 0.1, 500.0, 3000.0, thr, 50.0, shared_runs=shared, **kw)
+        assert together.to_dict() == alone.to_dict()
+    speeds = [
+        v
+        for thr in (0.2, 1.0)
+        for v, _ in C.vci("p4", "soil", 0.1, 500.0, 3000.0, thr, 50.0, **kw).history
+    ]
+    assert set(shared) == set(speeds)

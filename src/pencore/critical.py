@@ -459,6 +459,7 @@ def vci(
     convention: str = "axis_tilted",
     scan: int | None = DEFAULT_SCAN,
     max_iter: int = 60,
+    shared_runs: dict[float, tuple[bool, float]] | None = None,
     **simulate_kwargs: Any,
 ) -> CriticalResult:
     """Critical impact velocity for instability Vci (m/s), normal impact with small yaw.
@@ -485,6 +486,11 @@ def vci(
         Which of the axis or the velocity is tilted by ``yaw`` (the other is normal); see
         :func:`normal_impact_angles`. Default ``"axis_tilted"`` (velocity normal), the
         reading that reproduces the paper's Fig. 13 deviations.
+    shared_runs : dict, optional
+        ``{speed: (reversed, final deviation in deg)}`` of runs already made with the
+        same projectile, target, yaw, ``fraction`` and numerics; read before running and
+        filled after. Searches for several thresholds of one case pass the same dict and
+        so share their runs (a run does not depend on the threshold; results identical).
     Other arguments as :func:`vcr`.
     """
     if not (math.isfinite(threshold_deg) and threshold_deg > 0.0):
@@ -493,21 +499,25 @@ def vci(
     numerics, overrides, sim = _split(dict(simulate_kwargs), _FIXED)
     pr = prepare(projectile, target, numerics, **overrides)
 
+    runs = {} if shared_runs is None else shared_runs
+
     def verdict(v: float) -> bool:
-        ds = simulate(
-            pr.projectile,
-            pr.target,
-            v,
-            obl,
-            yaw_sim,
-            omega,
-            stop_at_reversal=True,
-            prepared=pr,
-            **sim,
-        )
-        if int(ds.attrs["reversed"]) == 1:
-            return True
-        return bool(final_deviation(ds, fraction) > threshold_deg)
+        if v not in runs:
+            ds = simulate(
+                pr.projectile,
+                pr.target,
+                v,
+                obl,
+                yaw_sim,
+                omega,
+                stop_at_reversal=True,
+                prepared=pr,
+                **sim,
+            )
+            rev = int(ds.attrs["reversed"]) == 1
+            runs[v] = (rev, math.nan if rev else float(final_deviation(ds, fraction)))
+        rev, dev = runs[v]
+        return rev or bool(dev > threshold_deg)
 
     return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="Vci")
 

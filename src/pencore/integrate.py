@@ -13,6 +13,20 @@ Jacobian: the kinematic rows are exact; the force and moment derivatives with re
 the velocities are finite differences; the derivatives with respect to position and
 attitude are left out (they are not stiff), which the error control absorbs.
 
+Held Jacobian (``jacobian_age`` > 1): the Jacobian may be kept for several accepted steps.
+The pair stays consistent because its second-order solution is a W-method (Shampine &
+Reichelt 1997, Sec. 3; Hairer & Wanner IV.7): the order conditions of the propagated
+solution ``y + h k2`` up to order 2 do not involve the matrix in ``I - h d J``, so the
+step keeps order 2 for any ``J`` (only its stability depends on ``J`` being close to the
+true one; the omitted position derivatives above already make every ``J`` inexact). The
+third-order companion is third order only with the exact Jacobian; with a held one the
+estimate ``h/6 (k1 - 2 k2 + k3)`` is still a difference of a second-order solution and
+a solution at least second order, so it stays an asymptotically correct, if
+conservative, measure of the local error of the second-order step. What keeps it honest
+in practice is that a rejected step rebuilds a held Jacobian before it is retried, and
+the body entering or leaving the target rebuilds it (:func:`integrate_chunk`); the
+default age is chosen by ``benchmarks/bench_jacobian.py``.
+
 Structure (as scipy's ``_ivp`` separates them): :func:`_jacobian` builds the Jacobian,
 :func:`_attempt` takes one Rosenbrock step and returns its error norm,
 :func:`_next_step` is the step-size controller, :func:`_stop_code` holds the stopping
@@ -214,6 +228,7 @@ def integrate_chunk(
     n_gauss,
     reach,
     model,
+    jacobian_age=1,
 ):
     """Advance a trajectory by at most ``n_max`` accepted steps.
 
@@ -224,6 +239,11 @@ def integrate_chunk(
     :mod:`pencore.forces`; with the cavity shank model every accepted step extends its
     tip path (rejected steps do not), and the chunk ends early, to be called again with
     a larger path buffer, when the buffer is nearly full.
+
+    The Jacobian is held for up to ``jacobian_age`` accepted steps (1: a fresh one every
+    step) and rebuilt at the start of the chunk, whenever the body enters or leaves the
+    target (the free-flight Jacobian has no force rows), and before retrying a rejected
+    step with a held one.
 
     Returns
     -------
@@ -239,6 +259,8 @@ def integrate_chunk(
     h = sf[SF_H]
     clear = sf[SF_CLEAR]
     k = 0
+    age = jacobian_age  # no Jacobian yet
+    jac_in_target = clear <= 0.0
     code = RUNNING
     cavity = model[0][0] == SHANK_CAVITY
     path, npath = model[3], model[4]
@@ -256,48 +278,30 @@ def integrate_chunk(
             # free flight: do not step past the first touch of the surface
             hmax = min(hmax, max(clear, 1e-6 * reach) / max(speed + wmag * reach, 1e-3))
         h = min(h, hmax, t_max - t)
-        si[SI_N_RHS] += _jacobian(
-            jac,
-            y,
-            f0,
-            clear,
-            reach,
-            mass,
-            inertia,
-            gravity,
-            rings,
-            bounds,
-            coef,
-            fric,
-            eps,
-            n_gauss,
-            model,
-        )
+        in_target = clear <= 0.0
+        if age >= jacobian_age or in_target != jac_in_target:
+            si[SI_N_RHS] += _jacobian(
+                jac, y, f0, clear, reach, mass, inertia, gravity, rings, bounds, coef,
+                fric, eps, n_gauss, model,
+            )  # fmt: skip
+            age = 0
+            jac_in_target = in_target
         while True:
             ynew, f2, clear_new, err = _attempt(
-                h,
-                y,
-                f0,
-                jac,
-                wmat,
-                piv,
-                rtol,
-                atol,
-                mass,
-                inertia,
-                gravity,
-                rings,
-                bounds,
-                coef,
-                fric,
-                eps,
-                n_gauss,
-                model,
-            )
+                h, y, f0, jac, wmat, piv, rtol, atol, mass, inertia, gravity, rings,
+                bounds, coef, fric, eps, n_gauss, model,
+            )  # fmt: skip
             si[SI_N_RHS] += 2
             if err <= 1.0:
                 break
             si[SI_N_REJ] += 1
+            if age > 0:
+                # a held Jacobian may be what failed: rebuild it before shrinking the step
+                si[SI_N_RHS] += _jacobian(
+                    jac, y, f0, clear, reach, mass, inertia, gravity, rings, bounds, coef,
+                    fric, eps, n_gauss, model,
+                )  # fmt: skip
+                age = 0
             if not math.isfinite(err):
                 h = 0.2 * h
             else:
@@ -322,6 +326,7 @@ def integrate_chunk(
         y[:] = ynew
         f0[:] = f2
         clear = clear_new
+        age += 1
         ts[k] = t
         ys[k] = y
         k += 1
@@ -369,6 +374,7 @@ def integrate(
     n_gauss: int,
     model: tuple[np.ndarray, ...] | None = None,
     reach: float | None = None,
+    jacobian_age: int = 1,
 ) -> RunResult:
     """Integrate one trajectory from state ``y0`` (SI units) with the Rosenbrock pair.
 
@@ -385,7 +391,8 @@ def integrate(
 
     ``model`` (default: DAFL on rings) is the kernel tuple of :mod:`pencore.forces`;
     ``reach`` (m) the largest distance from the centre of mass to the surface (default:
-    from ``rings``).
+    from ``rings``); ``jacobian_age`` the most accepted steps a Jacobian is held for
+    (see :func:`integrate_chunk` and the module notes on the W-method property).
 
     Returns
     -------
@@ -411,7 +418,7 @@ def integrate(
             ts, ys, code = integrate_chunk(
                 y, f0, sf, si, n_max, t_max, rtol, atol, h_min, max_travel, v_stop,
                 stop_at_reversal, mass, inertia, gravity, rings, bounds, coef, fric, eps,
-                n_gauss, reach, model,
+                n_gauss, reach, model, jacobian_age,
             )  # fmt: skip
         ts_parts.append(ts)
         ys_parts.append(ys)

@@ -59,7 +59,7 @@ class SolverError(RuntimeError):
 #: ``solve_ivp`` methods on the same right-hand side (reference; much slower).
 METHODS = ("rosenbrock", "Radau", "BDF")
 
-_INT_FIELDS = ("n_nose", "n_shank", "n_face", "max_steps", "n_gauss")
+_INT_FIELDS = ("n_nose", "n_shank", "n_face", "max_steps", "n_gauss", "jacobian_age")
 
 
 @dataclass(frozen=True)
@@ -94,6 +94,12 @@ class Numerics:
         run as stiff or chattering (``step_underflow``).
     n_gauss : int
         Gauss points per 45-degree arc piece in the friction integral.
+    jacobian_age : int
+        Accepted steps the Rosenbrock integrator holds one Jacobian for (1: a fresh one
+        every step); rebuilt after a rejected step and when the body enters or leaves
+        the target. The second-order step is a W-method, so holding it keeps the order
+        (:mod:`pencore.integrate`); the default is chosen by
+        ``benchmarks/bench_jacobian.py``.
     gravity : float
         Gravitational acceleration (m/s^2) along ``-y``; 0 by default (as in the paper).
     method : str
@@ -114,6 +120,7 @@ class Numerics:
     max_wall: float = math.inf
     h_min: float = 1e-12
     n_gauss: int = 4
+    jacobian_age: int = 6
     gravity: float = 0.0
     method: str = "rosenbrock"
 
@@ -394,6 +401,7 @@ def _run(pr: _Prepared, y0: np.ndarray, velocity: float, stop_at_reversal: bool)
             h_min=num.h_min,
             stall_distance=stall,
             reach=body_reach(pr.rings),
+            jacobian_age=num.jacobian_age,
             **kw,
         )
     from .reference import integrate_scipy

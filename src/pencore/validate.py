@@ -254,6 +254,14 @@ LIMITS: dict[str, Limit] = {
     "n_gauss": Limit(
         "n_gauss", "", 1, 64, kind="physical / guard", why="Gauss points per friction arc"
     ),
+    "jacobian_age": Limit(
+        "jacobian_age",
+        "",
+        1,
+        1000,
+        kind="physical / guard",
+        why="accepted steps a Jacobian is held for (1: every step)",
+    ),
     "gravity": Limit(
         "gravity",
         "m/s^2",

@@ -42,7 +42,9 @@ def vci_study(
     run with the given yaw turns back or ends with a deviation above ``threshold``
     (deg). The tip starts touching the surface. ``primary_threshold`` (deg; default the
     middle of ``thresholds``) is the one the figure and the comparison lead with; the
-    others show how Vci moves with the choice.
+    others show how Vci moves with the choice. The searches of one (projectile, yaw)
+    share their runs across thresholds (``shared_runs`` of :func:`pencore.critical.vci`):
+    the results are those of separate searches, with fewer runs.
     """
     names = list(projectiles)
     yw = _axis(yaws, "yaws")
@@ -58,6 +60,7 @@ def vci_study(
     res = np.empty((len(names), yw.size, th.size), dtype=object)
     for ip, p in enumerate(names):
         for iy, y in enumerate(yw):
+            runs: dict[float, tuple[bool, float]] = {}
             for it, t in enumerate(th):
                 res[ip, iy, it] = critical.vci(
                     p,
@@ -71,6 +74,7 @@ def vci_study(
                     convention=convention,
                     scan=scan,
                     numerics=num,
+                    shared_runs=runs,
                 )
     dims = ("projectile", "yaw", "threshold")
     data = _search_vars(res, "vci", "m s-1", "critical impact velocity for instability V_ci", dims)

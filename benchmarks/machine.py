@@ -1,0 +1,33 @@
+"""The machine and its load, recorded next to every speed figure (lscpu model, cores,
+uptime load averages)."""
+
+from __future__ import annotations
+
+import os
+import platform
+import subprocess
+from datetime import UTC
+
+
+def machine() -> dict[str, str | float | int]:
+    """CPU model, logical cores, 1/5/15-min load averages and the UTC time of the reading."""
+    model = platform.processor() or platform.machine()
+    try:
+        for line in subprocess.run(
+            ["lscpu"], capture_output=True, text=True, check=True
+        ).stdout.splitlines():
+            if line.startswith("Model name:"):
+                model = line.split(":", 1)[1].strip()
+    except (OSError, subprocess.CalledProcessError):
+        pass
+    load1, load5, load15 = os.getloadavg()
+    from datetime import datetime
+
+    return {
+        "cpu_model": model,
+        "cores": os.cpu_count() or 0,
+        "load_1min": round(load1, 2),
+        "load_5min": round(load5, 2),
+        "load_15min": round(load15, 2),
+        "measured_utc": datetime.now(UTC).strftime("%Y-%m-%dT%H:%MZ"),
+    }
