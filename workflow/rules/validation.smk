@@ -228,3 +228,4 @@ rule measurements_figure:
 
 
 ALL_TARGETS.extend(f"results/validation/measurements.{ext}" for ext in ("nc", "png", "pdf"))
+ARCHIVE_DATASETS.append("results/validation/measurements.nc")
