@@ -176,16 +176,29 @@ def test_bad_output_path(tmp_path, capsys, make, needles):
 
 
 def test_unwritable_output_dir(tmp_path, capsys):
+    """An output directory the process cannot write to. For a normal user chmod 0500 does
+    it; root ignores permissions, so as root the directory becomes a read-only tmpfs
+    mount, which root cannot write to either (EROFS). The test runs either way."""
     ro = tmp_path / "ro"
     ro.mkdir()
     ro.chmod(0o500)
+    mounted = False
     try:
         if os.access(ro, os.W_OK):
-            pytest.skip("running with privileges that ignore directory permissions")
+            r = subprocess.run(
+                ["mount", "-t", "tmpfs", "-o", "ro,size=64k", "tmpfs", str(ro)],
+                capture_output=True,
+                text=True,
+            )
+            assert r.returncode == 0, f"cannot make a read-only directory as root: {r.stderr}"
+            mounted = True
+            assert not os.access(ro, os.W_OK)
         assert main([*BASE, "--velocity", "280", "--out", str(ro / "x.nc")]) == 2
         assert_one_line_error(capsys.readouterr().err, "not writable", str(ro))
         assert list(ro.iterdir()) == []
     finally:
+        if mounted:
+            subprocess.run(["umount", str(ro)], check=False)
         ro.chmod(0o700)
 
 
