@@ -11,7 +11,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from .style import _DEPTH, _VI, new_figure, styled
+from .style import _DEPTH, _VI, _c, new_figure, styled
 
 __all__ = ["plot_table2", "plot_fig5", "plot_verification"]
 
@@ -162,22 +162,10 @@ def plot_verification(ds: xr.Dataset, cases: Sequence[str] | None = None) -> Fig
     """pencore (symbols) against the closed form (lines), and their relative difference."""
     fig = new_figure(6.4, 6.0)
     ax1, ax2 = fig.subplots(2, 1, sharex=True, height_ratios=[2, 1])
-    colours = [
-        "tab:blue",
-        "tab:orange",
-        "tab:green",
-        "tab:red",
-        "tab:purple",
-        "tab:brown",
-        "tab:pink",
-        "tab:gray",
-        "tab:olive",
-        "tab:cyan",
-    ]
     v = ds["velocity"].values
     for k, c in enumerate(cases or [str(c) for c in ds["case"].values]):
         sub = ds.sel(case=c)
-        col = colours[k % len(colours)]
+        col = _c(k)
         lab = f"{sub['projectile'].item()} into {sub['target'].item()}"
         ok = np.isfinite(sub["pencore_depth"].values)
         ax1.plot(v[ok], sub["closedform_depth"].values[ok], "-", color=col, lw=1.0)

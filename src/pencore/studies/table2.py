@@ -20,6 +20,7 @@ import xarray as xr
 from ..library import InputError
 from ..solver import Numerics, prepare, simulate
 from . import resolve_numerics
+from .common import _attrs
 
 __all__ = ["DEPTH_MEASURES", "TABLE2_INPUT_COLUMNS", "table2"]
 
@@ -40,10 +41,6 @@ TABLE2_INPUT_COLUMNS = (
     "measured_depth_m",
     "paper_predicted_depth_m",
 )
-
-
-def _attrs(units: str, long_name: str, **extra: Any) -> dict[str, Any]:
-    return {"units": units, "long_name": long_name, **extra}
 
 
 # ----------------------------------------------------------------------------- Table 2

@@ -31,6 +31,7 @@ from ..library import InputError, get_projectile, get_target
 from ..solver import Numerics, prepare, simulate
 from ..target import Medium
 from . import resolve_numerics
+from .common import _attrs
 from .table2 import DEPTH_MEASURES, TABLE2_INPUT_COLUMNS, table2
 
 __all__ = [
@@ -43,10 +44,6 @@ __all__ = [
     "normalise_cases",
     "velocity_grid",
 ]
-
-
-def _attrs(units: str, long_name: str, **extra: Any) -> dict[str, Any]:
-    return {"units": units, "long_name": long_name, **extra}
 
 
 # ----------------------------------------------------------------------------- cases
