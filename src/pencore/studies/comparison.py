@@ -318,10 +318,19 @@ def _fig15(along: str, label: str):
 # ----------------------------------------------------------------------------- Figs 16-18
 
 
+def _start_heights(d: Mapping[str, Any], w: float) -> list[tuple[float, float, int]]:
+    """(tip start height m, alpha deg, reversed 0/1) of the start-height study at spin w."""
+    sh = d.get("start_height")
+    if sh is None or not _close(sh["omega"], w):
+        return []
+    cells = [sh.sel(omega=w, start_height=hh) for hh in sh["start_height"].values]
+    return [(float(x["start_height"]), float(x["alpha"]), int(x["reversed"])) for x in cells]
+
+
 def _fig16_alpha(c: Claim, d: Mapping[str, Any]) -> Rows:
     w, a = float(at(c["at"])[0]["omega"]), float(c["value"])
     rows = []
-    fig16, sh = d.get("fig16"), d.get("start_height")
+    fig16 = d.get("fig16")
     if fig16 is not None and _close(fig16["omega"], w):
         h = float(fig16.attrs.get("start_height_m", 0.0))
         pen = float(fig16["final_deviation"].sel(omega=w))
@@ -336,28 +345,25 @@ def _fig16_alpha(c: Claim, d: Mapping[str, Any]) -> Rows:
                 "results/fig16/trajectories.nc",
             )
         )
-    if sh is not None and _close(sh["omega"], w):
-        for hh in sh["start_height"].values:
-            pen = float(sh["alpha"].sel(omega=w, start_height=hh))
-            rev = int(sh["reversed"].sel(omega=w, start_height=hh))
-            rows.append(
-                _row(
-                    f"Start-height sensitivity: alpha at omega = {w:g} rad/s, tip {hh:g} m above",
-                    a,
-                    pen,
-                    c["units"],
-                    f"{_pencore_rel(pen, a)}; reversed = {rev}",
-                    "value",
-                    "results/fig16/start_height.nc",
-                )
+    for hh, pen, rev in _start_heights(d, w):
+        rows.append(
+            _row(
+                f"Start-height sensitivity: alpha at omega = {w:g} rad/s, tip {hh:g} m above",
+                a,
+                pen,
+                c["units"],
+                f"{_pencore_rel(pen, a)}; reversed = {rev}",
+                "value",
+                "results/fig16/start_height.nc",
             )
+        )
     return rows
 
 
 def _fig16_reverses(c: Claim, d: Mapping[str, Any]) -> Rows:
     w = float(at(c["at"])[0]["omega"])
     rows = []
-    fig16, sh = d.get("fig16"), d.get("start_height")
+    fig16 = d.get("fig16")
     if fig16 is not None and _close(fig16["omega"], w):
         h = float(fig16.attrs.get("start_height_m", 0.0))
         rev = int(fig16["reversed"].sel(omega=w))
@@ -372,22 +378,18 @@ def _fig16_reverses(c: Claim, d: Mapping[str, Any]) -> Rows:
                 "results/fig16/trajectories.nc",
             )
         )
-    if sh is not None and _close(sh["omega"], w):
-        for hh in sh["start_height"].values:
-            pen = float(sh["alpha"].sel(omega=w, start_height=hh))
-            rev = int(sh["reversed"].sel(omega=w, start_height=hh))
-            rows.append(
-                _row(
-                    f"Start-height sensitivity: turns back at omega = {w:g} rad/s, "
-                    f"tip {hh:g} m above",
-                    c["value"],
-                    "yes" if rev else "no",
-                    "",
-                    f"alpha = {pen:.3g} deg",
-                    "verdict",
-                    "results/fig16/start_height.nc",
-                )
+    for hh, pen, rev in _start_heights(d, w):
+        rows.append(
+            _row(
+                f"Start-height sensitivity: turns back at omega = {w:g} rad/s, tip {hh:g} m above",
+                c["value"],
+                "yes" if rev else "no",
+                "",
+                f"alpha = {pen:.3g} deg",
+                "verdict",
+                "results/fig16/start_height.nc",
             )
+        )
     return rows
 
 
