@@ -10,6 +10,7 @@ from typing import Any
 
 import numpy as np
 import xarray as xr
+from scipy import stats
 
 from ..library import InputError, get_projectile
 
@@ -57,6 +58,16 @@ TRAJECTORY_VARIABLES = (
 
 
 _STR = object  # dtype of string variables (netCDF variable-length strings)
+
+
+def t_half_width(x: Any, level: float = 0.95) -> float:
+    """Half-width of the Student-t interval (``level``) of the mean of the sample ``x``,
+    in the units of ``x``; NaN for fewer than two values."""
+    x = np.asarray(x, dtype=float)
+    n = x.size
+    if n < 2:
+        return math.nan
+    return float(stats.t.ppf(0.5 + level / 2, n - 1) * x.std(ddof=1) / math.sqrt(n))
 
 
 def _attrs(units: str, long_name: str, **extra: Any) -> dict[str, Any]:

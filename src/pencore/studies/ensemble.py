@@ -44,6 +44,7 @@ from scipy import stats
 
 from ..solver import prepare, simulate
 from ..validate import InputError, _as_float, check_keys
+from .common import t_half_width
 
 __all__ = [
     "VARIABLES",
@@ -307,7 +308,7 @@ def gather(parts: Sequence[xr.Dataset]) -> xr.Dataset:
     for name, units, long_name in RESULTS:
         x = ds[name].values
         mean, sd = float(np.mean(x)), float(np.std(x, ddof=1)) if n > 1 else math.nan
-        half = float(stats.t.ppf(0.975, n - 1) * sd / math.sqrt(n)) if n > 1 else math.nan
+        half = t_half_width(x)
         ds[f"{name}_mean"] = ((), mean, {"units": units, "long_name": f"mean {long_name}"})
         ds[f"{name}_mean_ci95"] = ("bound", [mean - half, mean + half], {"units": units})
         ds[f"{name}_sd"] = ((), sd, {"units": units, "long_name": f"standard deviation, {name}"})
@@ -326,7 +327,7 @@ def gather(parts: Sequence[xr.Dataset]) -> xr.Dataset:
         run["p_lo"].append(lo)
         run["p_hi"].append(hi)
         mu = float(dep[:m].mean())
-        h = float(stats.t.ppf(0.975, m - 1) * dep[:m].std(ddof=1) / math.sqrt(m)) if m > 1 else 0
+        h = t_half_width(dep[:m]) if m > 1 else 0.0
         run["depth"].append(mu)
         run["depth_lo"].append(mu - h)
         run["depth_hi"].append(mu + h)

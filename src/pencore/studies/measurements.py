@@ -39,13 +39,14 @@ from typing import Any
 import numpy as np
 import pandas as pd
 import xarray as xr
-from scipy import stats
 
 from ..library import get_target
 from ..solver import Numerics, prepare, simulate
-from ..target import Layer, Target
+from ..target import Target
 from ..validate import InputError, check_keys
 from . import resolve_numerics
+from .common import t_half_width
+from .perforation import slab_target
 
 __all__ = ["QUANTITIES", "load_measurements", "measured_vs_predicted", "error_statistics"]
 
@@ -154,7 +155,7 @@ def _slab(target: str, thickness: float) -> Target:
         return t
     if len(t.layers) != 1:
         raise InputError(f"a slab of {target!r} needs a single-medium target")
-    return Target(f"{t.name} slab {thickness:g} m", (Layer(t.layers[0].medium, thickness),))
+    return slab_target(target, thickness)
 
 
 def _predict(row: pd.Series, num: Numerics, cache: dict) -> tuple[float, str]:
@@ -195,7 +196,7 @@ def error_statistics(measured: Sequence[float], predicted: Sequence[float]) -> d
     n = e.size
     nan = math.nan
     mean = float(e.mean()) if n else nan
-    half = float(stats.t.ppf(0.975, n - 1) * e.std(ddof=1) / math.sqrt(n)) if n > 1 else nan
+    half = t_half_width(e)
     return {
         "n": float(m.size),
         "n_relative": float(n),
