@@ -70,6 +70,7 @@ API_CASES = [
     (dict(velocity=500.0, n_gauss=0), "n_gauss", "0"),
     (dict(velocity=500.0, jacobian_age=0), "jacobian_age", "0"),
     (dict(velocity=500.0, jacobian_age=2.5), "jacobian_age", "2.5"),
+    (dict(velocity=500.0, jacobian="analytical"), "jacobian", "'analytical'"),
     (dict(velocity=500.0, eps=-1.0), "eps", "-1.0"),
     (dict(velocity=500.0, eps=math.nan), "eps", "nan"),
     (dict(velocity=500.0, rtol=0.0), "rtol", "0.0"),

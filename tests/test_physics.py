@@ -272,8 +272,11 @@ def test_held_jacobian_keeps_the_solution():
     # of the step error control (rtol 1e-5): path and depth of the benchmark case
     # agree with a fresh Jacobian every step to 1e-4 relative (10 x rtol, as the
     # errors of ~400 steps add up), with fewer right-hand-side calls
+    # (finite-difference Jacobians, whose cost the held Jacobian saves)
     runs = {
-        age: pencore.simulate("p2", "soil", 1000.0, obliquity=45.0, jacobian_age=age)
+        age: pencore.simulate(
+            "p2", "soil", 1000.0, obliquity=45.0, jacobian_age=age, jacobian="finite_difference"
+        )
         for age in (1, 6, 50)
     }
     for age in (6, 50):

@@ -138,6 +138,37 @@ def _level_arc(c0: float, ck: float, phik: float, level: float, above: bool, lo,
     return _arc(phik + math.pi, math.pi - math.acos(c), lo, hi)
 
 
+@nb.njit(cache=True)
+def layer_arcs(y0, yk, phiy, top, bot, l1lo, l1hi, l2lo, l2hi, blo, bhi) -> int:
+    """Arc set (into ``blo, bhi``) of a ring at heights ``y0 + yk cos(phi - phiy)`` that
+    lies between a layer's ``bot`` and ``top`` (m); the ``l*`` arrays are scratch."""
+    n1 = _level_arc(y0, yk, phiy, top, False, l1lo, l1hi)
+    if n1 == 0:
+        return 0
+    if bot > -np.inf:
+        n2 = _level_arc(y0, yk, phiy, bot, True, l2lo, l2hi)
+        return _intersect(l1lo, l1hi, n1, l2lo, l2hi, n2, blo, bhi)
+    for m in range(n1):
+        blo[m] = l1lo[m]
+        bhi[m] = l1hi[m]
+    return n1
+
+
+@nb.njit(cache=True)
+def ring_height(ycm, r10, r11, r12, x1, r):
+    """Height of a ring's points as ``y0 + yk cos(phi - phiy)``: ``(y0, yk, phiy)`` (m, m,
+    rad) from the centre-of-mass height ``ycm`` and row 1 of the rotation matrix."""
+    y0 = ycm + r10 * x1
+    yc = r11 * r
+    ys = r12 * r
+    yk = math.sqrt(yc * yc + ys * ys)
+    if yk < 1e-12 * r:
+        # ring parallel to the surface: a round-off tilt would orient its partial
+        # contact arc at random, so it is either wholly in or wholly out
+        yk = 0.0
+    return y0, yk, math.atan2(ys, yc)
+
+
 # ---------------------------------------------------------------- closed-form arc integrals
 
 
@@ -271,16 +302,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         na = rings[i, 2]
         nr = rings[i, 3]
         w = rings[i, 4]
-        # height of the ring points: y = Y0 + Yk cos(phi - phiy)
-        y0 = ycm + r10 * x1
-        yc = r11 * r
-        ys = r12 * r
-        yk = math.sqrt(yc * yc + ys * ys)
-        if yk < 1e-12 * r:
-            # ring parallel to the surface: a round-off tilt would orient its partial
-            # contact arc at random, so it is either wholly in or wholly out
-            yk = 0.0
-        phiy = math.atan2(ys, yc)
+        y0, yk, phiy = ring_height(ycm, r10, r11, r12, x1, r)
         low = y0 - yk
         if low < clearance:
             clearance = low
@@ -294,19 +316,9 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         kv = math.sqrt(bc * bc + bs * bs)
         phi0 = math.atan2(bs, bc)
         for lay in range(nlay):
-            top = bounds[lay, 0]
-            bot = bounds[lay, 1]
-            n1 = _level_arc(y0, yk, phiy, top, False, l1lo, l1hi)
-            if n1 == 0:
-                continue
-            if bot > -np.inf:
-                n2 = _level_arc(y0, yk, phiy, bot, True, l2lo, l2hi)
-                nbase = _intersect(l1lo, l1hi, n1, l2lo, l2hi, n2, blo, bhi)
-            else:
-                nbase = n1
-                for m in range(n1):
-                    blo[m] = l1lo[m]
-                    bhi[m] = l1hi[m]
+            nbase = layer_arcs(
+                y0, yk, phiy, bounds[lay, 0], bounds[lay, 1], l1lo, l1hi, l2lo, l2hi, blo, bhi
+            )
             if nbase == 0:
                 continue
             # depth windows (crater, free surface) at the ring centre; 1 when off

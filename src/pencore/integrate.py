@@ -56,7 +56,8 @@ import numpy as np
 
 from .contact_points import MAX_SAMPLES_PER_STEP, push_path
 from .forces import default_model, rhs_model
-from .models import SHANK_CAVITY
+from .jacobian import velocity_jacobian
+from .models import SHANK_CAVITY, SURFACE_PANELS
 from .stepping import (  # noqa: F401 - re-exported: the integrator's public names
     CHUNK_STEPS,
     NON_FINITE,
@@ -70,6 +71,7 @@ from .stepping import (  # noqa: F401 - re-exported: the integrator's public nam
     SF_T,
     SF_T_CONTACT,
     SI_ENTERED,
+    SI_N_JAC,
     SI_N_REJ,
     SI_N_RHS,
     SI_REV,
@@ -93,9 +95,28 @@ _E32 = 6.0 + math.sqrt(2.0)
 
 @nb.njit(cache=True)
 def _jacobian(
-    jac, y, f0, clear, reach, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss, model
+    jac,
+    y,
+    f0,
+    clear,
+    reach,
+    mass,
+    inertia,
+    gravity,
+    rings,
+    bounds,
+    coef,
+    fric,
+    eps,
+    n_gauss,
+    model,
+    analytic=False,
 ):
-    """Fill ``jac`` (14 x 14) at state ``y``; returns the right-hand-side calls made."""
+    """Fill ``jac`` (14 x 14) at state ``y``; returns the right-hand-side calls made.
+
+    The velocity columns of the force rows are closed form (:mod:`pencore.jacobian`)
+    when ``analytic`` is set (the caller checks that the model allows it), else one-sided
+    finite differences (six right-hand-side calls)."""
     for i in range(NY):
         for j in range(NY):
             jac[i, j] = 0.0
@@ -131,6 +152,9 @@ def _jacobian(
     jac[6, 11] = 0.5 * qx
     jac[6, 12] = 0.5 * qw
     if clear > 0.0:
+        return 0
+    if analytic:
+        velocity_jacobian(jac, y, f0, mass, inertia, gravity, rings, bounds, coef, eps)
         return 0
     speed = math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
     wmag = math.sqrt(w1**2 + w2**2 + w3**2)
@@ -229,13 +253,14 @@ def integrate_chunk(
     reach,
     model,
     jacobian_age=1,
+    analytic=False,
 ):
     """Advance a trajectory by at most ``n_max`` accepted steps.
 
     ``y`` (14,) and ``f0`` (its derivative) are updated in place, and so are the float
     state ``sf`` (time, next step, time of first contact, clearance, last error norm;
     indices ``SF_*``) and the integer state ``si`` (entered, reversed, right-hand-side
-    calls, rejected steps; indices ``SI_*``). ``model`` is the kernel tuple of
+    calls, rejected steps, Jacobians; indices ``SI_*``). ``model`` is the kernel tuple of
     :mod:`pencore.forces`; with the cavity shank model every accepted step extends its
     tip path (rejected steps do not), and the chunk ends early, to be called again with
     a larger path buffer, when the buffer is nearly full.
@@ -243,7 +268,8 @@ def integrate_chunk(
     The Jacobian is held for up to ``jacobian_age`` accepted steps (1: a fresh one every
     step) and rebuilt at the start of the chunk, whenever the body enters or leaves the
     target (the free-flight Jacobian has no force rows), and before retrying a rejected
-    step with a held one.
+    step with a held one; ``analytic`` selects the closed-form velocity Jacobian
+    (see :func:`_jacobian`).
 
     Returns
     -------
@@ -282,8 +308,9 @@ def integrate_chunk(
         if age >= jacobian_age or in_target != jac_in_target:
             si[SI_N_RHS] += _jacobian(
                 jac, y, f0, clear, reach, mass, inertia, gravity, rings, bounds, coef,
-                fric, eps, n_gauss, model,
+                fric, eps, n_gauss, model, analytic,
             )  # fmt: skip
+            si[SI_N_JAC] += 1
             age = 0
             jac_in_target = in_target
         while True:
@@ -299,8 +326,9 @@ def integrate_chunk(
                 # a held Jacobian may be what failed: rebuild it before shrinking the step
                 si[SI_N_RHS] += _jacobian(
                     jac, y, f0, clear, reach, mass, inertia, gravity, rings, bounds, coef,
-                    fric, eps, n_gauss, model,
+                    fric, eps, n_gauss, model, analytic,
                 )  # fmt: skip
+                si[SI_N_JAC] += 1
                 age = 0
             if not math.isfinite(err):
                 h = 0.2 * h
@@ -375,6 +403,7 @@ def integrate(
     model: tuple[np.ndarray, ...] | None = None,
     reach: float | None = None,
     jacobian_age: int = 1,
+    jacobian: str = "finite_difference",
 ) -> RunResult:
     """Integrate one trajectory from state ``y0`` (SI units) with the Rosenbrock pair.
 
@@ -392,7 +421,9 @@ def integrate(
     ``model`` (default: DAFL on rings) is the kernel tuple of :mod:`pencore.forces`;
     ``reach`` (m) the largest distance from the centre of mass to the surface (default:
     from ``rings``); ``jacobian_age`` the most accepted steps a Jacobian is held for
-    (see :func:`integrate_chunk` and the module notes on the W-method property).
+    (see :func:`integrate_chunk` and the module notes on the W-method property);
+    ``jacobian`` is ``"analytic"`` (closed-form velocity derivatives, used where
+    :func:`analytic_jacobian_applies`) or ``"finite_difference"``.
 
     Returns
     -------
@@ -405,7 +436,8 @@ def integrate(
     f0, clear = rhs_model(y, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss, model)
     entered = clear <= 0.0
     sf = np.array([0.0, h_init, 0.0 if entered else math.nan, clear, 0.0])
-    si = np.array([int(entered), 0, 1, 0], dtype=np.int64)
+    si = np.array([int(entered), 0, 1, 0, 0], dtype=np.int64)
+    analytic = jacobian == "analytic" and analytic_jacobian_applies(model, eps, n_gauss)
     reach = body_reach(rings) if reach is None else reach
     ts_parts = [np.zeros(1)]
     ys_parts = [y[None, :].copy()]
@@ -418,7 +450,7 @@ def integrate(
             ts, ys, code = integrate_chunk(
                 y, f0, sf, si, n_max, t_max, rtol, atol, h_min, max_travel, v_stop,
                 stop_at_reversal, mass, inertia, gravity, rings, bounds, coef, fric, eps,
-                n_gauss, reach, model, jacobian_age,
+                n_gauss, reach, model, jacobian_age, analytic,
             )  # fmt: skip
         ts_parts.append(ts)
         ys_parts.append(ys)
@@ -445,7 +477,16 @@ def integrate(
         int(si[SI_N_REJ]),
         float(sf[SF_ERR]),
         _path_of(model),
+        int(si[SI_N_JAC]),
     )
+
+
+def analytic_jacobian_applies(model: tuple[np.ndarray, ...], eps: float, n_gauss: int) -> bool:
+    """Whether the closed-form velocity Jacobian (:mod:`pencore.jacobian`) covers this
+    right-hand side: the DAFL on rings (default or ``"factor"`` shank), the smoothed
+    step (``eps > 0``) and no friction (``n_gauss == 0``, a frictionless target)."""
+    ipar = model[0]
+    return eps > 0.0 and n_gauss == 0 and ipar[0] != SHANK_CAVITY and ipar[1] != SURFACE_PANELS
 
 
 def start_path(model: tuple[np.ndarray, ...], y0: np.ndarray) -> tuple[np.ndarray, ...]:

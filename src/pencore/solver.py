@@ -59,6 +59,10 @@ class SolverError(RuntimeError):
 #: ``solve_ivp`` methods on the same right-hand side (reference; much slower).
 METHODS = ("rosenbrock", "Radau", "BDF")
 
+#: Jacobians of the Rosenbrock integrator: closed form where the model allows it
+#: (:func:`pencore.integrate.analytic_jacobian_applies`), or finite differences.
+JACOBIANS = ("analytic", "finite_difference")
+
 _INT_FIELDS = ("n_nose", "n_shank", "n_face", "max_steps", "n_gauss", "jacobian_age")
 
 
@@ -100,6 +104,12 @@ class Numerics:
         the target. The second-order step is a W-method, so holding it keeps the order
         (:mod:`pencore.integrate`); the default is chosen by
         ``benchmarks/bench_jacobian.py``.
+    jacobian : str
+        ``"analytic"`` (default): the velocity derivatives of the DAFL ring loads in
+        closed form (:mod:`pencore.jacobian`) wherever they cover the model (frictionless
+        targets, rings, ``eps > 0``), finite differences elsewhere;
+        ``"finite_difference"``: finite differences everywhere (six extra right-hand-side
+        calls per Jacobian).
     gravity : float
         Gravitational acceleration (m/s^2) along ``-y``; 0 by default (as in the paper).
     method : str
@@ -121,12 +131,13 @@ class Numerics:
     h_min: float = 1e-12
     n_gauss: int = 4
     jacobian_age: int = 6
+    jacobian: str = "analytic"
     gravity: float = 0.0
     method: str = "rosenbrock"
 
     def __post_init__(self) -> None:
         for f in fields(self):
-            if f.name == "method":
+            if f.name in ("method", "jacobian"):
                 continue
             value = getattr(self, f.name)
             if f.name in _INT_FIELDS:
@@ -139,6 +150,13 @@ class Numerics:
             tip = f"; did you mean {hint[0]!r}?" if hint else ""
             raise InputError(
                 f"numerics method must be one of {', '.join(METHODS)}, got {self.method!r}{tip}"
+            )
+        if self.jacobian not in JACOBIANS:
+            hint = difflib.get_close_matches(str(self.jacobian), JACOBIANS, n=1)
+            tip = f"; did you mean {hint[0]!r}?" if hint else ""
+            raise InputError(
+                f"numerics jacobian must be one of {', '.join(JACOBIANS)}, "
+                f"got {self.jacobian!r}{tip}"
             )
 
     @classmethod
@@ -402,6 +420,7 @@ def _run(pr: _Prepared, y0: np.ndarray, velocity: float, stop_at_reversal: bool)
             stall_distance=stall,
             reach=body_reach(pr.rings),
             jacobian_age=num.jacobian_age,
+            jacobian=num.jacobian,
             **kw,
         )
     from .reference import integrate_scipy

@@ -24,6 +24,7 @@ import numpy as np
 KERNEL_MODULES = (
     "windows",
     "dynamics",
+    "jacobian",
     "contact_points",
     "forces",
     "stepping",
@@ -79,7 +80,7 @@ PERFORATED = 8
 #: Indices into the float state array ``sf`` of :func:`pencore.integrate.integrate_chunk`.
 SF_T, SF_H, SF_T_CONTACT, SF_CLEAR, SF_ERR = 0, 1, 2, 3, 4
 #: Indices into the integer state array ``si``.
-SI_ENTERED, SI_REV, SI_N_RHS, SI_N_REJ = 0, 1, 2, 3
+SI_ENTERED, SI_REV, SI_N_RHS, SI_N_REJ, SI_N_JAC = 0, 1, 2, 3, 4
 
 NY = 14
 
@@ -214,6 +215,8 @@ class RunResult:
     last_error_norm: float
     #: nose-tip path samples (x, y, z, arc length; m) of the cavity shank model, else None
     path: np.ndarray | None = None
+    #: Jacobians built (finite-difference ones also count their calls in ``n_rhs``)
+    n_jacobians: int = 0
 
 
 @contextlib.contextmanager

@@ -1,0 +1,310 @@
+"""Closed-form velocity Jacobian of the DAFL ring loads (compiled).
+
+The Rosenbrock integrator (:mod:`pencore.integrate`) needs the derivatives of the
+accelerations with respect to the velocities, where the smoothed contact step makes the
+right-hand side stiff. The finite-difference form costs six right-hand-side calls; this
+module gives the same matrix in closed form at the cost of about one call.
+
+On a ring the normal velocity is affine in ``cos(phi)`` and ``sin(phi)``
+(:mod:`pencore.dynamics`)::
+
+    Vn(phi) = av + bc cos(phi) + bs sin(phi)
+    av = na v1,  bc = nr v2 + q w3,  bs = nr v3 - q w2,  q = nr x1 - na r
+
+and its loads are ``-w B^T (s0, sc, ss)`` with ``s = integral of G(Vn) (1, cos, sin)``
+over the loaded arcs, ``G = H_eps sigma`` and ``B`` the 3 x 6 matrix of ``(av, bc, bs)``
+against the body velocities ``(v1, v2, v3, w1, w2, w3)``. With the smoothed step
+(``eps > 0``) ``G`` is continuous and vanishes at the ends of the arcs that depend on
+the velocity (``Vn = -eps``), so differentiating under the integral sign is exact
+(Leibniz's rule has no end terms)::
+
+    d(loads)/du = -w B^T S B,   S = integral of G'(Vn) (1, cos, sin) (1, cos, sin)^T
+
+``S`` is symmetric, so the load Jacobian is too, and negative semi-definite where
+``G' >= 0``: the frictionless DAFL is a dissipative force derived from a potential in
+the velocities. The arc integrals of ``G'`` times the six products of ``1, cos, sin``
+are closed form like the loads' (:func:`pencore.dynamics._poly_arc_integrals`).
+
+Only the velocity derivatives are formed, as in the finite-difference form: the
+position and attitude derivatives are not stiff, and the error control absorbs their
+omission. Friction (Gauss quadrature of a ``mu(v_t)`` table), the sharp law
+(``eps = 0``: a jump at the arc ends) and the point-load models are left to finite
+differences (:func:`pencore.integrate._jacobian`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba as nb
+import numpy as np
+
+from .dynamics import (
+    _MAXD,
+    _MAXI,
+    TWO_PI,
+    _full_circle_cos_power,
+    _intersect,
+    _level_arc,
+    layer_arcs,
+    quat_to_matrix,
+    ring_height,
+)
+from .windows import depth_factor
+
+__all__ = ["load_jacobian", "velocity_jacobian"]
+
+
+@nb.njit(cache=True)
+def _poly_arc_moments(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj, out):
+    """Add to ``out[0:6]`` the integrals of ``P(V)`` times ``1, cos, sin, cos^2,
+    cos sin, sin^2`` (of ``phi``) over the intervals, with ``V = a + k cos(phi - phi0)``
+    and ``P(V) = sum poly[i] V^i`` (i <= deg); ``e, cj, dj`` are scratch of length
+    >= deg + 3."""
+    for i in range(deg + 1):
+        e[i] = poly[i]
+    for j in range(deg):
+        for i in range(deg - 1, j - 1, -1):
+            e[i] += a * e[i + 1]
+    # moments in psi = phi - phi0: cos^j psi (C_j) and cos^j psi sin psi (D_j)
+    i0 = ic = isn = icc = ics = iss = 0.0
+    for m in range(n):
+        if lo[m] == 0.0 and hi[m] == TWO_PI:
+            for j in range(deg + 3):
+                cj[j] = _full_circle_cos_power(j)
+                dj[j] = 0.0
+        else:
+            pa = lo[m] - phi0
+            pb = hi[m] - phi0
+            ca, sa = math.cos(pa), math.sin(pa)
+            cb, sb = math.cos(pb), math.sin(pb)
+            cj[0] = pb - pa
+            cj[1] = sb - sa
+            cpa = ca
+            cpb = cb
+            for j in range(2, deg + 3):
+                cj[j] = (cpb * sb - cpa * sa) / j + (j - 1) / j * cj[j - 2]
+                cpa *= ca
+                cpb *= cb
+            cpa = ca
+            cpb = cb
+            for j in range(deg + 2):
+                dj[j] = (cpa - cpb) / (j + 1)
+                cpa *= ca
+                cpb *= cb
+        kp = 1.0
+        for j in range(deg + 1):
+            f = e[j] * kp
+            i0 += f * cj[j]
+            ic += f * cj[j + 1]
+            isn += f * dj[j]
+            icc += f * cj[j + 2]
+            ics += f * dj[j + 1]
+            iss += f * (cj[j] - cj[j + 2])
+            kp *= k
+    # back to phi: cos phi = c cos psi - s sin psi, sin phi = s cos psi + c sin psi
+    c = math.cos(phi0)
+    s = math.sin(phi0)
+    out[0] += i0
+    out[1] += c * ic - s * isn
+    out[2] += s * ic + c * isn
+    out[3] += c * c * icc - 2.0 * c * s * ics + s * s * iss
+    out[4] += c * s * (icc - iss) + (c * c - s * s) * ics
+    out[5] += s * s * icc + 2.0 * c * s * ics + c * c * iss
+
+
+@nb.njit(cache=True)
+def load_jacobian(y, rings, bounds, coef, eps):
+    """Derivatives of the frictionless contact loads with respect to the body velocities.
+
+    Parameters
+    ----------
+    y : (14,) state (see :mod:`pencore.dynamics`).
+    rings, bounds, coef : as :func:`pencore.dynamics.contact_loads`.
+    eps : float
+        Half-width of the smoothed contact step (m/s); must be > 0.
+
+    Returns
+    -------
+    (6, 6) array
+        ``d(F1, F2, F3, M1, M2, M3) / d(v1, v2, v3, w1, w2, w3)``, body frame
+        (N s/m, N s, N s). Symmetric (see the module notes).
+    """
+    rot = quat_to_matrix(y[3:7])
+    v1 = rot[0, 0] * y[7] + rot[1, 0] * y[8] + rot[2, 0] * y[9]
+    v2 = rot[0, 1] * y[7] + rot[1, 1] * y[8] + rot[2, 1] * y[9]
+    v3 = rot[0, 2] * y[7] + rot[1, 2] * y[8] + rot[2, 2] * y[9]
+    w2, w3 = y[11], y[12]
+    out = np.zeros((6, 6))
+    nlay = bounds.shape[0]
+    ncoef = coef.shape[1]
+    poly = np.zeros(_MAXD)
+    dpoly = np.zeros(_MAXD)
+    se = np.zeros(_MAXD + 1)
+    scj = np.zeros(_MAXD + 1)
+    sdj = np.zeros(_MAXD + 1)
+    mom = np.zeros(6)
+    l1lo = np.empty(_MAXI)
+    l1hi = np.empty(_MAXI)
+    l2lo = np.empty(_MAXI)
+    l2hi = np.empty(_MAXI)
+    blo = np.empty(_MAXI)
+    bhi = np.empty(_MAXI)
+    vlo = np.empty(_MAXI)
+    vhi = np.empty(_MAXI)
+    slo = np.empty(_MAXI)
+    shi = np.empty(_MAXI)
+    bmat = np.zeros((3, 6))
+    inv = 0.5 / eps
+    for i in range(rings.shape[0]):
+        x1 = rings[i, 0]
+        r = rings[i, 1]
+        na = rings[i, 2]
+        nr = rings[i, 3]
+        w = rings[i, 4]
+        y0, yk, phiy = ring_height(y[1], rot[1, 0], rot[1, 1], rot[1, 2], x1, r)
+        if y0 - yk > bounds[0, 0]:
+            continue
+        q = nr * x1 - na * r
+        av = na * v1
+        bc = nr * v2 + w3 * q
+        bs = nr * v3 - w2 * q
+        kv = math.sqrt(bc * bc + bs * bs)
+        phi0 = math.atan2(bs, bc)
+        for lay in range(nlay):
+            nbase = layer_arcs(
+                y0, yk, phiy, bounds[lay, 0], bounds[lay, 1], l1lo, l1hi, l2lo, l2hi, blo, bhi
+            )
+            if nbase == 0:
+                continue
+            wl = w
+            if bounds.shape[1] >= 5:
+                wl = w * depth_factor(y0, bounds, lay)
+                if wl == 0.0:
+                    continue
+            for c in range(6):
+                mom[c] = 0.0
+            for side in range(2):
+                level = -eps if side == 0 else eps
+                sgn = 1.0 if side == 0 else -1.0
+                nv = _level_arc(av, kv, phi0, level, True, vlo, vhi)
+                ns = _intersect(blo, bhi, nbase, vlo, vhi, nv, slo, shi)
+                if ns == 0:
+                    continue
+                # G on this side: sgn (V - level) sigma(V) / (2 eps); dpoly is G'
+                for c in range(ncoef + 1):
+                    poly[c] = 0.0
+                for c in range(ncoef):
+                    poly[c + 1] += sgn * inv * coef[lay, c]
+                    poly[c] += -sgn * inv * level * coef[lay, c]
+                for c in range(ncoef):
+                    dpoly[c] = (c + 1) * poly[c + 1]
+                _poly_arc_moments(dpoly, ncoef - 1, av, kv, phi0, slo, shi, ns, se, scj, sdj, mom)
+            # S = [[1, c, s], [c, cc, cs], [s, cs, ss]] moments; loads' Jacobian -w B^T S B
+            bmat[0, 0] = na
+            bmat[1, 1] = nr
+            bmat[1, 5] = q
+            bmat[2, 2] = nr
+            bmat[2, 4] = -q
+            _add_btsb(out, bmat, mom, -wl)
+    return out
+
+
+@nb.njit(cache=True)
+def _add_btsb(out, bmat, mom, scale):
+    """``out += scale * B^T S B`` with S the symmetric 3 x 3 of the moments ``mom``."""
+    s = np.empty((3, 3))
+    s[0, 0] = mom[0]
+    s[0, 1] = s[1, 0] = mom[1]
+    s[0, 2] = s[2, 0] = mom[2]
+    s[1, 1] = mom[3]
+    s[1, 2] = s[2, 1] = mom[4]
+    s[2, 2] = mom[5]
+    for a in range(6):
+        for b in range(6):
+            acc = 0.0
+            for i in range(3):
+                if bmat[i, a] == 0.0:
+                    continue
+                for j in range(3):
+                    acc += bmat[i, a] * s[i, j] * bmat[j, b]
+            out[a, b] += scale * acc
+
+
+@nb.njit(cache=True)
+def velocity_jacobian(jac, y, f0, mass, inertia, gravity, rings, bounds, coef, eps):
+    """Fill rows 7-13, columns 7-12 of the state Jacobian ``jac`` in closed form.
+
+    The same entries as the finite-difference form of :func:`pencore.integrate._jacobian`
+    (Newton's and Euler's equations and the power of the contact stresses, against the
+    fixed-frame velocity ``y[7:10]`` and the body-frame angular velocity ``y[10:13]``),
+    from :func:`load_jacobian` and the chain rule: ``v_body = R^T v``, ``dv/dt = R F / m
+    + g``, ``dw/dt = (M + gyroscopic terms) / I``, ``dW/dt = F . v_body + M . w``.
+    ``f0`` is the state derivative at ``y``; the loads ``F, M`` the power row needs are
+    recovered from it.
+    """
+    rot = quat_to_matrix(y[3:7])
+    d = load_jacobian(y, rings, bounds, coef, eps)
+    i1, i2, i3 = inertia[0], inertia[1], inertia[2]
+    w1, w2, w3 = y[10], y[11], y[12]
+    vb = np.empty(3)
+    fb = np.empty(3)
+    for j in range(3):
+        vb[j] = rot[0, j] * y[7] + rot[1, j] * y[8] + rot[2, j] * y[9]
+        fb[j] = mass * (
+            rot[0, j] * (f0[7] - gravity[0])
+            + rot[1, j] * (f0[8] - gravity[1])
+            + rot[2, j] * (f0[9] - gravity[2])
+        )
+    mb = np.empty(3)
+    mb[0] = f0[10] * i1 - (i2 - i3) * w2 * w3
+    mb[1] = f0[11] * i2 - (i3 - i1) * w3 * w1
+    mb[2] = f0[12] * i3 - (i1 - i2) * w1 * w2
+    # d against the fixed-frame velocity: columns 0-2 of d times R^T
+    dv = np.empty((6, 3))
+    for a in range(6):
+        for b in range(3):
+            dv[a, b] = d[a, 0] * rot[b, 0] + d[a, 1] * rot[b, 1] + d[a, 2] * rot[b, 2]
+    inert = (i1, i2, i3)
+    for a in range(3):
+        for b in range(3):
+            # translation: R (dF/dv_fixed) / m and R (dF/dw) / m
+            jac[7 + a, 7 + b] = (
+                rot[a, 0] * dv[0, b] + rot[a, 1] * dv[1, b] + rot[a, 2] * dv[2, b]
+            ) / mass
+            jac[7 + a, 10 + b] = (
+                rot[a, 0] * d[0, 3 + b] + rot[a, 1] * d[1, 3 + b] + rot[a, 2] * d[2, 3 + b]
+            ) / mass
+            # rotation: (dM/dv_fixed) / I and (dM/dw) / I
+            jac[10 + a, 7 + b] = dv[3 + a, b] / inert[a]
+            jac[10 + a, 10 + b] = d[3 + a, 3 + b] / inert[a]
+    # gyroscopic terms of Euler's equations (I2 = I3 makes the first row vanish)
+    jac[10, 11] += (i2 - i3) * w3 / i1
+    jac[10, 12] += (i2 - i3) * w2 / i1
+    jac[11, 10] += (i3 - i1) * w3 / i2
+    jac[11, 12] += (i3 - i1) * w1 / i2
+    jac[12, 10] += (i1 - i2) * w2 / i3
+    jac[12, 11] += (i1 - i2) * w1 / i3
+    # power row: d(F . vb + M . w)
+    for b in range(3):
+        pv = 0.0
+        for j in range(3):
+            pv += (
+                fb[j]
+                + vb[0] * d[0, j]
+                + vb[1] * d[1, j]
+                + vb[2] * d[2, j]
+                + w1 * d[3, j]
+                + w2 * d[4, j]
+                + w3 * d[5, j]
+            ) * rot[b, j]
+        jac[13, 7 + b] = pv
+        jac[13, 10 + b] = (
+            mb[b]
+            + vb[0] * d[0, 3 + b]
+            + vb[1] * d[1, 3 + b]
+            + vb[2] * d[2, 3 + b]
+            + w1 * d[3, 3 + b]
+            + w2 * d[4, 3 + b]
+            + w3 * d[5, 3 + b]
+        )
