@@ -45,11 +45,17 @@ import math
 import numba as nb
 import numpy as np
 
+from .arcs import (  # noqa: F401 - TWO_PI, _level_arc re-exported for older imports
+    _MAXD,
+    _MAXI,
+    TWO_PI,
+    _intersect,
+    _level_arc,
+    _poly_arc_integrals,
+    layer_arcs,
+    ring_height,
+)
 from .windows import depth_factor
-
-TWO_PI = 2.0 * math.pi
-_MAXI = 16  # max number of arcs in an interval set
-_MAXD = 10  # max polynomial degree + 2
 
 # ---------------------------------------------------------------- rotations
 
@@ -72,173 +78,6 @@ def quat_to_matrix(q: np.ndarray) -> np.ndarray:
     r[2, 1] = 2 * (y * z + w * x)
     r[2, 2] = w * w - x * x - y * y + z * z
     return r
-
-
-# ---------------------------------------------------------------- arc sets on [0, 2pi)
-
-
-@nb.njit(cache=True)
-def _arc(center: float, half: float, lo: np.ndarray, hi: np.ndarray) -> int:
-    """Write the arc |phi - center| <= half as intervals in [0, 2pi); return the count."""
-    if half >= math.pi:
-        lo[0] = 0.0
-        hi[0] = TWO_PI
-        return 1
-    if half <= 0.0:
-        return 0
-    a = (center - half) % TWO_PI
-    b = a + 2.0 * half
-    if b <= TWO_PI:
-        lo[0] = a
-        hi[0] = b
-        return 1
-    lo[0] = a
-    hi[0] = TWO_PI
-    lo[1] = 0.0
-    hi[1] = b - TWO_PI
-    return 2
-
-
-@nb.njit(cache=True)
-def _intersect(alo, ahi, na, blo, bhi, nb_, olo, ohi) -> int:
-    n = 0
-    for i in range(na):
-        for j in range(nb_):
-            lo = max(alo[i], blo[j])
-            hi = min(ahi[i], bhi[j])
-            if hi > lo and n < _MAXI:
-                olo[n] = lo
-                ohi[n] = hi
-                n += 1
-    return n
-
-
-@nb.njit(cache=True)
-def _level_arc(c0: float, ck: float, phik: float, level: float, above: bool, lo, hi) -> int:
-    """Arc set where ``c0 + ck cos(phi - phik) >= level`` (above) or ``<= level``."""
-    if ck < 1e-300:
-        ok = (c0 >= level) if above else (c0 <= level)
-        if ok:
-            lo[0] = 0.0
-            hi[0] = TWO_PI
-            return 1
-        return 0
-    c = (level - c0) / ck
-    if above:  # cos(phi - phik) >= c
-        if c <= -1.0:
-            return _arc(0.0, math.pi, lo, hi)
-        if c > 1.0:
-            return 0
-        return _arc(phik, math.acos(c), lo, hi)
-    # cos(phi - phik) <= c  <=>  |phi - phik - pi| <= pi - acos(c)
-    if c >= 1.0:
-        return _arc(0.0, math.pi, lo, hi)
-    if c < -1.0:
-        return 0
-    return _arc(phik + math.pi, math.pi - math.acos(c), lo, hi)
-
-
-@nb.njit(cache=True)
-def layer_arcs(y0, yk, phiy, top, bot, l1lo, l1hi, l2lo, l2hi, blo, bhi) -> int:
-    """Arc set (into ``blo, bhi``) of a ring at heights ``y0 + yk cos(phi - phiy)`` that
-    lies between a layer's ``bot`` and ``top`` (m); the ``l*`` arrays are scratch."""
-    n1 = _level_arc(y0, yk, phiy, top, False, l1lo, l1hi)
-    if n1 == 0:
-        return 0
-    if bot > -np.inf:
-        n2 = _level_arc(y0, yk, phiy, bot, True, l2lo, l2hi)
-        return _intersect(l1lo, l1hi, n1, l2lo, l2hi, n2, blo, bhi)
-    for m in range(n1):
-        blo[m] = l1lo[m]
-        bhi[m] = l1hi[m]
-    return n1
-
-
-@nb.njit(cache=True)
-def ring_height(ycm, r10, r11, r12, x1, r):
-    """Height of a ring's points as ``y0 + yk cos(phi - phiy)``: ``(y0, yk, phiy)`` (m, m,
-    rad) from the centre-of-mass height ``ycm`` and row 1 of the rotation matrix."""
-    y0 = ycm + r10 * x1
-    yc = r11 * r
-    ys = r12 * r
-    yk = math.sqrt(yc * yc + ys * ys)
-    if yk < 1e-12 * r:
-        # ring parallel to the surface: a round-off tilt would orient its partial
-        # contact arc at random, so it is either wholly in or wholly out
-        yk = 0.0
-    return y0, yk, math.atan2(ys, yc)
-
-
-# ---------------------------------------------------------------- closed-form arc integrals
-
-
-@nb.njit(cache=True)
-def _poly_arc_integrals(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj):
-    """Integrals of P(V), P(V) cos(phi), P(V) sin(phi) over the intervals, where
-    ``V = a + k cos(phi - phi0)`` and ``P(V) = sum poly[i] V^i`` (i <= deg).
-    ``e, cj, dj`` are scratch arrays of length >= deg + 2."""
-    # Taylor coefficients of P(a + x) by repeated synthetic division (Horner shifts)
-    for i in range(deg + 1):
-        e[i] = poly[i]
-    for j in range(deg):
-        for i in range(deg - 1, j - 1, -1):
-            e[i] += a * e[i + 1]
-    s0 = 0.0
-    sc = 0.0
-    ss = 0.0
-    cph = math.cos(phi0)
-    sph = math.sin(phi0)
-    for m in range(n):
-        if lo[m] == 0.0 and hi[m] == TWO_PI:
-            # whole ring: exact integrals (odd powers and the sine moments vanish), so
-            # round-off cannot create a lateral load on an axisymmetric state
-            for j in range(deg + 2):
-                cj[j] = _full_circle_cos_power(j)
-            kp = 1.0
-            for j in range(deg + 1):
-                f = e[j] * kp
-                s0 += f * cj[j]
-                sc += f * cph * cj[j + 1]
-                ss += f * sph * cj[j + 1]
-                kp *= k
-            continue
-        pa = lo[m] - phi0
-        pb = hi[m] - phi0
-        ca, sa = math.cos(pa), math.sin(pa)
-        cb, sb = math.cos(pb), math.sin(pb)
-        cj[0] = pb - pa
-        cj[1] = sb - sa
-        cpa = ca  # cos^(j-1) at a, starting j = 2
-        cpb = cb
-        for j in range(2, deg + 2):
-            cj[j] = (cpb * sb - cpa * sa) / j + (j - 1) / j * cj[j - 2]
-            cpa *= ca
-            cpb *= cb
-        cpa = ca
-        cpb = cb
-        for j in range(deg + 1):
-            dj[j] = (cpa - cpb) / (j + 1)
-            cpa *= ca
-            cpb *= cb
-        kp = 1.0
-        for j in range(deg + 1):
-            f = e[j] * kp
-            s0 += f * cj[j]
-            sc += f * (cph * cj[j + 1] - sph * dj[j])
-            ss += f * (cph * dj[j] + sph * cj[j + 1])
-            kp *= k
-    return s0, sc, ss
-
-
-@nb.njit(cache=True)
-def _full_circle_cos_power(j):
-    """Integral of cos^j over a full turn: 0 for odd j, 2 pi (j-1)!!/j!! for even j."""
-    if j % 2 == 1:
-        return 0.0
-    v = TWO_PI
-    for i in range(2, j + 1, 2):
-        v *= (i - 1.0) / i
-    return v
 
 
 # ---------------------------------------------------------------- contact loads

@@ -23,7 +23,7 @@ the velocity (``Vn = -eps``), so differentiating under the integral sign is exac
 ``S`` is symmetric, so the load Jacobian is too, and negative semi-definite where
 ``G' >= 0``: the frictionless DAFL is a dissipative force derived from a potential in
 the velocities. The arc integrals of ``G'`` times the six products of ``1, cos, sin``
-are closed form like the loads' (:func:`pencore.dynamics._poly_arc_integrals`).
+are closed form like the loads' (:mod:`pencore.arcs`).
 
 Only the velocity derivatives are formed, as in the finite-difference form: the
 position and attitude derivatives are not stiff, and the error control absorbs their
@@ -39,78 +39,19 @@ import math
 import numba as nb
 import numpy as np
 
-from .dynamics import (
+from .arcs import (
     _MAXD,
     _MAXI,
-    TWO_PI,
-    _full_circle_cos_power,
     _intersect,
     _level_arc,
+    _poly_arc_moments,
     layer_arcs,
-    quat_to_matrix,
     ring_height,
 )
+from .dynamics import quat_to_matrix
 from .windows import depth_factor
 
 __all__ = ["load_jacobian", "velocity_jacobian"]
-
-
-@nb.njit(cache=True)
-def _poly_arc_moments(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj, out):
-    """Add to ``out[0:6]`` the integrals of ``P(V)`` times ``1, cos, sin, cos^2,
-    cos sin, sin^2`` (of ``phi``) over the intervals, with ``V = a + k cos(phi - phi0)``
-    and ``P(V) = sum poly[i] V^i`` (i <= deg); ``e, cj, dj`` are scratch of length
-    >= deg + 3."""
-    for i in range(deg + 1):
-        e[i] = poly[i]
-    for j in range(deg):
-        for i in range(deg - 1, j - 1, -1):
-            e[i] += a * e[i + 1]
-    # moments in psi = phi - phi0: cos^j psi (C_j) and cos^j psi sin psi (D_j)
-    i0 = ic = isn = icc = ics = iss = 0.0
-    for m in range(n):
-        if lo[m] == 0.0 and hi[m] == TWO_PI:
-            for j in range(deg + 3):
-                cj[j] = _full_circle_cos_power(j)
-                dj[j] = 0.0
-        else:
-            pa = lo[m] - phi0
-            pb = hi[m] - phi0
-            ca, sa = math.cos(pa), math.sin(pa)
-            cb, sb = math.cos(pb), math.sin(pb)
-            cj[0] = pb - pa
-            cj[1] = sb - sa
-            cpa = ca
-            cpb = cb
-            for j in range(2, deg + 3):
-                cj[j] = (cpb * sb - cpa * sa) / j + (j - 1) / j * cj[j - 2]
-                cpa *= ca
-                cpb *= cb
-            cpa = ca
-            cpb = cb
-            for j in range(deg + 2):
-                dj[j] = (cpa - cpb) / (j + 1)
-                cpa *= ca
-                cpb *= cb
-        kp = 1.0
-        for j in range(deg + 1):
-            f = e[j] * kp
-            i0 += f * cj[j]
-            ic += f * cj[j + 1]
-            isn += f * dj[j]
-            icc += f * cj[j + 2]
-            ics += f * dj[j + 1]
-            iss += f * (cj[j] - cj[j + 2])
-            kp *= k
-    # back to phi: cos phi = c cos psi - s sin psi, sin phi = s cos psi + c sin psi
-    c = math.cos(phi0)
-    s = math.sin(phi0)
-    out[0] += i0
-    out[1] += c * ic - s * isn
-    out[2] += s * ic + c * isn
-    out[3] += c * c * icc - 2.0 * c * s * ics + s * s * iss
-    out[4] += c * s * (icc - iss) + (c * c - s * s) * ics
-    out[5] += s * s * icc + 2.0 * c * s * ics + c * c * iss
 
 
 @nb.njit(cache=True)

@@ -23,6 +23,7 @@ import numpy as np
 #: Modules whose compiled functions inline others' (their caches go stale together).
 KERNEL_MODULES = (
     "windows",
+    "arcs",
     "dynamics",
     "jacobian",
     "contact_points",
