@@ -29,7 +29,7 @@ def _states(case):
         pr.projectile, pr.rings, v, math.radians(obl), math.radians(yaw), omega, None, 0.0, "cm"
     )
     run = _run(pr, y0, v, False)
-    return pr, run.ys[1::25]
+    return pr, run.ys[1 :: max(1, run.ys.shape[0] // 20)]
 
 
 def _rhs(pr, y):

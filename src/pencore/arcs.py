@@ -26,7 +26,7 @@ _MAXD = 10  # max polynomial degree + 2
 # ---------------------------------------------------------------- arc sets on [0, 2pi)
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def _arc(center: float, half: float, lo: np.ndarray, hi: np.ndarray) -> int:
     """Write the arc |phi - center| <= half as intervals in [0, 2pi); return the count."""
     if half >= math.pi:
@@ -48,7 +48,7 @@ def _arc(center: float, half: float, lo: np.ndarray, hi: np.ndarray) -> int:
     return 2
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def _intersect(alo, ahi, na, blo, bhi, nb_, olo, ohi) -> int:
     n = 0
     for i in range(na):
@@ -62,7 +62,7 @@ def _intersect(alo, ahi, na, blo, bhi, nb_, olo, ohi) -> int:
     return n
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def _level_arc(c0: float, ck: float, phik: float, level: float, above: bool, lo, hi) -> int:
     """Arc set where ``c0 + ck cos(phi - phik) >= level`` (above) or ``<= level``."""
     if ck < 1e-300:
@@ -121,7 +121,7 @@ def ring_height(ycm, r10, r11, r12, x1, r):
 # ---------------------------------------------------------------- closed-form arc integrals
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def _poly_arc_integrals(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj):
     """Integrals of P(V), P(V) cos(phi), P(V) sin(phi) over the intervals, where
     ``V = a + k cos(phi - phi0)`` and ``P(V) = sum poly[i] V^i`` (i <= deg).
@@ -179,7 +179,7 @@ def _poly_arc_integrals(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj):
     return s0, sc, ss
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, inline="always")
 def _full_circle_cos_power(j):
     """Integral of cos^j over a full turn: 0 for odd j, 2 pi (j-1)!!/j!! for even j."""
     if j % 2 == 1:
@@ -246,3 +246,55 @@ def _poly_arc_moments(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj, out):
     out[3] += c * c * icc - 2.0 * c * s * ics + s * s * iss
     out[4] += c * s * (icc - iss) + (c * c - s * s) * ics
     out[5] += s * s * icc + 2.0 * c * s * ics + c * c * iss
+
+
+@nb.njit(cache=True, inline="always")
+def band_regions(
+    y0, yk, phiy, hb, top, bot, wl, l1lo, l1hi, l2lo, l2hi, blo, bhi, rlo, rhi, rn, rpar
+) -> int:
+    """Regions of a ring over which the share of its band inside a layer is affine.
+
+    The band of a ring (half-height ``hb``, m: :func:`pencore.dynamics.band_half_height`)
+    at angle ``phi`` spans the heights ``y(phi) +- hb`` with ``y(phi) = y0 + yk cos(phi
+    - phiy)``; the share of it below a level is the ramp ``R = clip((level - y + hb) /
+    (2 hb), 0, 1)``, and the share inside the layer ``[bot, top]`` is ``R(top) -
+    R(bot)``. Each level gives a core (``y <= level - hb``, ``R = 1``) and a ramp
+    (``|y - level| < hb``, ``R = alpha - beta cos(phi - phiy)``). Writes up to four
+    regions into rows of ``rlo, rhi`` (arcs), ``rn`` (arc counts) and ``rpar`` (alpha,
+    beta, signed area weight ``+-wl``); returns their number. The ``l*, b*`` arrays are
+    scratch. With ``hb = 0`` this is the sharp test ``bot <= y <= top``.
+    """
+    nreg = 0
+    for edge in range(2):
+        level = top if edge == 0 else bot
+        if edge == 1 and not (level > -np.inf):
+            break
+        we = wl if edge == 0 else -wl
+        if y0 - yk >= level + hb:
+            continue  # the band is wholly above this level
+        n = 0
+        if y0 - yk <= level - hb:
+            n = _level_arc(y0, yk, phiy, level - hb, False, l1lo, l1hi)
+        if n > 0:
+            for m in range(n):
+                rlo[nreg, m] = l1lo[m]
+                rhi[nreg, m] = l1hi[m]
+            rn[nreg] = n
+            rpar[nreg, 0] = 1.0
+            rpar[nreg, 1] = 0.0
+            rpar[nreg, 2] = we
+            nreg += 1
+        if hb > 0.0 and y0 + yk > level - hb:
+            n1 = _level_arc(y0, yk, phiy, level - hb, True, l1lo, l1hi)
+            n2 = _level_arc(y0, yk, phiy, level + hb, False, l2lo, l2hi)
+            n = _intersect(l1lo, l1hi, n1, l2lo, l2hi, n2, blo, bhi)
+            if n > 0:
+                for m in range(n):
+                    rlo[nreg, m] = blo[m]
+                    rhi[nreg, m] = bhi[m]
+                rn[nreg] = n
+                rpar[nreg, 0] = (level + hb - y0) / (2.0 * hb)
+                rpar[nreg, 1] = yk / (2.0 * hb)
+                rpar[nreg, 2] = we
+                nreg += 1
+    return nreg

@@ -34,7 +34,20 @@ solver smooths the step over a normal-velocity band of half-width ``eps`` (m/s):
     H_eps(Vn) = clip((Vn + eps) / (2 eps), 0, 1)
 
 which tends to Eq. 7 as ``eps -> 0`` (``eps = 0`` is the sharp law). The band is integrated
-in closed form too. The default ``eps`` comes from the convergence study
+in closed form too.
+
+Band immersion ramp: each ring stands for the band of surface around it (meridian length
+``dl = w / r``). Testing only the ring's own line against the free surface switches a
+band on all at once as the line crosses it: on a ring parallel to the surface (normal
+impact) the whole ring jumps in, and on a tilted one the loaded arc opens like
+``sqrt(depth)``. Either makes the force non-smooth once per ring, and the step control
+then resolves every crossing (most of the steps and rejections of an oblique entry). The
+share of the band below the surface is instead ramped linearly over the band's height
+range ``+-hb`` (:func:`band_half_height`); on a straight generator (the shank, a cone)
+that share is exact. The ramp is affine in ``cos(phi - phiy)``, so the ramped arcs are
+integrated in closed form as well (:func:`pencore.arcs.band_regions`,
+:func:`pencore.arcs._poly_arc_moments`); the ramp vanishes with the ring spacing and the
+mesh convergence becomes second order (``benchmarks/convergence.py``). The default ``eps`` comes from the convergence study
 (``benchmarks/convergence.py``); the implicit integrator keeps the stiff band stable.
 """
 
@@ -52,7 +65,8 @@ from .arcs import (  # noqa: F401 - TWO_PI, _level_arc re-exported for older imp
     _intersect,
     _level_arc,
     _poly_arc_integrals,
-    layer_arcs,
+    _poly_arc_moments,
+    band_regions,
     ring_height,
 )
 from .windows import depth_factor
@@ -117,11 +131,10 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
     mom = np.zeros(3)
     clearance = np.inf
     nlay = bounds.shape[0]
-    ncoef = coef.shape[1]
     poly = np.zeros(_MAXD)
-    se = np.zeros(_MAXD)
-    scj = np.zeros(_MAXD)
-    sdj = np.zeros(_MAXD)
+    se = np.zeros(_MAXD + 2)
+    scj = np.zeros(_MAXD + 2)
+    sdj = np.zeros(_MAXD + 2)
 
     l1lo = np.empty(_MAXI)
     l1hi = np.empty(_MAXI)
@@ -133,8 +146,18 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
     vhi = np.empty(_MAXI)
     slo = np.empty(_MAXI)
     shi = np.empty(_MAXI)
+    moments = np.zeros(6)
+    rlo = np.empty((4, _MAXI))  # up to 4 regions per ring and layer (see below)
+    rhi = np.empty((4, _MAXI))
+    rn = np.zeros(4, dtype=np.int64)
+    rpar = np.empty((4, 3))  # alpha, beta, signed area weight
+    ncoef = coef.shape[1]
+    deg = ncoef - 1
+    nside = 1 if eps <= 0.0 else 2
+    inv = 0.5 / eps if eps > 0.0 else 0.0
     gx, gw = _leggauss(n_gauss)
 
+    rk = math.sqrt(r11 * r11 + r12 * r12)  # |d(height)/d(radius)| of a ring point
     for i in range(rings.shape[0]):
         x1 = rings[i, 0]
         r = rings[i, 1]
@@ -142,11 +165,13 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         nr = rings[i, 3]
         w = rings[i, 4]
         y0, yk, phiy = ring_height(ycm, r10, r11, r12, x1, r)
-        low = y0 - yk
+        hb = band_half_height(r10, rk, r, na, nr, w)
+        low = y0 - yk - hb
         if low < clearance:
             clearance = low
         if low > bounds[0, 0]:
             continue
+        high = y0 + yk + hb
         # normal velocity: Vn = A + K cos(phi - phi0)
         q = nr * x1 - na * r
         av = na * v1
@@ -154,91 +179,129 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         bs = nr * v3 - w2 * q
         kv = math.sqrt(bc * bc + bs * bs)
         phi0 = math.atan2(bs, bc)
+        cy = math.cos(phiy)
+        sy = math.sin(phiy)
         for lay in range(nlay):
-            nbase = layer_arcs(
-                y0, yk, phiy, bounds[lay, 0], bounds[lay, 1], l1lo, l1hi, l2lo, l2hi, blo, bhi
-            )
-            if nbase == 0:
-                continue
+            if high < bounds[lay, 1]:
+                continue  # wholly below this layer
             # depth windows (crater, free surface) at the ring centre; 1 when off
             wl = w
             if bounds.shape[1] >= 5:
                 wl = w * depth_factor(y0, bounds, lay)
                 if wl == 0.0:
                     continue
-            # --- normal stress, closed form
-            s0 = 0.0
-            sc = 0.0
-            ss = 0.0
-            deg = ncoef - 1
-            if eps <= 0.0:
-                nv = _level_arc(av, kv, phi0, 0.0, True, vlo, vhi)
-                ns = _intersect(blo, bhi, nbase, vlo, vhi, nv, slo, shi)
-                if ns > 0:
-                    for c in range(ncoef):
-                        poly[c] = coef[lay, c]
-                    a_, b_, c_ = _poly_arc_integrals(
-                        poly, deg, av, kv, phi0, slo, shi, ns, se, scj, sdj
-                    )
-                    s0 += a_
-                    sc += b_
-                    ss += c_
-            else:
-                inv = 0.5 / eps
-                for side in range(2):
-                    level = -eps if side == 0 else eps
-                    sgn = 1.0 if side == 0 else -1.0
+            # the layer's share of the band: cores and ramps (pencore.arcs.band_regions)
+            nreg = 0
+            for edge in range(2):
+                level = bounds[lay, edge]
+                if edge == 1 and not (level > -np.inf):
+                    break
+                we = wl if edge == 0 else -wl
+                if y0 - yk >= level + hb:
+                    continue
+                n = 0
+                if y0 - yk <= level - hb:
+                    n = _level_arc(y0, yk, phiy, level - hb, False, l1lo, l1hi)
+                if n > 0:
+                    for m in range(n):
+                        rlo[nreg, m] = l1lo[m]
+                        rhi[nreg, m] = l1hi[m]
+                    rn[nreg] = n
+                    rpar[nreg, 0] = 1.0
+                    rpar[nreg, 1] = 0.0
+                    rpar[nreg, 2] = we
+                    nreg += 1
+                if hb > 0.0 and y0 + yk > level - hb:
+                    n1 = _level_arc(y0, yk, phiy, level - hb, True, l1lo, l1hi)
+                    n2 = _level_arc(y0, yk, phiy, level + hb, False, l2lo, l2hi)
+                    n = _intersect(l1lo, l1hi, n1, l2lo, l2hi, n2, blo, bhi)
+                    if n > 0:
+                        for m in range(n):
+                            rlo[nreg, m] = blo[m]
+                            rhi[nreg, m] = bhi[m]
+                        rn[nreg] = n
+                        rpar[nreg, 0] = (level + hb - y0) / (2.0 * hb)
+                        rpar[nreg, 1] = yk / (2.0 * hb)
+                        rpar[nreg, 2] = we
+                        nreg += 1
+            for g in range(nreg):
+                alpha, beta, we = rpar[g, 0], rpar[g, 1], rpar[g, 2]
+                nb_ = rn[g]
+                for m in range(nb_):
+                    blo[m] = rlo[g, m]
+                    bhi[m] = rhi[g, m]
+                ramp = beta != 0.0 or alpha != 1.0
+                # --- normal stress, closed form; chi = alpha - beta cos(phi - phiy)
+                s0 = 0.0
+                sc = 0.0
+                ss = 0.0
+                for side in range(nside):
+                    if eps <= 0.0:
+                        level = 0.0
+                        for c in range(ncoef):
+                            poly[c] = coef[lay, c]
+                        dg = deg
+                    else:
+                        # sgn * (V - level) * sigma(V) / (2 eps): the smoothed step
+                        level = -eps if side == 0 else eps
+                        sgn = 1.0 if side == 0 else -1.0
+                        for c in range(ncoef + 1):
+                            poly[c] = 0.0
+                        for c in range(ncoef):
+                            poly[c + 1] += sgn * inv * coef[lay, c]
+                            poly[c] += -sgn * inv * level * coef[lay, c]
+                        dg = deg + 1
                     nv = _level_arc(av, kv, phi0, level, True, vlo, vhi)
-                    ns = _intersect(blo, bhi, nbase, vlo, vhi, nv, slo, shi)
+                    ns = _intersect(blo, bhi, nb_, vlo, vhi, nv, slo, shi)
                     if ns == 0:
                         continue
-                    # sgn * (V - level) * sigma(V) / (2 eps)
-                    for c in range(ncoef + 1):
-                        poly[c] = 0.0
-                    for c in range(ncoef):
-                        poly[c + 1] += sgn * inv * coef[lay, c]
-                        poly[c] += -sgn * inv * level * coef[lay, c]
-                    a_, b_, c_ = _poly_arc_integrals(
-                        poly, deg + 1, av, kv, phi0, slo, shi, ns, se, scj, sdj
-                    )
-                    s0 += a_
-                    sc += b_
-                    ss += c_
-            f[0] -= wl * na * s0
-            f[1] -= wl * nr * sc
-            f[2] -= wl * nr * ss
-            mom[1] += wl * q * ss
-            mom[2] -= wl * q * sc
-            # --- friction, Gauss quadrature on the loaded arcs
-            if n_gauss > 0 and fric[lay, :, 1].max() > 0.0:
-                level = -eps if eps > 0.0 else 0.0
-                nv = _level_arc(av, kv, phi0, level, True, vlo, vhi)
-                ns = _intersect(blo, bhi, nbase, vlo, vhi, nv, slo, shi)
-                _friction_ring(
-                    f,
-                    mom,
-                    slo,
-                    shi,
-                    ns,
-                    gx,
-                    gw,
-                    x1,
-                    r,
-                    na,
-                    nr,
-                    wl,
-                    v1,
-                    v2,
-                    v3,
-                    w1,
-                    w2,
-                    w3,
-                    coef,
-                    lay,
-                    fric,
-                    eps,
-                )
+                    if not ramp:
+                        a_, b_, c_ = _poly_arc_integrals(
+                            poly, dg, av, kv, phi0, slo, shi, ns, se, scj, sdj
+                        )
+                        s0 += a_
+                        sc += b_
+                        ss += c_
+                    else:
+                        for c in range(6):
+                            moments[c] = 0.0
+                        _poly_arc_moments(
+                            poly, dg, av, kv, phi0, slo, shi, ns, se, scj, sdj, moments
+                        )
+                        # chi (1, cos, sin): cos(phi - phiy) = cy cos(phi) + sy sin(phi)
+                        s0 += alpha * moments[0] - beta * (cy * moments[1] + sy * moments[2])
+                        sc += alpha * moments[1] - beta * (cy * moments[3] + sy * moments[4])
+                        ss += alpha * moments[2] - beta * (cy * moments[4] + sy * moments[5])
+                f[0] -= we * na * s0
+                f[1] -= we * nr * sc
+                f[2] -= we * nr * ss
+                mom[1] += we * q * ss
+                mom[2] -= we * q * sc
+                # --- friction, Gauss quadrature on the loaded arcs
+                if n_gauss > 0 and fric[lay, :, 1].max() > 0.0:
+                    level = -eps if eps > 0.0 else 0.0
+                    nv = _level_arc(av, kv, phi0, level, True, vlo, vhi)
+                    ns = _intersect(blo, bhi, nb_, vlo, vhi, nv, slo, shi)
+                    _friction_ring(
+                        f, mom, slo, shi, ns, gx, gw, x1, r, na, nr, we, v1, v2, v3, w1, w2,
+                        w3, coef, lay, fric, eps, alpha, beta, cy, sy,
+                    )  # fmt: skip
     return f, mom, clearance
+
+
+@nb.njit(cache=True)
+def band_half_height(r10, rk, r, na, nr, w):
+    """Half the height range (m) spanned across its width by the band a ring stands for.
+
+    A ring of weight ``w = r dl`` stands for the band of meridian length ``dl`` around it;
+    a point at meridian offset ``s`` from the ring is ``s (r10 nr - na rk cos(phi -
+    phiy))`` higher than the ring point at the same angle (``r10``: axial, ``rk``:
+    radial rate of height). The largest magnitude over the ring,
+    ``dl/2 (|r10 nr| + |na| rk)``, is the half-height of the band's immersion ramp
+    (:func:`contact_loads`); 0 for a band lying in a horizontal plane."""
+    if r <= 0.0:
+        return 0.0
+    return 0.5 * (w / r) * (abs(r10 * nr) + abs(na) * rk)
 
 
 @nb.njit(cache=True)
@@ -267,8 +330,9 @@ def _leggauss(n):
 
 @nb.njit(cache=True)
 def _friction_ring(
-    f, mom, lo, hi, n, gx, gw, x1, r, na, nr, w, v1, v2, v3, w1, w2, w3, coef, lay, fric, eps
-):
+    f, mom, lo, hi, n, gx, gw, x1, r, na, nr, w, v1, v2, v3, w1, w2, w3, coef, lay, fric, eps,
+    alpha=1.0, beta=0.0, cy=1.0, sy=0.0,
+):  # fmt: skip
     ncoef = coef.shape[1]
     nt = fric.shape[1]
     reg = eps if eps > 0.0 else 1e-9
@@ -294,6 +358,8 @@ def _friction_ring(
                     hw = min(max((vn + eps) / (2.0 * eps), 0.0), 1.0)
                 else:
                     hw = 1.0 if vn >= 0.0 else 0.0
+                if beta != 0.0 or alpha != 1.0:
+                    hw *= alpha - beta * (cy * c + sy * s)
                 if hw == 0.0:
                     continue
                 sig = 0.0

@@ -25,6 +25,11 @@ the velocity (``Vn = -eps``), so differentiating under the integral sign is exac
 the velocities. The arc integrals of ``G'`` times the six products of ``1, cos, sin``
 are closed form like the loads' (:mod:`pencore.arcs`).
 
+With the band immersion ramp (:mod:`pencore.dynamics`) ``G`` carries the band's share
+``chi(phi)``, which depends on the position only; the ramps of tilted rings are
+integrated by Gauss-Legendre quadrature (:func:`_ramp_moments`, to round-off), the
+rest in closed form.
+
 Only the velocity derivatives are formed, as in the finite-difference form: the
 position and attitude derivatives are not stiff, and the error control absorbs their
 omission. Friction (Gauss quadrature of a ``mu(v_t)`` table), the sharp law
@@ -45,13 +50,47 @@ from .arcs import (
     _intersect,
     _level_arc,
     _poly_arc_moments,
-    layer_arcs,
+    band_regions,
     ring_height,
 )
-from .dynamics import quat_to_matrix
+from .dynamics import _leggauss, band_half_height, quat_to_matrix
 from .windows import depth_factor
 
 __all__ = ["load_jacobian", "velocity_jacobian"]
+
+
+#: Gauss points per piece (<= 45 degrees) of a band's ramp arcs: the integrand is a
+#: trigonometric polynomial of degree <= 5 there (soil, concrete), integrated to round-off
+_N_RAMP = 8
+
+
+@nb.njit(cache=True)
+def _ramp_moments(dpoly, deg, av, bc, bs, alpha, beta, phiy, lo, hi, n, gx, gw, out):
+    """Add to ``out[0:6]`` the integrals of ``P(V) chi`` times ``1, cos, sin, cos^2,
+    cos sin, sin^2`` over the arcs, with ``V = av + bc cos + bs sin`` and the band share
+    ``chi = alpha - beta cos(phi - phiy)`` (:func:`pencore.arcs.band_regions`), by
+    Gauss-Legendre quadrature on pieces of at most 45 degrees."""
+    for m in range(n):
+        length = hi[m] - lo[m]
+        npieces = int(math.ceil(length / (0.25 * math.pi)))
+        h = length / npieces
+        for p in range(npieces):
+            a = lo[m] + p * h
+            for g in range(gx.shape[0]):
+                phi = a + 0.5 * h * (gx[g] + 1.0)
+                c = math.cos(phi)
+                s = math.sin(phi)
+                v = av + bc * c + bs * s
+                pv = 0.0
+                for k in range(deg, -1, -1):
+                    pv = pv * v + dpoly[k]
+                f = pv * (alpha - beta * math.cos(phi - phiy)) * 0.5 * h * gw[g]
+                out[0] += f
+                out[1] += f * c
+                out[2] += f * s
+                out[3] += f * c * c
+                out[4] += f * c * s
+                out[5] += f * s * s
 
 
 @nb.njit(cache=True)
@@ -96,7 +135,13 @@ def load_jacobian(y, rings, bounds, coef, eps):
     slo = np.empty(_MAXI)
     shi = np.empty(_MAXI)
     bmat = np.zeros((3, 6))
+    rlo = np.empty((4, _MAXI))
+    rhi = np.empty((4, _MAXI))
+    rn = np.zeros(4, dtype=np.int64)
+    rpar = np.empty((4, 3))
+    gx, gw = _leggauss(_N_RAMP)
     inv = 0.5 / eps
+    rk = math.sqrt(rot[1, 1] ** 2 + rot[1, 2] ** 2)
     for i in range(rings.shape[0]):
         x1 = rings[i, 0]
         r = rings[i, 1]
@@ -104,7 +149,8 @@ def load_jacobian(y, rings, bounds, coef, eps):
         nr = rings[i, 3]
         w = rings[i, 4]
         y0, yk, phiy = ring_height(y[1], rot[1, 0], rot[1, 1], rot[1, 2], x1, r)
-        if y0 - yk > bounds[0, 0]:
+        hb = band_half_height(rot[1, 0], rk, r, na, nr, w)
+        if y0 - yk - hb > bounds[0, 0]:
             continue
         q = nr * x1 - na * r
         av = na * v1
@@ -112,42 +158,57 @@ def load_jacobian(y, rings, bounds, coef, eps):
         bs = nr * v3 - w2 * q
         kv = math.sqrt(bc * bc + bs * bs)
         phi0 = math.atan2(bs, bc)
+        bmat[0, 0] = na
+        bmat[1, 1] = nr
+        bmat[1, 5] = q
+        bmat[2, 2] = nr
+        bmat[2, 4] = -q
         for lay in range(nlay):
-            nbase = layer_arcs(
-                y0, yk, phiy, bounds[lay, 0], bounds[lay, 1], l1lo, l1hi, l2lo, l2hi, blo, bhi
-            )
-            if nbase == 0:
+            if y0 + yk + hb < bounds[lay, 1]:
                 continue
             wl = w
             if bounds.shape[1] >= 5:
                 wl = w * depth_factor(y0, bounds, lay)
                 if wl == 0.0:
                     continue
-            for c in range(6):
-                mom[c] = 0.0
-            for side in range(2):
-                level = -eps if side == 0 else eps
-                sgn = 1.0 if side == 0 else -1.0
-                nv = _level_arc(av, kv, phi0, level, True, vlo, vhi)
-                ns = _intersect(blo, bhi, nbase, vlo, vhi, nv, slo, shi)
-                if ns == 0:
-                    continue
-                # G on this side: sgn (V - level) sigma(V) / (2 eps); dpoly is G'
-                for c in range(ncoef + 1):
-                    poly[c] = 0.0
-                for c in range(ncoef):
-                    poly[c + 1] += sgn * inv * coef[lay, c]
-                    poly[c] += -sgn * inv * level * coef[lay, c]
-                for c in range(ncoef):
-                    dpoly[c] = (c + 1) * poly[c + 1]
-                _poly_arc_moments(dpoly, ncoef - 1, av, kv, phi0, slo, shi, ns, se, scj, sdj, mom)
-            # S = [[1, c, s], [c, cc, cs], [s, cs, ss]] moments; loads' Jacobian -w B^T S B
-            bmat[0, 0] = na
-            bmat[1, 1] = nr
-            bmat[1, 5] = q
-            bmat[2, 2] = nr
-            bmat[2, 4] = -q
-            _add_btsb(out, bmat, mom, -wl)
+            nreg = band_regions(
+                y0, yk, phiy, hb, bounds[lay, 0], bounds[lay, 1], wl, l1lo, l1hi, l2lo, l2hi,
+                blo, bhi, rlo, rhi, rn, rpar,
+            )  # fmt: skip
+            for g in range(nreg):
+                alpha, beta, we = rpar[g, 0], rpar[g, 1], rpar[g, 2]
+                for c in range(6):
+                    mom[c] = 0.0
+                for side in range(2):
+                    level = -eps if side == 0 else eps
+                    sgn = 1.0 if side == 0 else -1.0
+                    nv = _level_arc(av, kv, phi0, level, True, vlo, vhi)
+                    ns = _intersect(rlo[g], rhi[g], rn[g], vlo, vhi, nv, slo, shi)
+                    if ns == 0:
+                        continue
+                    # G on this side: sgn (V - level) sigma(V) / (2 eps); dpoly is G'
+                    for c in range(ncoef + 1):
+                        poly[c] = 0.0
+                    for c in range(ncoef):
+                        poly[c + 1] += sgn * inv * coef[lay, c]
+                        poly[c] += -sgn * inv * level * coef[lay, c]
+                    for c in range(ncoef):
+                        dpoly[c] = (c + 1) * poly[c + 1]
+                    if beta == 0.0:
+                        # chi = alpha on the whole region (a core, or a level band):
+                        # closed form, so a full ring's odd moments stay exactly 0
+                        for c in range(ncoef):
+                            dpoly[c] *= alpha
+                        _poly_arc_moments(
+                            dpoly, ncoef - 1, av, kv, phi0, slo, shi, ns, se, scj, sdj, mom
+                        )
+                    else:
+                        _ramp_moments(
+                            dpoly, ncoef - 1, av, bc, bs, alpha, beta, phiy, slo, shi, ns, gx,
+                            gw, mom,
+                        )  # fmt: skip
+                # S = [[1, c, s], [c, cc, cs], [s, cs, ss]]; the loads' Jacobian -w B^T S B
+                _add_btsb(out, bmat, mom, -we)
     return out
 
 

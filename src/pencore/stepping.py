@@ -151,7 +151,7 @@ def body_reach(rings):
 
 @nb.njit(cache=True)
 def body_top(y, rings):
-    """Height ``y`` (m) of the highest point of the surface rings in state ``y``."""
+    """Height ``y`` (m) of the highest point of the surface bands in state ``y``."""
     n = math.sqrt(y[3] * y[3] + y[4] * y[4] + y[5] * y[5] + y[6] * y[6])
     w, x, yq, z = y[3] / n, y[4] / n, y[5] / n, y[6] / n
     r10 = 2 * (x * yq + w * z)
@@ -160,7 +160,10 @@ def body_top(y, rings):
     rk = math.sqrt(r11 * r11 + r12 * r12)
     top = -np.inf
     for i in range(rings.shape[0]):
-        h = y[1] + r10 * rings[i, 0] + rk * rings[i, 1]
+        r, na, nr, w = rings[i, 1], rings[i, 2], rings[i, 3], rings[i, 4]
+        # the top of the band the ring stands for (pencore.dynamics.band_half_height)
+        hb = 0.5 * (w / r) * (abs(r10 * nr) + abs(na) * rk) if r > 0.0 else 0.0
+        h = y[1] + r10 * rings[i, 0] + rk * r + hb
         if h > top:
             top = h
     return top
