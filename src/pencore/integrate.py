@@ -313,6 +313,7 @@ def integrate_chunk(
             si[SI_N_JAC] += 1
             age = 0
             jac_in_target = in_target
+        rejected = False
         while True:
             ynew, f2, clear_new, err = _attempt(
                 h, y, f0, jac, wmat, piv, rtol, atol, mass, inertia, gravity, rings,
@@ -322,6 +323,7 @@ def integrate_chunk(
             if err <= 1.0:
                 break
             si[SI_N_REJ] += 1
+            rejected = True
             if age > 0:
                 # a held Jacobian may be what failed: rebuild it before shrinking the step
                 si[SI_N_RHS] += _jacobian(
@@ -370,7 +372,10 @@ def integrate_chunk(
         if si[SI_ENTERED] == 1 and perforated(y, rings, bounds):
             code = PERFORATED
             break
+        h_acc = h
         h = _next_step(h, err)
+        if rejected:
+            h = min(h, h_acc)
     sf[SF_T] = t
     sf[SF_H] = h
     sf[SF_CLEAR] = clear
