@@ -442,3 +442,30 @@ def test_archived_config_is_the_shipped_one():
     archived = json.loads(ds.attrs["config_json"])
     assert archived["validation.table2"] == cfg["validation"]["table2"]
     assert archived["numerics"] == cfg["numerics"]
+
+
+@pytest.mark.parametrize(
+    ("raise_", "one_line"),
+    [("SolverError('the steps stalled at t = 1 s')", True), ("KeyError('bug')", False)],
+)
+def test_workflow_script_errors_are_one_line(tmp_path, raise_, one_line):
+    # a job that fails with pencore's own error prints one line naming it (the rule's
+    # log keeps the traceback); anything else is a bug and keeps its traceback
+    scripts = Path(__file__).resolve().parents[1] / "workflow" / "scripts"
+    log = tmp_path / "job.log"
+    code = (
+        f"import sys; sys.path.insert(0, {str(scripts)!r})\n"
+        "from _common import start_log\n"
+        "from pencore.solver import SolverError\n"
+        f"start_log({str(log)!r}, 'job')\n"
+        f"raise {raise_}\n"
+    )
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert r.returncode == 1
+    assert "Traceback" in log.read_text()
+    if one_line:
+        assert r.stderr.strip().splitlines() == [
+            f"job: error: the steps stalled at t = 1 s (details in {log})"
+        ]
+    else:
+        assert "Traceback" in r.stderr

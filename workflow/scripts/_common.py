@@ -27,7 +27,17 @@ def start_log(path: str, name: str) -> logging.Logger:
     log = logging.getLogger(name)
 
     def excepthook(exc_type, exc, tb):
+        # the whole traceback goes to the rule's log; pencore's own errors (bad input,
+        # a run that cannot finish) already name the value and cause, so the console
+        # gets that one line, and a traceback only for what would be a bug
         log.critical("failed", exc_info=(exc_type, exc, tb))
+        from pencore.atomic import WriteError
+        from pencore.solver import SolverError
+        from pencore.validate import InputError
+
+        if issubclass(exc_type, InputError | SolverError | WriteError):
+            print(f"{name}: error: {exc} (details in {path})", file=sys.stderr)
+            return
         sys.__excepthook__(exc_type, exc, tb)
 
     sys.excepthook = excepthook
