@@ -180,6 +180,50 @@ def _poly_arc_integrals(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj):
 
 
 @nb.njit(cache=True, inline="always")
+def _poly_centred_arc_integrals(poly, deg, a, k, cph, sph, level, e, cj):
+    """:func:`_poly_arc_integrals` over the whole-ring arc where ``V >= level``, with
+    ``V = a + k cos(phi - phi0)`` and ``cph, sph = cos(phi0), sin(phi0)``.
+
+    That arc is ``|phi - phi0| <= h`` with ``cos h = (level - a) / k``: symmetric about
+    ``phi0``, so the sine moments vanish and its ends need no trigonometry (``cos h``
+    is known, ``sin h = sqrt(1 - cos^2 h)``); ``C_j`` is the integral of ``cos^j`` over
+    it. The whole ring (``h = pi``) gives exact zeros for the odd ``C_j``. ``e, cj``
+    are scratch of length >= deg + 2."""
+    if k < 1e-300:
+        if a < level:
+            return 0.0, 0.0, 0.0
+        ch, sh, h = -1.0, 0.0, math.pi
+    else:
+        c = (level - a) / k
+        if c > 1.0:
+            return 0.0, 0.0, 0.0
+        if c <= -1.0:
+            ch, sh, h = -1.0, 0.0, math.pi
+        else:
+            ch, sh, h = c, math.sqrt(1.0 - c * c), math.acos(c)
+    for i in range(deg + 1):
+        e[i] = poly[i]
+    for j in range(deg):
+        for i in range(deg - 1, j - 1, -1):
+            e[i] += a * e[i + 1]
+    cj[0] = 2.0 * h
+    cj[1] = 2.0 * sh
+    cp = ch  # cos^(j-1) h
+    for j in range(2, deg + 2):
+        cj[j] = 2.0 * cp * sh / j + (j - 1) / j * cj[j - 2]
+        cp *= ch
+    s0 = 0.0
+    s1 = 0.0
+    kp = 1.0
+    for j in range(deg + 1):
+        f = e[j] * kp
+        s0 += f * cj[j]
+        s1 += f * cj[j + 1]
+        kp *= k
+    return s0, cph * s1, sph * s1
+
+
+@nb.njit(cache=True, inline="always")
 def _full_circle_cos_power(j):
     """Integral of cos^j over a full turn: 0 for odd j, 2 pi (j-1)!!/j!! for even j."""
     if j % 2 == 1:

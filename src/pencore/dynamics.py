@@ -34,7 +34,8 @@ solver smooths the step over a normal-velocity band of half-width ``eps`` (m/s):
     H_eps(Vn) = clip((Vn + eps) / (2 eps), 0, 1)
 
 which tends to Eq. 7 as ``eps -> 0`` (``eps = 0`` is the sharp law). The band is integrated
-in closed form too.
+in closed form too. The default ``eps`` comes from the convergence study
+(``benchmarks/convergence.py``); the implicit integrator keeps the stiff band stable.
 
 Band immersion ramp: each ring stands for the band of surface around it (meridian length
 ``dl = w / r``). Testing only the ring's own line against the free surface switches a
@@ -47,8 +48,7 @@ range ``+-hb`` (:func:`band_half_height`); on a straight generator (the shank, a
 that share is exact. The ramp is affine in ``cos(phi - phiy)``, so the ramped arcs are
 integrated in closed form as well (:func:`pencore.arcs.band_regions`,
 :func:`pencore.arcs._poly_arc_moments`); the ramp vanishes with the ring spacing and the
-mesh convergence becomes second order (``benchmarks/convergence.py``). The default ``eps`` comes from the convergence study
-(``benchmarks/convergence.py``); the implicit integrator keeps the stiff band stable.
+mesh convergence becomes second order (``benchmarks/convergence.py``).
 """
 
 from __future__ import annotations
@@ -66,6 +66,7 @@ from .arcs import (  # noqa: F401 - TWO_PI, _level_arc re-exported for older imp
     _level_arc,
     _poly_arc_integrals,
     _poly_arc_moments,
+    _poly_centred_arc_integrals,
     band_regions,
     ring_height,
 )
@@ -179,6 +180,8 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         bs = nr * v3 - w2 * q
         kv = math.sqrt(bc * bc + bs * bs)
         phi0 = math.atan2(bs, bc)
+        cph = bc / kv if kv > 0.0 else 1.0  # cos(phi0), sin(phi0)
+        sph = bs / kv if kv > 0.0 else 0.0
         cy = math.cos(phiy)
         sy = math.sin(phiy)
         for lay in range(nlay):
@@ -191,6 +194,8 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
                 if wl == 0.0:
                     continue
             # the layer's share of the band: cores and ramps (pencore.arcs.band_regions)
+            # the regions of pencore.arcs.band_regions, written out here: as a call per
+            # ring and layer they cost ~20 % of the right-hand side
             nreg = 0
             for edge in range(2):
                 level = bounds[lay, edge]
@@ -231,6 +236,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
                     blo[m] = rlo[g, m]
                     bhi[m] = rhi[g, m]
                 ramp = beta != 0.0 or alpha != 1.0
+                whole = nb_ == 1 and blo[0] == 0.0 and bhi[0] == TWO_PI
                 # --- normal stress, closed form; chi = alpha - beta cos(phi - phiy)
                 s0 = 0.0
                 sc = 0.0
@@ -251,6 +257,16 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
                             poly[c + 1] += sgn * inv * coef[lay, c]
                             poly[c] += -sgn * inv * level * coef[lay, c]
                         dg = deg + 1
+                    if whole and beta == 0.0:
+                        # the region is the whole ring: the loaded arc is centred on
+                        # phi0, |phi - phi0| <= acos(c), and needs no arc ends
+                        a_, b_, c_ = _poly_centred_arc_integrals(
+                            poly, dg, av, kv, cph, sph, level, se, scj
+                        )
+                        s0 += alpha * a_
+                        sc += alpha * b_
+                        ss += alpha * c_
+                        continue
                     nv = _level_arc(av, kv, phi0, level, True, vlo, vhi)
                     ns = _intersect(blo, bhi, nb_, vlo, vhi, nv, slo, shi)
                     if ns == 0:
