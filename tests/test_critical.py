@@ -4,8 +4,10 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
+import pencore
 from pencore import critical as C
 from pencore.library import InputError
 
@@ -160,3 +162,16 @@ def test_vci_shared_runs_identical_to_separate_searches():
         for v, _ in C.vci("p4", "soil", 0.1, 500.0, 3000.0, thr, 50.0, **kw).history
     ]
     assert set(shared) == set(speeds)
+
+
+def test_run_impact_is_simulate_without_the_dataset():
+    # the searches judge the raw run: it must be the very run simulate() stores
+    from pencore.solver import run_impact
+
+    kw = dict(obliquity=45.0, start=(-1.0, 1.0, 0.0), stop_at_reversal=True)
+    ds = pencore.simulate("p2", "soil", 1700.0, **kw)
+    run = run_impact("p2", "soil", 1700.0, **kw)
+    assert int(run.reversed) == ds.attrs["reversed"] == 1
+    assert run.outcome == ds.attrs["outcome"]
+    assert np.array_equal(run.ts, ds["time"].values)
+    assert np.array_equal(run.ys[:, 7], ds["vel_x"].values)

@@ -34,7 +34,7 @@ import numpy as np
 
 from .analysis import DEFAULT_SPEED_FRACTION, final_deviation
 from .library import InputError
-from .solver import Numerics, prepare, simulate
+from .solver import Numerics, prepare, run_impact, simulate
 
 #: Progress of the searches (bracket, evaluations, verdicts) at INFO; the workflow
 #: scripts route it to the rule's log file.
@@ -324,8 +324,9 @@ def _split(kwargs: dict[str, Any], fixed: set[str]) -> tuple[Numerics | None, di
 def _turns_back(
     pr: Any, sim: dict[str, Any], velocity: float, obliquity: float, yaw: float, omega: float
 ) -> bool:
-    """Run to the first reversal (or the end) and say whether the projectile turned back."""
-    ds = simulate(
+    """Run to the first reversal (or the end) and say whether the projectile turned back
+    (the raw run: the verdict needs no Dataset)."""
+    run = run_impact(
         pr.projectile,
         pr.target,
         velocity,
@@ -336,7 +337,7 @@ def _turns_back(
         prepared=pr,
         **sim,
     )
-    return int(ds.attrs["reversed"]) == 1
+    return bool(run.reversed)
 
 
 def vcr(

@@ -32,7 +32,7 @@ import numpy as np
 import xarray as xr
 
 from .critical import _FIXED, DEFAULT_SCAN, VELOCITY_TOL, CriticalResult, _split, find_threshold
-from .solver import prepare, simulate
+from .solver import prepare, run_impact
 from .validate import InputError
 
 __all__ = [
@@ -108,9 +108,8 @@ def ballistic_limit(
         )
 
     def verdict(v: float) -> bool:
-        return perforates(
-            simulate(pr.projectile, pr.target, v, obliquity, yaw, omega, prepared=pr, **sim)
-        )
+        run = run_impact(pr.projectile, pr.target, v, obliquity, yaw, omega, prepared=pr, **sim)
+        return run.outcome == "perforated"
 
     return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="v_bl")
 

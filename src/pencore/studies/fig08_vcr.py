@@ -15,7 +15,7 @@ import xarray as xr
 from .. import analysis, critical
 from ..critical import VELOCITY_TOL
 from ..library import InputError
-from ..solver import Numerics, prepare, simulate
+from ..solver import Numerics, prepare, run_impact, simulate
 from . import resolve_numerics
 from .common import _STR, PROJECTILES, _attrs, _axis, _start, grid, projectile_coords
 from .trajectories import _PARAM_ATTRS
@@ -137,17 +137,18 @@ def vcr_study(
                     final_theta[ip, io, iy] = float(run["theta"].values[-1])
                     outcome_hi[ip, io, iy] = str(run.attrs["outcome"])
                 for il, v in enumerate(low):
-                    run = simulate(
-                        pr.projectile,
-                        pr.target,
-                        float(v),
-                        float(ob),
-                        float(y),
-                        start=st,
-                        prepared=pr,
-                        stop_at_reversal=True,
+                    low_rev[ip, io, iy, il] = int(
+                        run_impact(
+                            pr.projectile,
+                            pr.target,
+                            float(v),
+                            float(ob),
+                            float(y),
+                            start=st,
+                            prepared=pr,
+                            stop_at_reversal=True,
+                        ).reversed
                     )
-                    low_rev[ip, io, iy, il] = int(run.attrs["reversed"])
     dims = ("projectile", "obliquity", "yaw")
     data = _search_vars(res, "vcr", "m s-1", "critical reverse velocity V_cr", dims)
     if nose:
