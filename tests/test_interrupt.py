@@ -7,10 +7,11 @@ import subprocess
 import sys
 import time
 
-# A run of ~1e5 steps (tens of seconds): long enough to be interrupted mid-integration.
+# A run of ~6e5 steps (~20 s): long enough to be interrupted mid-integration.
 LONG = [
     "simulate", "--projectile", "p2", "--target", "soil", "--velocity", "1000",
-    "--obliquity", "45", "--numerics", "rtol=1e-10", "--numerics", "max_travel=1e-4",
+    "--obliquity", "45", "--numerics", "rtol=1e-10", "--numerics", "max_travel=2e-5",
+    "--numerics", "max_steps=1000000",
 ]  # fmt: skip
 
 

@@ -68,7 +68,13 @@ def _interrupt(wd: Path, sig: int) -> None:
         assert proc.poll() is None, "the run ended before a job started"
         assert time.monotonic() < deadline, "no job started within 300 s"
         time.sleep(0.05)
-    time.sleep(1.0)  # into the job (start-up is ~1 s, a search job ~3 s)
+    # into the job: its search has logged its first run (a search job makes 20+ runs;
+    # a fixed delay raced the job, which now takes ~2 s in all)
+    logs = wd / "results" / "logs"
+    while not any("evaluation 1 " in f.read_text() for f in logs.rglob("*.log")):
+        assert proc.poll() is None, "the run ended before a search started"
+        assert time.monotonic() < deadline, "no search started within 300 s"
+        time.sleep(0.01)
     os.killpg(proc.pid, sig)
     proc.wait(timeout=120)
     assert not (wd / TARGET).exists(), "the interrupt came too late to test anything"
