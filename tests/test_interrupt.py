@@ -15,11 +15,18 @@ LONG = [
 ]  # fmt: skip
 
 
+def _default_sigint() -> None:
+    # a shell that starts the test run in the background (`cmd &`) ignores SIGINT, and
+    # children inherit that: the run under test gets the default a terminal gives it
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def _start(args, tmp_path):
     return subprocess.Popen(
         [sys.executable, "-c", "import sys; from pencore.cli import main; sys.exit(main())",
          *args],
         cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+        preexec_fn=_default_sigint,
     )  # fmt: skip
 
 

@@ -61,6 +61,9 @@ def _interrupt(wd: Path, sig: int) -> None:
     proc = subprocess.Popen(
         [*SNAKEMAKE, TARGET, *OPTIONS], cwd=wd, start_new_session=True,
         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+        # the default SIGINT a terminal gives, even if the test run itself was started
+        # in the background (`cmd &`), which makes children inherit an ignored SIGINT
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
     )  # fmt: skip
     incomplete = wd / ".snakemake" / "incomplete"
     deadline = time.monotonic() + 300

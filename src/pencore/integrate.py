@@ -56,8 +56,8 @@ import numpy as np
 
 from .contact_points import MAX_SAMPLES_PER_STEP, push_path
 from .forces import default_model, rhs_model
-from .jacobian import velocity_jacobian
-from .models import SHANK_CAVITY, SURFACE_PANELS
+from .jacobian import analytic_jacobian_applies, velocity_jacobian
+from .models import SHANK_CAVITY
 from .stepping import (  # noqa: F401 - re-exported: the integrator's public names
     CHUNK_STEPS,
     NON_FINITE,
@@ -95,23 +95,9 @@ _E32 = 6.0 + math.sqrt(2.0)
 
 @nb.njit(cache=True)
 def _jacobian(
-    jac,
-    y,
-    f0,
-    clear,
-    reach,
-    mass,
-    inertia,
-    gravity,
-    rings,
-    bounds,
-    coef,
-    fric,
-    eps,
-    n_gauss,
-    model,
-    analytic=False,
-):
+    jac, y, f0, clear, reach, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss,
+    model, analytic=False,
+):  # fmt: skip
     """Fill ``jac`` (14 x 14) at state ``y``; returns the right-hand-side calls made.
 
     The velocity columns of the force rows are closed form (:mod:`pencore.jacobian`)
@@ -428,7 +414,7 @@ def integrate(
     from ``rings``); ``jacobian_age`` the most accepted steps a Jacobian is held for
     (see :func:`integrate_chunk` and the module notes on the W-method property);
     ``jacobian`` is ``"analytic"`` (closed-form velocity derivatives, used where
-    :func:`analytic_jacobian_applies`) or ``"finite_difference"``.
+    :func:`pencore.jacobian.analytic_jacobian_applies`) or ``"finite_difference"``.
 
     Returns
     -------
@@ -484,14 +470,6 @@ def integrate(
         _path_of(model),
         int(si[SI_N_JAC]),
     )
-
-
-def analytic_jacobian_applies(model: tuple[np.ndarray, ...], eps: float, n_gauss: int) -> bool:
-    """Whether the closed-form velocity Jacobian (:mod:`pencore.jacobian`) covers this
-    right-hand side: the DAFL on rings (default or ``"factor"`` shank), the smoothed
-    step (``eps > 0``) and no friction (``n_gauss == 0``, a frictionless target)."""
-    ipar = model[0]
-    return eps > 0.0 and n_gauss == 0 and ipar[0] != SHANK_CAVITY and ipar[1] != SURFACE_PANELS
 
 
 def start_path(model: tuple[np.ndarray, ...], y0: np.ndarray) -> tuple[np.ndarray, ...]:

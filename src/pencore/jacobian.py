@@ -54,9 +54,10 @@ from .arcs import (
     ring_height,
 )
 from .dynamics import _leggauss, band_half_height, quat_to_matrix
+from .models import SHANK_CAVITY, SURFACE_PANELS
 from .windows import depth_factor
 
-__all__ = ["load_jacobian", "velocity_jacobian"]
+__all__ = ["analytic_jacobian_applies", "load_jacobian", "velocity_jacobian"]
 
 
 #: Gauss points per piece (<= 45 degrees) of a band's ramp arcs: the integrand is a
@@ -310,3 +311,11 @@ def velocity_jacobian(jac, y, f0, mass, inertia, gravity, rings, bounds, coef, e
             + w2 * d[4, 3 + b]
             + w3 * d[5, 3 + b]
         )
+
+
+def analytic_jacobian_applies(model: tuple[np.ndarray, ...], eps: float, n_gauss: int) -> bool:
+    """Whether the closed-form velocity Jacobian (:mod:`pencore.jacobian`) covers this
+    right-hand side: the DAFL on rings (default or ``"factor"`` shank), the smoothed
+    step (``eps > 0``) and no friction (``n_gauss == 0``, a frictionless target)."""
+    ipar = model[0]
+    return eps > 0.0 and n_gauss == 0 and ipar[0] != SHANK_CAVITY and ipar[1] != SURFACE_PANELS

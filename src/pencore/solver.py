@@ -60,7 +60,7 @@ class SolverError(RuntimeError):
 METHODS = ("rosenbrock", "Radau", "BDF")
 
 #: Jacobians of the Rosenbrock integrator: closed form where the model allows it
-#: (:func:`pencore.integrate.analytic_jacobian_applies`), or finite differences.
+#: (:func:`pencore.jacobian.analytic_jacobian_applies`), or finite differences.
 JACOBIANS = ("analytic", "finite_difference")
 
 _INT_FIELDS = ("n_nose", "n_shank", "n_face", "max_steps", "n_gauss", "jacobian_age")
