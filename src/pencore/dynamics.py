@@ -44,9 +44,11 @@ impact) the whole ring jumps in, and on a tilted one the loaded arc opens like
 ``sqrt(depth)``. Either makes the force non-smooth once per ring, and the step control
 then resolves every crossing (most of the steps and rejections of an oblique entry). The
 share of the band below the surface is instead ramped linearly over the band's height
-range ``+-hb`` (:func:`band_half_height`); on a straight generator (the shank, a cone)
-that share is exact. The ramp is affine in ``cos(phi - phiy)``, so the ramped arcs are
-integrated in closed form as well (:func:`pencore.arcs.band_regions`,
+range ``+-hb`` (:func:`band_half_height`: the band's largest half-extent around the
+ring). That share is exact for a shank band at any attitude and for any band at normal
+impact; elsewhere (a nose band at an angle, whose extent varies around the ring) the
+ramp is somewhat wider than the band. The ramp is affine in ``cos(phi - phiy)``, so the
+ramped arcs are integrated in closed form as well (:func:`pencore.arcs.band_regions`,
 :func:`pencore.arcs._poly_arc_moments`); the ramp vanishes with the ring spacing and the
 mesh convergence becomes second order (``benchmarks/convergence.py``).
 """
