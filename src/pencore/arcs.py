@@ -88,22 +88,6 @@ def _level_arc(c0: float, ck: float, phik: float, level: float, above: bool, lo,
 
 
 @nb.njit(cache=True)
-def layer_arcs(y0, yk, phiy, top, bot, l1lo, l1hi, l2lo, l2hi, blo, bhi) -> int:
-    """Arc set (into ``blo, bhi``) of a ring at heights ``y0 + yk cos(phi - phiy)`` that
-    lies between a layer's ``bot`` and ``top`` (m); the ``l*`` arrays are scratch."""
-    n1 = _level_arc(y0, yk, phiy, top, False, l1lo, l1hi)
-    if n1 == 0:
-        return 0
-    if bot > -np.inf:
-        n2 = _level_arc(y0, yk, phiy, bot, True, l2lo, l2hi)
-        return _intersect(l1lo, l1hi, n1, l2lo, l2hi, n2, blo, bhi)
-    for m in range(n1):
-        blo[m] = l1lo[m]
-        bhi[m] = l1hi[m]
-    return n1
-
-
-@nb.njit(cache=True)
 def ring_height(ycm, r10, r11, r12, x1, r):
     """Height of a ring's points as ``y0 + yk cos(phi - phiy)``: ``(y0, yk, phiy)`` (m, m,
     rad) from the centre-of-mass height ``ycm`` and row 1 of the rotation matrix."""
@@ -122,16 +106,44 @@ def ring_height(ycm, r10, r11, r12, x1, r):
 
 
 @nb.njit(cache=True, inline="always")
-def _poly_arc_integrals(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj):
-    """Integrals of P(V), P(V) cos(phi), P(V) sin(phi) over the intervals, where
-    ``V = a + k cos(phi - phi0)`` and ``P(V) = sum poly[i] V^i`` (i <= deg).
-    ``e, cj, dj`` are scratch arrays of length >= deg + 2."""
-    # Taylor coefficients of P(a + x) by repeated synthetic division (Horner shifts)
+def _taylor_shift(poly, deg, a, e):
+    """Taylor coefficients ``e`` of ``P(a + x)`` from those of ``P(V) = sum poly[i] V^i``
+    (i <= deg), by repeated synthetic division (Horner shifts)."""
     for i in range(deg + 1):
         e[i] = poly[i]
     for j in range(deg):
         for i in range(deg - 1, j - 1, -1):
             e[i] += a * e[i + 1]
+
+
+@nb.njit(cache=True, inline="always")
+def _cos_moments(pa, pb, nc, nd, cj, dj):
+    """``cj[j]``, j < nc: integral of ``cos^j`` over ``[pa, pb]`` (rad); ``dj[j]``,
+    j < nd: integral of ``cos^j sin``; by the reduction formula (nc >= 2)."""
+    ca, sa = math.cos(pa), math.sin(pa)
+    cb, sb = math.cos(pb), math.sin(pb)
+    cj[0] = pb - pa
+    cj[1] = sb - sa
+    cpa = ca  # cos^(j-1) at a, starting j = 2
+    cpb = cb
+    for j in range(2, nc):
+        cj[j] = (cpb * sb - cpa * sa) / j + (j - 1) / j * cj[j - 2]
+        cpa *= ca
+        cpb *= cb
+    cpa = ca
+    cpb = cb
+    for j in range(nd):
+        dj[j] = (cpa - cpb) / (j + 1)
+        cpa *= ca
+        cpb *= cb
+
+
+@nb.njit(cache=True, inline="always")
+def _poly_arc_integrals(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj):
+    """Integrals of P(V), P(V) cos(phi), P(V) sin(phi) over the intervals, where
+    ``V = a + k cos(phi - phi0)`` and ``P(V) = sum poly[i] V^i`` (i <= deg).
+    ``e, cj, dj`` are scratch arrays of length >= deg + 2."""
+    _taylor_shift(poly, deg, a, e)
     s0 = 0.0
     sc = 0.0
     ss = 0.0
@@ -151,24 +163,7 @@ def _poly_arc_integrals(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj):
                 ss += f * sph * cj[j + 1]
                 kp *= k
             continue
-        pa = lo[m] - phi0
-        pb = hi[m] - phi0
-        ca, sa = math.cos(pa), math.sin(pa)
-        cb, sb = math.cos(pb), math.sin(pb)
-        cj[0] = pb - pa
-        cj[1] = sb - sa
-        cpa = ca  # cos^(j-1) at a, starting j = 2
-        cpb = cb
-        for j in range(2, deg + 2):
-            cj[j] = (cpb * sb - cpa * sa) / j + (j - 1) / j * cj[j - 2]
-            cpa *= ca
-            cpb *= cb
-        cpa = ca
-        cpb = cb
-        for j in range(deg + 1):
-            dj[j] = (cpa - cpb) / (j + 1)
-            cpa *= ca
-            cpb *= cb
+        _cos_moments(lo[m] - phi0, hi[m] - phi0, deg + 2, deg + 1, cj, dj)
         kp = 1.0
         for j in range(deg + 1):
             f = e[j] * kp
@@ -201,11 +196,7 @@ def _poly_centred_arc_integrals(poly, deg, a, k, cph, sph, level, e, cj):
             ch, sh, h = -1.0, 0.0, math.pi
         else:
             ch, sh, h = c, math.sqrt(1.0 - c * c), math.acos(c)
-    for i in range(deg + 1):
-        e[i] = poly[i]
-    for j in range(deg):
-        for i in range(deg - 1, j - 1, -1):
-            e[i] += a * e[i + 1]
+    _taylor_shift(poly, deg, a, e)
     cj[0] = 2.0 * h
     cj[1] = 2.0 * sh
     cp = ch  # cos^(j-1) h
@@ -240,11 +231,7 @@ def _poly_arc_moments(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj, out):
     cos sin, sin^2`` (of ``phi``) over the intervals, with ``V = a + k cos(phi - phi0)``
     and ``P(V) = sum poly[i] V^i`` (i <= deg); ``e, cj, dj`` are scratch of length
     >= deg + 3."""
-    for i in range(deg + 1):
-        e[i] = poly[i]
-    for j in range(deg):
-        for i in range(deg - 1, j - 1, -1):
-            e[i] += a * e[i + 1]
+    _taylor_shift(poly, deg, a, e)
     # moments in psi = phi - phi0: cos^j psi (C_j) and cos^j psi sin psi (D_j)
     i0 = ic = isn = icc = ics = iss = 0.0
     for m in range(n):
@@ -253,24 +240,7 @@ def _poly_arc_moments(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj, out):
                 cj[j] = _full_circle_cos_power(j)
                 dj[j] = 0.0
         else:
-            pa = lo[m] - phi0
-            pb = hi[m] - phi0
-            ca, sa = math.cos(pa), math.sin(pa)
-            cb, sb = math.cos(pb), math.sin(pb)
-            cj[0] = pb - pa
-            cj[1] = sb - sa
-            cpa = ca
-            cpb = cb
-            for j in range(2, deg + 3):
-                cj[j] = (cpb * sb - cpa * sa) / j + (j - 1) / j * cj[j - 2]
-                cpa *= ca
-                cpb *= cb
-            cpa = ca
-            cpb = cb
-            for j in range(deg + 2):
-                dj[j] = (cpa - cpb) / (j + 1)
-                cpa *= ca
-                cpb *= cb
+            _cos_moments(lo[m] - phi0, hi[m] - phi0, deg + 3, deg + 2, cj, dj)
         kp = 1.0
         for j in range(deg + 1):
             f = e[j] * kp
