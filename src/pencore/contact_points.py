@@ -30,7 +30,7 @@ import math
 import numba as nb
 import numpy as np
 
-from .dynamics import quat_to_matrix
+from .dynamics import body_velocity, quat_to_matrix
 from .windows import depth_factor
 
 #: Most samples :func:`push_path` adds per accepted step (the rest is the virtual vertex).
@@ -183,9 +183,7 @@ def point_loads(y, pts, bounds, coef, fric, eps, with_friction, cavity, cav, pat
         Lowest load point above the free surface (m).
     """
     rot = quat_to_matrix(y[3:7])
-    v1 = rot[0, 0] * y[7] + rot[1, 0] * y[8] + rot[2, 0] * y[9]
-    v2 = rot[0, 1] * y[7] + rot[1, 1] * y[8] + rot[2, 1] * y[9]
-    v3 = rot[0, 2] * y[7] + rot[1, 2] * y[8] + rot[2, 2] * y[9]
+    v1, v2, v3 = body_velocity(rot, y)
     w1, w2, w3 = y[10], y[11], y[12]
     f = np.zeros(3)
     mom = np.zeros(3)

@@ -100,6 +100,51 @@ def quat_to_matrix(q: np.ndarray) -> np.ndarray:
 # ---------------------------------------------------------------- contact loads
 
 
+@nb.njit(cache=True, inline="always")
+def body_velocity(rot, y):
+    """Velocity of the centre of mass in the body frame, ``R^T y[7:10]`` (m/s)."""
+    v1 = rot[0, 0] * y[7] + rot[1, 0] * y[8] + rot[2, 0] * y[9]
+    v2 = rot[0, 1] * y[7] + rot[1, 1] * y[8] + rot[2, 1] * y[9]
+    v3 = rot[0, 2] * y[7] + rot[1, 2] * y[8] + rot[2, 2] * y[9]
+    return v1, v2, v3
+
+
+@nb.njit(cache=True, inline="always")
+def ring_velocity(x1, r, na, nr, v1, v2, v3, w2, w3):
+    """Normal velocity on a ring, ``Vn = av + bc cos(phi) + bs sin(phi) = av + kv
+    cos(phi - phi0)``: returns ``(q, av, bc, bs, kv, phi0)`` with ``q = nr x1 - na r``
+    the lever of the spin terms (body frame, SI units)."""
+    q = nr * x1 - na * r
+    av = na * v1
+    bc = nr * v2 + w3 * q
+    bs = nr * v3 - w2 * q
+    kv = math.sqrt(bc * bc + bs * bs)
+    return q, av, bc, bs, kv, math.atan2(bs, bc)
+
+
+@nb.njit(cache=True, inline="always")
+def side_poly(coef, lay, eps, side, poly):
+    """Fill ``poly`` with the normal stress of layer ``lay`` on one side of the smoothed
+    step, as a polynomial in ``Vn``; returns ``(level, degree)``: the stress applies
+    where ``Vn >= level``. ``eps = 0``: ``sigma(V)`` from 0 (one side). ``eps > 0``: the
+    step ``H_eps sigma`` is the side-0 term ``(V + eps) sigma / (2 eps)`` on
+    ``V >= -eps`` minus the side-1 term ``(V - eps) sigma / (2 eps)`` on ``V >= eps``."""
+    ncoef = coef.shape[1]
+    if eps <= 0.0:
+        for c in range(ncoef):
+            poly[c] = coef[lay, c]
+        return 0.0, ncoef - 1
+    inv = 0.5 / eps
+    level = -eps if side == 0 else eps
+    sgn = 1.0 if side == 0 else -1.0
+    for c in range(ncoef + 1):
+        poly[c] = 0.0
+    for c in range(ncoef):
+        poly[c + 1] += sgn * inv * coef[lay, c]
+        poly[c] += -sgn * inv * level * coef[lay, c]
+    return level, ncoef
+
+
 @nb.njit(cache=True)
 def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
     """Resultant contact force and moment.
@@ -122,10 +167,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         Lowest point of the surface rings above the free surface (m); <= 0 in contact.
     """
     rot = quat_to_matrix(y[3:7])
-    # velocity of the centre of mass in the body frame
-    v1 = rot[0, 0] * y[7] + rot[1, 0] * y[8] + rot[2, 0] * y[9]
-    v2 = rot[0, 1] * y[7] + rot[1, 1] * y[8] + rot[2, 1] * y[9]
-    v3 = rot[0, 2] * y[7] + rot[1, 2] * y[8] + rot[2, 2] * y[9]
+    v1, v2, v3 = body_velocity(rot, y)
     w1, w2, w3 = y[10], y[11], y[12]
     ycm = y[1]
     r10, r11, r12 = rot[1, 0], rot[1, 1], rot[1, 2]
@@ -154,10 +196,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
     rhi = np.empty((4, _MAXI))
     rn = np.zeros(4, dtype=np.int64)
     rpar = np.empty((4, 3))  # alpha, beta, signed area weight
-    ncoef = coef.shape[1]
-    deg = ncoef - 1
     nside = 1 if eps <= 0.0 else 2
-    inv = 0.5 / eps if eps > 0.0 else 0.0
     gx, gw = _leggauss(n_gauss)
 
     rk = math.sqrt(r11 * r11 + r12 * r12)  # |d(height)/d(radius)| of a ring point
@@ -175,13 +214,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         if low > bounds[0, 0]:
             continue
         high = y0 + yk + hb
-        # normal velocity: Vn = A + K cos(phi - phi0)
-        q = nr * x1 - na * r
-        av = na * v1
-        bc = nr * v2 + w3 * q
-        bs = nr * v3 - w2 * q
-        kv = math.sqrt(bc * bc + bs * bs)
-        phi0 = math.atan2(bs, bc)
+        q, av, bc, bs, kv, phi0 = ring_velocity(x1, r, na, nr, v1, v2, v3, w2, w3)
         cph = bc / kv if kv > 0.0 else 1.0  # cos(phi0), sin(phi0)
         sph = bs / kv if kv > 0.0 else 0.0
         cy = math.cos(phiy)
@@ -195,9 +228,10 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
                 wl = w * depth_factor(y0, bounds, lay)
                 if wl == 0.0:
                     continue
-            # the layer's share of the band: cores and ramps (pencore.arcs.band_regions)
-            # the regions of pencore.arcs.band_regions, written out here: as a call per
-            # ring and layer they cost ~20 % of the right-hand side
+            # the layer's share of the band: the cores and ramps of
+            # pencore.arcs.band_regions, written out here because the call (even marked
+            # inline) makes the right-hand side 14 -> 18 us; the Jacobian calls
+            # band_regions, and tests/test_jacobian.py compares the two forms
             nreg = 0
             for edge in range(2):
                 level = bounds[lay, edge]
@@ -244,21 +278,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
                 sc = 0.0
                 ss = 0.0
                 for side in range(nside):
-                    if eps <= 0.0:
-                        level = 0.0
-                        for c in range(ncoef):
-                            poly[c] = coef[lay, c]
-                        dg = deg
-                    else:
-                        # sgn * (V - level) * sigma(V) / (2 eps): the smoothed step
-                        level = -eps if side == 0 else eps
-                        sgn = 1.0 if side == 0 else -1.0
-                        for c in range(ncoef + 1):
-                            poly[c] = 0.0
-                        for c in range(ncoef):
-                            poly[c + 1] += sgn * inv * coef[lay, c]
-                            poly[c] += -sgn * inv * level * coef[lay, c]
-                        dg = deg + 1
+                    level, dg = side_poly(coef, lay, eps, side, poly)
                     if whole and beta == 0.0:
                         # the region is the whole ring: the loaded arc is centred on
                         # phi0, |phi - phi0| <= acos(c), and needs no arc ends
@@ -445,8 +465,6 @@ def equations_of_motion(y, fb, mb, mass, inertia, gravity):
     dy[11] = (mb[1] + (i3 - i1) * w3 * w1) / i2
     dy[12] = (mb[2] + (i1 - i2) * w1 * w2) / i3
     # power of the contact stresses: F . v + M . w (body frame)
-    v1 = rot[0, 0] * y[7] + rot[1, 0] * y[8] + rot[2, 0] * y[9]
-    v2 = rot[0, 1] * y[7] + rot[1, 1] * y[8] + rot[2, 1] * y[9]
-    v3 = rot[0, 2] * y[7] + rot[1, 2] * y[8] + rot[2, 2] * y[9]
+    v1, v2, v3 = body_velocity(rot, y)
     dy[13] = fb[0] * v1 + fb[1] * v2 + fb[2] * v3 + mb[0] * w1 + mb[1] * w2 + mb[2] * w3
     return dy

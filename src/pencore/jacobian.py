@@ -53,7 +53,14 @@ from .arcs import (
     band_regions,
     ring_height,
 )
-from .dynamics import _leggauss, band_half_height, quat_to_matrix
+from .dynamics import (
+    _leggauss,
+    band_half_height,
+    body_velocity,
+    quat_to_matrix,
+    ring_velocity,
+    side_poly,
+)
 from .models import SHANK_CAVITY, SURFACE_PANELS
 from .windows import depth_factor
 
@@ -112,9 +119,7 @@ def load_jacobian(y, rings, bounds, coef, eps):
         (N s/m, N s, N s). Symmetric (see the module notes).
     """
     rot = quat_to_matrix(y[3:7])
-    v1 = rot[0, 0] * y[7] + rot[1, 0] * y[8] + rot[2, 0] * y[9]
-    v2 = rot[0, 1] * y[7] + rot[1, 1] * y[8] + rot[2, 1] * y[9]
-    v3 = rot[0, 2] * y[7] + rot[1, 2] * y[8] + rot[2, 2] * y[9]
+    v1, v2, v3 = body_velocity(rot, y)
     w2, w3 = y[11], y[12]
     out = np.zeros((6, 6))
     nlay = bounds.shape[0]
@@ -141,7 +146,6 @@ def load_jacobian(y, rings, bounds, coef, eps):
     rn = np.zeros(4, dtype=np.int64)
     rpar = np.empty((4, 3))
     gx, gw = _leggauss(_N_RAMP)
-    inv = 0.5 / eps
     rk = math.sqrt(rot[1, 1] ** 2 + rot[1, 2] ** 2)
     for i in range(rings.shape[0]):
         x1 = rings[i, 0]
@@ -153,12 +157,7 @@ def load_jacobian(y, rings, bounds, coef, eps):
         hb = band_half_height(rot[1, 0], rk, r, na, nr, w)
         if y0 - yk - hb > bounds[0, 0]:
             continue
-        q = nr * x1 - na * r
-        av = na * v1
-        bc = nr * v2 + w3 * q
-        bs = nr * v3 - w2 * q
-        kv = math.sqrt(bc * bc + bs * bs)
-        phi0 = math.atan2(bs, bc)
+        q, av, bc, bs, kv, phi0 = ring_velocity(x1, r, na, nr, v1, v2, v3, w2, w3)
         bmat[0, 0] = na
         bmat[1, 1] = nr
         bmat[1, 5] = q
@@ -181,18 +180,12 @@ def load_jacobian(y, rings, bounds, coef, eps):
                 for c in range(6):
                     mom[c] = 0.0
                 for side in range(2):
-                    level = -eps if side == 0 else eps
-                    sgn = 1.0 if side == 0 else -1.0
+                    # G on this side (pencore.dynamics.side_poly); dpoly is G'
+                    level, _ = side_poly(coef, lay, eps, side, poly)
                     nv = _level_arc(av, kv, phi0, level, True, vlo, vhi)
                     ns = _intersect(rlo[g], rhi[g], rn[g], vlo, vhi, nv, slo, shi)
                     if ns == 0:
                         continue
-                    # G on this side: sgn (V - level) sigma(V) / (2 eps); dpoly is G'
-                    for c in range(ncoef + 1):
-                        poly[c] = 0.0
-                    for c in range(ncoef):
-                        poly[c + 1] += sgn * inv * coef[lay, c]
-                        poly[c] += -sgn * inv * level * coef[lay, c]
                     for c in range(ncoef):
                         dpoly[c] = (c + 1) * poly[c + 1]
                     if beta == 0.0:
@@ -250,10 +243,9 @@ def velocity_jacobian(jac, y, f0, mass, inertia, gravity, rings, bounds, coef, e
     d = load_jacobian(y, rings, bounds, coef, eps)
     i1, i2, i3 = inertia[0], inertia[1], inertia[2]
     w1, w2, w3 = y[10], y[11], y[12]
-    vb = np.empty(3)
+    vb = np.array(body_velocity(rot, y))
     fb = np.empty(3)
     for j in range(3):
-        vb[j] = rot[0, j] * y[7] + rot[1, j] * y[8] + rot[2, j] * y[9]
         fb[j] = mass * (
             rot[0, j] * (f0[7] - gravity[0])
             + rot[1, j] * (f0[8] - gravity[1])
