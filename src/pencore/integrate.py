@@ -95,10 +95,11 @@ _E32 = 6.0 + math.sqrt(2.0)
 
 @nb.njit(cache=True)
 def _jacobian(
-    jac, y, f0, clear, reach, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss,
-    model, analytic=False,
+    jac, si, y, f0, clear, reach, mass, inertia, gravity, rings, bounds, coef, fric, eps,
+    n_gauss, model, analytic=False,
 ):  # fmt: skip
-    """Fill ``jac`` (14 x 14) at state ``y``; returns the right-hand-side calls made.
+    """Fill ``jac`` (14 x 14) at state ``y``, and count it and the right-hand-side calls
+    it makes in ``si`` (``SI_N_JAC``, ``SI_N_RHS``).
 
     The velocity columns of the force rows are closed form (:mod:`pencore.jacobian`)
     when ``analytic`` is set (the caller checks that the model allows it), else one-sided
@@ -137,11 +138,12 @@ def _jacobian(
     jac[6, 10] = -0.5 * qy
     jac[6, 11] = 0.5 * qx
     jac[6, 12] = 0.5 * qw
+    si[SI_N_JAC] += 1
     if clear > 0.0:
-        return 0
+        return
     if analytic:
         velocity_jacobian(jac, y, f0, mass, inertia, gravity, rings, bounds, coef, eps)
-        return 0
+        return
     speed = math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
     wmag = math.sqrt(w1**2 + w2**2 + w3**2)
     for c in range(7, 13):
@@ -156,7 +158,7 @@ def _jacobian(
         )
         for r in range(7, 14):
             jac[r, c] = (fp[r] - f0[r]) / dlt
-    return 6
+    si[SI_N_RHS] += 6
 
 
 @nb.njit(cache=True)
@@ -292,11 +294,10 @@ def integrate_chunk(
         h = min(h, hmax, t_max - t)
         in_target = clear <= 0.0
         if age >= jacobian_age or in_target != jac_in_target:
-            si[SI_N_RHS] += _jacobian(
-                jac, y, f0, clear, reach, mass, inertia, gravity, rings, bounds, coef,
+            _jacobian(
+                jac, si, y, f0, clear, reach, mass, inertia, gravity, rings, bounds, coef,
                 fric, eps, n_gauss, model, analytic,
             )  # fmt: skip
-            si[SI_N_JAC] += 1
             age = 0
             jac_in_target = in_target
         rejected = False
@@ -312,11 +313,10 @@ def integrate_chunk(
             rejected = True
             if age > 0:
                 # a held Jacobian may be what failed: rebuild it before shrinking the step
-                si[SI_N_RHS] += _jacobian(
-                    jac, y, f0, clear, reach, mass, inertia, gravity, rings, bounds, coef,
-                    fric, eps, n_gauss, model, analytic,
+                _jacobian(
+                    jac, si, y, f0, clear, reach, mass, inertia, gravity, rings, bounds,
+                    coef, fric, eps, n_gauss, model, analytic,
                 )  # fmt: skip
-                si[SI_N_JAC] += 1
                 age = 0
             if not math.isfinite(err):
                 h = 0.2 * h
