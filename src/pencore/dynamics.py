@@ -60,7 +60,7 @@ import math
 import numba as nb
 import numpy as np
 
-from .arcs import (  # noqa: F401 - TWO_PI, _level_arc re-exported for older imports
+from .arcs import (
     _MAXD,
     _MAXI,
     TWO_PI,
@@ -69,7 +69,6 @@ from .arcs import (  # noqa: F401 - TWO_PI, _level_arc re-exported for older imp
     _poly_arc_integrals,
     _poly_arc_moments,
     _poly_centred_arc_integrals,
-    band_regions,
     ring_height,
 )
 from .windows import depth_factor

@@ -20,6 +20,8 @@ from pathlib import Path
 import numba as nb
 import numpy as np
 
+from .dynamics import band_half_height
+
 #: Modules whose compiled functions inline others' (their caches go stale together).
 KERNEL_MODULES = (
     "windows",
@@ -160,9 +162,9 @@ def body_top(y, rings):
     rk = math.sqrt(r11 * r11 + r12 * r12)
     top = -np.inf
     for i in range(rings.shape[0]):
-        r, na, nr, w = rings[i, 1], rings[i, 2], rings[i, 3], rings[i, 4]
-        # the top of the band the ring stands for (pencore.dynamics.band_half_height)
-        hb = 0.5 * (w / r) * (abs(r10 * nr) + abs(na) * rk) if r > 0.0 else 0.0
+        r = rings[i, 1]
+        # the top of the band the ring stands for
+        hb = band_half_height(r10, rk, r, rings[i, 2], rings[i, 3], rings[i, 4])
         h = y[1] + r10 * rings[i, 0] + rk * r + hb
         if h > top:
             top = h
