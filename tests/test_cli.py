@@ -395,7 +395,25 @@ def test_list(capsys):
 
 def test_fit_table3(capsys):
     assert main(["fit-table3"]) == 0
-    assert capsys.readouterr().out.strip() == pencore.library.table3_fit().report()
+    out = capsys.readouterr().out
+    assert out.startswith(pencore.library.table3_fit().report())
+    assert "shipped geometry: diameter" in out
+
+
+def test_fit_table3_write_round_trips_the_shipped_file(tmp_path, capsys):
+    """``--write`` regenerates the shipped geometry file byte for byte (provenance header
+    and values), and a bad path is one line with exit 1 and nothing left behind."""
+    out = tmp_path / "geometry.yaml"
+    assert main(["fit-table3", "--write", str(out)]) == 0
+    assert out.read_text() == pencore.library.TABLE3_GEOMETRY_FILE.read_text()
+    assert pencore.library.shipped_table3_geometry(out) == (
+        pencore.library.shipped_table3_geometry()
+    )
+    capsys.readouterr()
+    assert main(["fit-table3", "--write", str(tmp_path / "no" / "g.yaml")]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "does not exist" in err and "Traceback" not in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["geometry.yaml"]
 
 
 def test_output_into_a_closed_pipe_is_quiet():

@@ -233,13 +233,20 @@ def build_parser() -> argparse.ArgumentParser:
     from .cli_ballistic import add_parser as _add_ballistic
 
     _add_ballistic(sub)
-    sub.add_parser(
+    fit3 = sub.add_parser(
         "fit-table3",
         help="fit the p1..p4 geometry (diameter and shank length in m) to the paper's "
         "Table 3 (masses in kg, Lc/L)",
         description="Fit a solid CRH-3 ogive + cylinder (diameter and shank length in "
-        "m) to the masses (kg) and Lc/L of paper Table 3, and print the residuals "
-        "(kg and dimensionless). Takes no options.",
+        "m) to the masses (kg) and Lc/L of paper Table 3, print the residuals (kg and "
+        "dimensionless), and compare the fit with the geometry pencore ships "
+        "(pencore/data/table3_geometry.yaml).",
+    )
+    fit3.add_argument(
+        "--write",
+        metavar="PATH",
+        help="also write the fitted geometry to PATH (YAML, written atomically); "
+        "src/pencore/data/table3_geometry.yaml regenerates the shipped file",
     )
     sub.add_parser(
         "list",
@@ -407,9 +414,23 @@ def _cmd_simulate(args: argparse.Namespace) -> int:
 
 
 def _cmd_fit_table3(args: argparse.Namespace) -> int:
-    from .library import table3_fit
+    from .library import shipped_table3_geometry, table3_fit, write_table3_geometry
 
-    print(table3_fit().report())
+    fit = table3_fit()
+    print(fit.report())
+    d, ls = shipped_table3_geometry()
+    print(
+        f"shipped geometry: diameter {d!r} m, shank length {ls!r} m; fit minus shipped: "
+        f"{fit.diameter - d:.3g} m, {fit.shank_length - ls:.3g} m"
+    )
+    if args.write:
+        from .atomic import WriteError
+
+        try:
+            write_table3_geometry(fit, args.write)
+        except WriteError as exc:
+            raise _Failure(str(exc), 1) from None
+        print(f"wrote {args.write}")
     return 0
 
 

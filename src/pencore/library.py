@@ -27,6 +27,8 @@ __all__ = [
     "Table3Fit",
     "table3_fit",
     "table3_mass_bound",
+    "shipped_table3_geometry",
+    "write_table3_geometry",
     "get_projectile",
     "get_target",
     "projectile_from_dict",
@@ -217,17 +219,54 @@ def _validation_projectiles() -> dict[str, Projectile]:
     return out
 
 
+#: The fitted Table-3 geometry as shipped (derived data, provenance in the file).
+TABLE3_GEOMETRY_FILE = Path(__file__).parent / "data" / "table3_geometry.yaml"
+
+
+def shipped_table3_geometry(path: str | Path = TABLE3_GEOMETRY_FILE) -> tuple[float, float]:
+    """Diameter and shank length (m) of projectiles #1-#4 from the shipped file.
+
+    They are :func:`table3_fit`'s result written out by ``pencore fit-table3 --write``,
+    so that the named projectiles do not depend on an optimiser run in every process.
+    """
+    with open(path) as f:
+        data = yaml.safe_load(f)
+    if not isinstance(data, dict):
+        raise InputError(f"{path}: expected a mapping, got {data!r}")
+    keys = ["diameter_m", "shank_length_m"]
+    check_keys(data, keys, str(path))
+    missing = [k for k in keys if k not in data]
+    if missing:
+        raise InputError(f"{path}: missing {', '.join(missing)}")
+    return (
+        number(data["diameter_m"], "diameter", str(path)),
+        number(data["shank_length_m"], "length", str(path)),
+    )
+
+
+def write_table3_geometry(fit: Table3Fit, path: str | Path = TABLE3_GEOMETRY_FILE) -> None:
+    """Write ``fit``'s diameter and shank length (m) to ``path`` atomically, with the
+    provenance header that :data:`TABLE3_GEOMETRY_FILE` carries."""
+    from .atomic import atomic_path
+
+    header = [ln for ln in TABLE3_GEOMETRY_FILE.read_text().splitlines() if ln.startswith("#")]
+    text = "\n".join(
+        [*header, f"diameter_m: {fit.diameter!r}", f"shank_length_m: {fit.shank_length!r}", ""]
+    )
+    with atomic_path(path) as tmp:
+        Path(tmp).write_text(text)
+
+
 @functools.cache
 def _named_projectiles() -> dict[str, Projectile]:
-    fit = table3_fit()
+    d, ls = shipped_table3_geometry()
     out = {
         key: _table3_projectile(
             key,
-            fit.diameter,
-            fit.shank_length,
+            d,
+            ls,
             source=f"paper Table 3 (mass, shank density, Lc/L); geometry derived by "
-            f"pencore.library.table3_fit: d={fit.diameter:.5f} m, "
-            f"shank={fit.shank_length:.5f} m",
+            f"pencore.library.table3_fit: d={d:.5f} m, shank={ls:.5f} m",
         )
         for key in TABLE3
     }
