@@ -10,7 +10,7 @@ import pytest
 
 import pencore
 from pencore.forces import default_model, rhs_model
-from pencore.jacobian import load_jacobian, velocity_jacobian
+from pencore.jacobian import load_jacobian, model_load_jacobian, velocity_jacobian
 from pencore.solver import _run, initial_state, prepare
 
 EPS = 1e-3
@@ -53,7 +53,10 @@ def test_velocity_jacobian_matches_central_differences(case):
         if clear > 0.0:
             continue
         ja = np.zeros((14, 14))
-        velocity_jacobian(ja, y, f0, pr.mass, pr.inertia, G0, pr.rings, pr.bounds, pr.coef, EPS)
+        velocity_jacobian(
+            ja, y, f0, pr.mass, pr.inertia, G0, pr.rings, pr.bounds, pr.coef, pr.fric, EPS,
+            default_model(),
+        )  # fmt: skip
         best = np.inf
         for step in (1e-3, 1e-4, 1e-5, 1e-6):
             jc = np.zeros((14, 14))
@@ -99,4 +102,98 @@ def test_analytic_and_finite_difference_jacobians_give_one_trajectory():
         a, f = float(runs["analytic"][q]), float(runs["finite_difference"][q])
         assert abs(a / f - 1.0) < 1e-3, (q, a, f)
     # the closed form replaces the six right-hand-side calls of each Jacobian
+    assert runs["analytic"].attrs["n_rhs"] < 0.75 * runs["finite_difference"].attrs["n_rhs"]
+
+
+# ------------------------------------------------------------ point loads (panels, cavity)
+
+POINT_MODELS = {
+    "cavity": dict(shank={"kind": "cavity", "delta_ref": 5e-3}),
+    "panels": dict(emulation={"surface": "panels"}),
+}
+
+
+def _point_states(kind):
+    """States of a p2 run at 45 deg with the model's kernel tuple at each: the cavity
+    model's loads depend on the tip path so far, so each state ends its own run."""
+    pr = prepare("p2", "soil", **POINT_MODELS[kind])
+    y0 = initial_state(
+        pr.projectile, pr.rings, 1000.0, math.radians(45.0), 0.0, 0.0, None, 0.0, "cm"
+    )
+    out = []
+    for t_end in (2e-4, 4e-4, 7e-4, 1e-3, 2e-3, 5e-3, 1e-2, 2e-2):
+        pr_t = prepare("p2", "soil", t_max=t_end, **POINT_MODELS[kind])
+        run = _run(pr_t, y0, 1000.0, False)
+        model = pr_t.model
+        if run.path is not None:
+            model = (model[0], model[1], model[2], run.path, np.array([run.path.shape[0]]))
+        out.append((run.ys[-1], model))
+    return pr, out
+
+
+def _rhs_model(pr, y, model):
+    return rhs_model(
+        y, pr.mass, pr.inertia, G0, pr.kernel_rings, pr.bounds, pr.coef, pr.fric, EPS, 0, model
+    )
+
+
+@pytest.mark.parametrize("kind", sorted(POINT_MODELS))
+def test_point_load_jacobian_matches_central_differences(kind):
+    # as for the rings (above): best of four central-difference steps, 1e-3 of each
+    # block's largest entry; the point loads have the same kinks (the band edges)
+    pr, states = _point_states(kind)
+    checked = 0
+    for y, model in states:
+        f0, clear = _rhs_model(pr, y, model)
+        if clear > 0.0:
+            continue
+        ja = np.zeros((14, 14))
+        velocity_jacobian(
+            ja, y, f0, pr.mass, pr.inertia, G0, pr.kernel_rings, pr.bounds, pr.coef, pr.fric,
+            EPS, model,
+        )  # fmt: skip
+        best = np.inf
+        for step in (1e-3, 1e-4, 1e-5, 1e-6):
+            jc = np.zeros((14, 14))
+            for c in range(7, 13):
+                dl = step if c < 10 else 2.5 * step
+                yp, ym = y.copy(), y.copy()
+                yp[c] += dl
+                ym[c] -= dl
+                jc[:, c] = (_rhs_model(pr, yp, model)[0] - _rhs_model(pr, ym, model)[0]) / (2 * dl)
+            err = max(
+                np.abs(ja[rows, 7:13] - jc[rows, 7:13]).max() / np.abs(jc[rows, 7:13]).max()
+                for rows in (slice(7, 10), slice(10, 13), slice(13, 14))
+            )
+            best = min(best, err)
+        assert best <= 1e-3, (kind, y, best)
+        # every point load is -A G'(vn) g g^T: symmetric, negative semi-definite
+        d = model_load_jacobian(y, pr.kernel_rings, pr.bounds, pr.coef, pr.fric, EPS, model)
+        scale = np.abs(d).max()
+        assert np.abs(d - d.T).max() <= 1e-12 * scale
+        assert np.linalg.eigvalsh(0.5 * (d + d.T)).max() <= 1e-12 * scale
+        checked += 1
+    assert checked >= 6
+
+
+@pytest.mark.parametrize("kind", sorted(POINT_MODELS))
+def test_point_models_give_one_trajectory_with_either_jacobian(kind):
+    # as test_analytic_and_finite_difference_jacobians_give_one_trajectory, for the
+    # point-load models; the closed form saves the six calls of each Jacobian
+    runs = {
+        jac: pencore.simulate(
+            "p2",
+            "soil",
+            1600.0,
+            45.0,
+            start=(-1.0, 1.0, 0.0),
+            jacobian=jac,
+            **POINT_MODELS[kind],
+        )  # fmt: skip
+        for jac in ("analytic", "finite_difference")
+    }
+    assert runs["analytic"].attrs["outcome"] == runs["finite_difference"].attrs["outcome"]
+    for q in ("penetration_depth", "path_length"):
+        a, f = float(runs["analytic"][q]), float(runs["finite_difference"][q])
+        assert abs(a / f - 1.0) < 1e-3, (q, a, f)
     assert runs["analytic"].attrs["n_rhs"] < 0.75 * runs["finite_difference"].attrs["n_rhs"]

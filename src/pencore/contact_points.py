@@ -157,8 +157,8 @@ def path_distance(px, py, pz, s_target, j_start, path, n, tip):
 
 
 @nb.njit(cache=True)
-def point_loads(y, pts, bounds, coef, fric, eps, with_friction, cavity, cav, path, npath):
-    """Resultant force and moment of point loads.
+def point_loads(y, pts, bounds, coef, fric, eps, with_friction, cavity, cav, path, npath, dload):
+    """Resultant force and moment of point loads, and optionally their velocity Jacobian.
 
     Parameters
     ----------
@@ -175,6 +175,12 @@ def point_loads(y, pts, bounds, coef, fric, eps, with_friction, cavity, cav, pat
         ``delta_ref`` (m), cavity radius ``R_c`` (m), body axial coordinate ``lc`` of the
         cavity's axis point (m), path spacing (m).
     path, npath : the tip path (module docstring).
+    dload : (6, 6) or (0, 0) float
+        If (6, 6), the derivatives of the body-frame force and moment (rows) against the
+        body-frame velocity and angular velocity (columns) are added to it: a point's
+        load is ``-A G(vn) g`` with ``g = (n, p x n)``, ``vn = g . (v, w)`` and the area
+        ``A`` a function of the position only, so its derivative is ``-A G'(vn) g g^T``
+        (exact for the smoothed step, ``eps > 0``, without friction; the caller checks).
 
     Returns
     -------
@@ -244,6 +250,21 @@ def point_loads(y, pts, bounds, coef, fric, eps, with_friction, cavity, cav, pat
         for c in range(ncoef):
             sig += coef[lay, c] * vp
             vp *= vn
+        if dload.shape[0] == 6:
+            dsig = 0.0
+            vp = 1.0
+            for c in range(1, ncoef):
+                dsig += c * coef[lay, c] * vp
+                vp *= vn
+            # d(hw sigma)/dvn; hw's slope is 1 / (2 eps) inside the band, 0 outside
+            gp = hw * dsig
+            if -eps < vn < eps:
+                gp += sig / (2.0 * eps)
+            g = (nx, ny, nz, py * nz - pz * ny, pz * nx - px * nz, px * ny - py * nx)
+            a_pos = area / hw  # the position-dependent area, without the step
+            for a in range(6):
+                for b in range(6):
+                    dload[a, b] -= a_pos * gp * g[a] * g[b]
         fx = -area * sig * nx
         fy = -area * sig * ny
         fz = -area * sig * nz

@@ -142,7 +142,9 @@ def _jacobian(
     if clear > 0.0:
         return
     if analytic:
-        velocity_jacobian(jac, y, f0, mass, inertia, gravity, rings, bounds, coef, eps)
+        velocity_jacobian(
+            jac, y, f0, mass, inertia, gravity, rings, bounds, coef, fric, eps, model
+        )
         return
     speed = math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
     wmag = math.sqrt(w1**2 + w2**2 + w3**2)
@@ -428,7 +430,7 @@ def integrate(
     entered = clear <= 0.0
     sf = np.array([0.0, h_init, 0.0 if entered else math.nan, clear, 0.0])
     si = np.array([int(entered), 0, 1, 0, 0], dtype=np.int64)
-    analytic = jacobian == "analytic" and analytic_jacobian_applies(model, eps, n_gauss)
+    analytic = jacobian == "analytic" and analytic_jacobian_applies(eps, n_gauss)
     reach = body_reach(rings) if reach is None else reach
     ts_parts = [np.zeros(1)]
     ys_parts = [y[None, :].copy()]

@@ -30,11 +30,16 @@ With the band immersion ramp (:mod:`pencore.dynamics`) ``G`` carries the band's 
 integrated by Gauss-Legendre quadrature (:func:`_ramp_moments`, to round-off), the
 rest in closed form.
 
+Point loads (panels, and the cavity shank's points) are ``-A G(vn) g`` with
+``g = (n, p x n)`` and the area ``A`` depending on the position only, so their part is
+``-A G'(vn) g g^T`` per point (:func:`pencore.contact_points.point_loads`), symmetric
+and negative semi-definite too (:func:`model_load_jacobian`).
+
 Only the velocity derivatives are formed, as in the finite-difference form: the
 position and attitude derivatives are not stiff, and the error control absorbs their
-omission. Friction (Gauss quadrature of a ``mu(v_t)`` table), the sharp law
-(``eps = 0``: a jump at the arc ends) and the point-load models are left to finite
-differences (:func:`pencore.integrate._jacobian`).
+omission. Friction (Gauss quadrature of a ``mu(v_t)`` table) and the sharp law
+(``eps = 0``: a jump at the arc ends) are left to finite differences
+(:func:`pencore.integrate._jacobian`).
 """
 
 from __future__ import annotations
@@ -61,10 +66,16 @@ from .dynamics import (
     ring_velocity,
     side_poly,
 )
+from .contact_points import point_loads
 from .models import SHANK_CAVITY, SURFACE_PANELS
 from .windows import depth_factor
 
-__all__ = ["analytic_jacobian_applies", "load_jacobian", "velocity_jacobian"]
+__all__ = [
+    "analytic_jacobian_applies",
+    "load_jacobian",
+    "model_load_jacobian",
+    "velocity_jacobian",
+]
 
 
 #: Gauss points per piece (<= 45 degrees) of a band's ramp arcs: the integrand is a
@@ -228,7 +239,25 @@ def _add_btsb(out, bmat, mom, scale):
 
 
 @nb.njit(cache=True)
-def velocity_jacobian(jac, y, f0, mass, inertia, gravity, rings, bounds, coef, eps):
+def model_load_jacobian(y, rings, bounds, coef, fric, eps, model):
+    """:func:`load_jacobian` under ``model`` (:mod:`pencore.forces`): the rings' part
+    unless the surface is panels, plus the point loads' part (panels, or the cavity
+    shank's points) from :func:`pencore.contact_points.point_loads`, whose loads are
+    ``-A G(vn) g`` per point with ``A`` depending on the position only."""
+    ipar, cav, pts, path, npath = model
+    cavity = ipar[0] == SHANK_CAVITY
+    if ipar[1] == SURFACE_PANELS:
+        d = np.zeros((6, 6))
+        point_loads(y, pts, bounds, coef, fric, eps, False, cavity, cav, path, npath, d)
+        return d
+    d = load_jacobian(y, rings, bounds, coef, eps)
+    if cavity:
+        point_loads(y, pts, bounds, coef, fric, eps, False, True, cav, path, npath, d)
+    return d
+
+
+@nb.njit(cache=True)
+def velocity_jacobian(jac, y, f0, mass, inertia, gravity, rings, bounds, coef, fric, eps, model):
     """Fill rows 7-13, columns 7-12 of the state Jacobian ``jac`` in closed form.
 
     The same entries as the finite-difference form of :func:`pencore.integrate._jacobian`
@@ -240,7 +269,7 @@ def velocity_jacobian(jac, y, f0, mass, inertia, gravity, rings, bounds, coef, e
     recovered from it.
     """
     rot = quat_to_matrix(y[3:7])
-    d = load_jacobian(y, rings, bounds, coef, eps)
+    d = model_load_jacobian(y, rings, bounds, coef, fric, eps, model)
     i1, i2, i3 = inertia[0], inertia[1], inertia[2]
     w1, w2, w3 = y[10], y[11], y[12]
     vb = np.array(body_velocity(rot, y))
@@ -305,9 +334,9 @@ def velocity_jacobian(jac, y, f0, mass, inertia, gravity, rings, bounds, coef, e
         )
 
 
-def analytic_jacobian_applies(model: tuple[np.ndarray, ...], eps: float, n_gauss: int) -> bool:
+def analytic_jacobian_applies(eps: float, n_gauss: int) -> bool:
     """Whether the closed-form velocity Jacobian (:mod:`pencore.jacobian`) covers this
-    right-hand side: the DAFL on rings (default or ``"factor"`` shank), the smoothed
-    step (``eps > 0``) and no friction (``n_gauss == 0``, a frictionless target)."""
-    ipar = model[0]
-    return eps > 0.0 and n_gauss == 0 and ipar[0] != SHANK_CAVITY and ipar[1] != SURFACE_PANELS
+    right-hand side: the smoothed step (``eps > 0``) and no friction (``n_gauss == 0``,
+    a frictionless target). Every shank model and surface of :mod:`pencore.forces` is
+    covered (rings, panels, the cavity shank's points)."""
+    return eps > 0.0 and n_gauss == 0

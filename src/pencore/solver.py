@@ -105,9 +105,10 @@ class Numerics:
         (:mod:`pencore.integrate`); the default is chosen by
         ``benchmarks/bench_jacobian.py``.
     jacobian : str
-        ``"analytic"`` (default): the velocity derivatives of the DAFL ring loads in
-        closed form (:mod:`pencore.jacobian`) wherever they cover the model (frictionless
-        targets, rings, ``eps > 0``), finite differences elsewhere;
+        ``"analytic"`` (default): the velocity derivatives of the DAFL loads (rings,
+        panels, cavity points) in closed form (:mod:`pencore.jacobian`) wherever they
+        cover the model (frictionless targets, ``eps > 0``), finite differences
+        elsewhere;
         ``"finite_difference"``: finite differences everywhere (six extra right-hand-side
         calls per Jacobian).
     gravity : float
