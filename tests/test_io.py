@@ -107,3 +107,24 @@ def test_downsample_real_trajectory():
     thin = downsample(ds, 40)
     assert thin.sizes["time"] <= 42
     assert float(-thin["tip_y"].min()) == pytest.approx(float(ds["penetration_depth"]))
+
+
+def test_reading_and_plotting_results_does_not_load_the_solver():
+    """pencore's public names are imported on first use (pencore/__init__.py), so a
+    process that only reads and plots results (the workflow's figure jobs) does not
+    import numba or scipy; every public name and submodule attribute still resolves."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys, pencore.io, pencore.plotting; "
+        "print(sorted(m for m in ('numba', 'scipy', 'pencore.solver') if m in sys.modules)); "
+        "import pencore; "
+        "[getattr(pencore, n) for n in pencore.__all__]; "
+        "print(pencore.library.__name__, 'numba' in sys.modules)"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    ).stdout.split("\n")
+    assert out[0] == "[]"
+    assert out[1] == "pencore.library True"
