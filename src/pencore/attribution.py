@@ -63,7 +63,8 @@ from . import analysis, critical
 from .library import MEDIA
 from .models import emulation as _emulation
 from .models import shank_model
-from .solver import SPIN_CENTRES, prepare, simulate
+from .solver import SPIN_CENTRES, prepare, run_impact, simulate
+from .stepping import RunResult
 from .target import Target
 from .validate import InputError, check_keys, number
 
@@ -149,11 +150,14 @@ def _setting(choices: Mapping[str, Any]) -> dict[str, Any]:
     return s
 
 
-def _turned_back(ds: xr.Dataset, reversal: str) -> bool:
-    """Whether a run turned back, read as ``reversal`` (:data:`REVERSALS`)."""
-    if reversal == "exits":
-        return str(ds.attrs["outcome"]) == "exited"
-    return bool(ds.attrs["reversed"])
+def _turned_back(run: xr.Dataset | RunResult, reversal: str) -> bool:
+    """Whether a run (its Dataset, or the raw run of a search) turned back, read as
+    ``reversal`` (:data:`REVERSALS`)."""
+    if isinstance(run, RunResult):
+        outcome, reversed_ = run.outcome, run.reversed
+    else:
+        outcome, reversed_ = str(run.attrs["outcome"]), bool(run.attrs["reversed"])
+    return outcome == "exited" if reversal == "exits" else bool(reversed_)
 
 
 def _target(friction: float) -> Target:
@@ -199,9 +203,9 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
     t0 = time.perf_counter()
 
     def verdict(v: float) -> bool:
-        ds = simulate("p2", target, v, 45.0, start=VCR_START, prepared=p2,
-                      stop_at_reversal=s["reversal"] == "turns_back")  # fmt: skip
-        return _turned_back(ds, s["reversal"])
+        run = run_impact("p2", target, v, 45.0, start=VCR_START, prepared=p2,
+                         stop_at_reversal=s["reversal"] == "turns_back")  # fmt: skip
+        return _turned_back(run, s["reversal"])
 
     res = critical.find_threshold(verdict, *VCR_RANGE, critical.VELOCITY_TOL, scan=5)
     wall["vcr"] = time.perf_counter() - t0
@@ -223,9 +227,11 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
     for yaw in FIG12_YAWS:
 
         def verdict12(v: float, yaw: float = yaw) -> bool:
-            ds = simulate("p2", target, v, FIG12_OBLIQUITY, yaw, start=VCR_START, prepared=p2,
-                          stop_at_reversal=s["reversal"] == "turns_back")  # fmt: skip
-            return _turned_back(ds, s["reversal"])
+            run = run_impact(
+                "p2", target, v, FIG12_OBLIQUITY, yaw, start=VCR_START, prepared=p2,
+                stop_at_reversal=s["reversal"] == "turns_back",
+            )  # fmt: skip
+            return _turned_back(run, s["reversal"])
 
         r = critical.find_threshold(verdict12, *FIG12_RANGE, critical.VELOCITY_TOL, scan=5)
         vcr_yaw.append(r.value)
