@@ -58,6 +58,7 @@ from .arcs import (
     band_regions,
     ring_height,
 )
+from .contact_points import point_loads
 from .dynamics import (
     _leggauss,
     band_half_height,
@@ -66,7 +67,6 @@ from .dynamics import (
     ring_velocity,
     side_poly,
 )
-from .contact_points import point_loads
 from .models import SHANK_CAVITY, SURFACE_PANELS
 from .windows import depth_factor
 
