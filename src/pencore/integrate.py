@@ -142,9 +142,7 @@ def _jacobian(
     if clear > 0.0:
         return
     if analytic:
-        velocity_jacobian(
-            jac, y, f0, mass, inertia, gravity, rings, bounds, coef, fric, eps, model
-        )
+        velocity_jacobian(jac, y, f0, mass, inertia, gravity, rings, bounds, coef, fric, eps, model)
         return
     speed = math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
     wmag = math.sqrt(w1**2 + w2**2 + w3**2)
