@@ -38,6 +38,35 @@ def _rhs(pr, y):
     )
 
 
+def _best_central_difference_error(ja, rhs, y):
+    """Largest difference between the velocity columns of ``ja`` and central differences
+    of ``rhs`` (state -> derivative), relative to each block's (translation, rotation,
+    power) largest entry, for the best of four steps: 1e-3 .. 1e-6 m/s, x 2.5 rad/s for
+    the spin (why the best of four: test_velocity_jacobian_matches_central_differences)."""
+    best = np.inf
+    for step in (1e-3, 1e-4, 1e-5, 1e-6):
+        jc = np.zeros((14, 14))
+        for c in range(7, 13):
+            dl = step if c < 10 else 2.5 * step
+            yp, ym = y.copy(), y.copy()
+            yp[c] += dl
+            ym[c] -= dl
+            jc[:, c] = (rhs(yp) - rhs(ym)) / (2 * dl)
+        err = max(
+            np.abs(ja[rows, 7:13] - jc[rows, 7:13]).max() / np.abs(jc[rows, 7:13]).max()
+            for rows in (slice(7, 10), slice(10, 13), slice(13, 14))
+        )
+        best = min(best, err)
+    return best
+
+
+def _assert_symmetric_dissipative(d):
+    """``d`` (6 x 6 load Jacobian) is symmetric and negative semi-definite to round-off."""
+    scale = np.abs(d).max()
+    assert np.abs(d - d.T).max() <= 1e-12 * scale
+    assert np.linalg.eigvalsh(0.5 * (d + d.T)).max() <= 1e-12 * scale
+
+
 @pytest.mark.parametrize("case", CASES, ids=lambda c: f"{c[0]}-{c[2]:g}deg")
 def test_velocity_jacobian_matches_central_differences(case):
     # central differences have two errors: truncation (the smoothed step's band edges
@@ -57,20 +86,7 @@ def test_velocity_jacobian_matches_central_differences(case):
             ja, y, f0, pr.mass, pr.inertia, G0, pr.rings, pr.bounds, pr.coef, pr.fric, EPS,
             default_model(),
         )  # fmt: skip
-        best = np.inf
-        for step in (1e-3, 1e-4, 1e-5, 1e-6):
-            jc = np.zeros((14, 14))
-            for c in range(7, 13):
-                dl = step if c < 10 else 2.5 * step
-                yp, ym = y.copy(), y.copy()
-                yp[c] += dl
-                ym[c] -= dl
-                jc[:, c] = (_rhs(pr, yp)[0] - _rhs(pr, ym)[0]) / (2 * dl)
-            err = max(
-                np.abs(ja[rows, 7:13] - jc[rows, 7:13]).max() / np.abs(jc[rows, 7:13]).max()
-                for rows in (slice(7, 10), slice(10, 13), slice(13, 14))
-            )
-            best = min(best, err)
+        best = _best_central_difference_error(ja, lambda u: _rhs(pr, u)[0], y)
         assert best <= 1e-3, (y, best)
         checked += 1
     assert checked >= 10
@@ -83,10 +99,7 @@ def test_load_jacobian_is_symmetric_and_dissipative():
     for y in states:
         if _rhs(pr, y)[1] > 0.0:
             continue
-        d = load_jacobian(y, pr.rings, pr.bounds, pr.coef, EPS)
-        scale = np.abs(d).max()
-        assert np.abs(d - d.T).max() <= 1e-12 * scale
-        assert np.linalg.eigvalsh(0.5 * (d + d.T)).max() <= 1e-12 * scale
+        _assert_symmetric_dissipative(load_jacobian(y, pr.rings, pr.bounds, pr.coef, EPS))
 
 
 def test_analytic_and_finite_difference_jacobians_give_one_trajectory():
@@ -152,26 +165,12 @@ def test_point_load_jacobian_matches_central_differences(kind):
             ja, y, f0, pr.mass, pr.inertia, G0, pr.kernel_rings, pr.bounds, pr.coef, pr.fric,
             EPS, model,
         )  # fmt: skip
-        best = np.inf
-        for step in (1e-3, 1e-4, 1e-5, 1e-6):
-            jc = np.zeros((14, 14))
-            for c in range(7, 13):
-                dl = step if c < 10 else 2.5 * step
-                yp, ym = y.copy(), y.copy()
-                yp[c] += dl
-                ym[c] -= dl
-                jc[:, c] = (_rhs_model(pr, yp, model)[0] - _rhs_model(pr, ym, model)[0]) / (2 * dl)
-            err = max(
-                np.abs(ja[rows, 7:13] - jc[rows, 7:13]).max() / np.abs(jc[rows, 7:13]).max()
-                for rows in (slice(7, 10), slice(10, 13), slice(13, 14))
-            )
-            best = min(best, err)
+        best = _best_central_difference_error(ja, lambda u, m=model: _rhs_model(pr, u, m)[0], y)
         assert best <= 1e-3, (kind, y, best)
         # every point load is -A G'(vn) g g^T: symmetric, negative semi-definite
-        d = model_load_jacobian(y, pr.kernel_rings, pr.bounds, pr.coef, pr.fric, EPS, model)
-        scale = np.abs(d).max()
-        assert np.abs(d - d.T).max() <= 1e-12 * scale
-        assert np.linalg.eigvalsh(0.5 * (d + d.T)).max() <= 1e-12 * scale
+        _assert_symmetric_dissipative(
+            model_load_jacobian(y, pr.kernel_rings, pr.bounds, pr.coef, pr.fric, EPS, model)
+        )
         checked += 1
     assert checked >= 6
 
