@@ -229,10 +229,7 @@ def shipped_table3_geometry(path: str | Path = TABLE3_GEOMETRY_FILE) -> tuple[fl
     They are :func:`table3_fit`'s result written out by ``pencore fit-table3 --write``,
     so that the named projectiles do not depend on an optimiser run in every process.
     """
-    with open(path) as f:
-        data = yaml.safe_load(f)
-    if not isinstance(data, dict):
-        raise InputError(f"{path}: expected a mapping, got {data!r}")
+    data = _load_yaml(Path(path), "Table-3 geometry")
     keys = ["diameter_m", "shank_length_m"]
     check_keys(data, keys, str(path))
     missing = [k for k in keys if k not in data]
