@@ -37,16 +37,17 @@ def model_loads(y, rings, bounds, coef, fric, eps, n_gauss, model):
     """Contact force and moment (body frame) and clearance under ``model``."""
     ipar, cav, pts, path, npath = model
     cavity = ipar[0] == SHANK_CAVITY
-    no_jac = np.empty((0, 0))
     if ipar[1] == SURFACE_PANELS:
         return point_loads(
-            y, pts, bounds, coef, fric, eps, n_gauss > 0, cavity, cav, path, npath, no_jac
-        )
+            y, pts, bounds, coef, fric, eps, n_gauss > 0, cavity, cav, path, npath,
+            np.empty((0, 0)),  # no Jacobian
+        )  # fmt: skip
     fb, mb, clear = contact_loads(y, rings, bounds, coef, fric, eps, n_gauss)
     if cavity:
         f2, m2, c2 = point_loads(
-            y, pts, bounds, coef, fric, eps, n_gauss > 0, True, cav, path, npath, no_jac
-        )
+            y, pts, bounds, coef, fric, eps, n_gauss > 0, True, cav, path, npath,
+            np.empty((0, 0)),  # no Jacobian
+        )  # fmt: skip
         for k in range(3):
             fb[k] += f2[k]
             mb[k] += m2[k]
