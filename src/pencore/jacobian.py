@@ -30,6 +30,12 @@ With the band immersion ramp (:mod:`pencore.dynamics`) ``G`` carries the band's 
 integrated by Gauss-Legendre quadrature (:func:`_ramp_moments`, to round-off), the
 rest in closed form.
 
+The shank bands' step half-width depends on the lateral spin
+(:func:`pencore.dynamics.band_eps`), which adds ``-w B^T t (d epsr / d(w2, w3))`` to the
+``w2, w3`` columns, ``t`` the integrals of ``dG/d(epsr) = -sgn V sigma(V) / (2 epsr^2)``
+over the band arcs (no end terms either: ``G`` vanishes at both band edges' ends). That
+part is not symmetric; the rest of the matrix is, and all of it is without lateral spin.
+
 Point loads (panels, and the cavity shank's points) are ``-A G(vn) g`` with
 ``g = (n, p x n)`` and the area ``A`` depending on the position only, so their part is
 ``-A G'(vn) g g^T`` per point (:func:`pencore.contact_points.point_loads`), symmetric
@@ -61,6 +67,7 @@ from .arcs import (
 from .contact_points import point_loads
 from .dynamics import (
     _leggauss,
+    band_eps,
     band_half_height,
     body_velocity,
     quat_to_matrix,
@@ -137,10 +144,12 @@ def load_jacobian(y, rings, bounds, coef, eps):
     ncoef = coef.shape[1]
     poly = np.zeros(_MAXD)
     dpoly = np.zeros(_MAXD)
-    se = np.zeros(_MAXD + 1)
-    scj = np.zeros(_MAXD + 1)
-    sdj = np.zeros(_MAXD + 1)
+    epoly = np.zeros(_MAXD)
+    se = np.zeros(_MAXD + 2)
+    scj = np.zeros(_MAXD + 2)
+    sdj = np.zeros(_MAXD + 2)
     mom = np.zeros(6)
+    emom = np.zeros(6)
     l1lo = np.empty(_MAXI)
     l1hi = np.empty(_MAXI)
     l2lo = np.empty(_MAXI)
@@ -174,6 +183,7 @@ def load_jacobian(y, rings, bounds, coef, eps):
         bmat[1, 5] = q
         bmat[2, 2] = nr
         bmat[2, 4] = -q
+        epsr, rate = band_eps(eps, r, na, w, w2, w3)
         for lay in range(nlay):
             if y0 + yk + hb < bounds[lay, 1]:
                 continue
@@ -190,9 +200,10 @@ def load_jacobian(y, rings, bounds, coef, eps):
                 alpha, beta, we = rpar[g, 0], rpar[g, 1], rpar[g, 2]
                 for c in range(6):
                     mom[c] = 0.0
+                    emom[c] = 0.0
                 for side in range(2):
                     # G on this side (pencore.dynamics.side_poly); dpoly is G'
-                    level, _ = side_poly(coef, lay, eps, side, poly)
+                    level, _ = side_poly(coef, lay, epsr, side, poly)
                     nv = _level_arc(av, kv, phi0, level, True, vlo, vhi)
                     ns = _intersect(rlo[g], rhi[g], rn[g], vlo, vhi, nv, slo, shi)
                     if ns == 0:
@@ -212,9 +223,48 @@ def load_jacobian(y, rings, bounds, coef, eps):
                             dpoly, ncoef - 1, av, bc, bs, alpha, beta, phiy, slo, shi, ns, gx,
                             gw, mom,
                         )  # fmt: skip
+                    if rate > 0.0:
+                        # d(side's G)/d(epsr) = -sgn V sigma(V) / (2 epsr^2), no end terms
+                        _eps_poly(coef, lay, epsr, side, epoly)
+                        if beta == 0.0:
+                            for c in range(ncoef + 1):
+                                epoly[c] *= alpha
+                            _poly_arc_moments(
+                                epoly, ncoef, av, kv, phi0, slo, shi, ns, se, scj, sdj, emom
+                            )
+                        else:
+                            _ramp_moments(
+                                epoly, ncoef, av, bc, bs, alpha, beta, phiy, slo, shi, ns, gx,
+                                gw, emom,
+                            )  # fmt: skip
                 # S = [[1, c, s], [c, cc, cs], [s, cs, ss]]; the loads' Jacobian -w B^T S B
                 _add_btsb(out, bmat, mom, -we)
+                if rate > 0.0:
+                    # the widened band's half-width depends on w2, w3 (band_eps): the
+                    # loads' part -w B^T t (d epsr / d(w2, w3)), t the moments above
+                    _add_eps_columns(out, bmat, emom, -we * rate * w2, -we * rate * w3)
     return out
+
+
+@nb.njit(cache=True, inline="always")
+def _eps_poly(coef, lay, eps, side, epoly):
+    """Fill ``epoly`` with the derivative of :func:`pencore.dynamics.side_poly`'s
+    polynomial with respect to ``eps``: ``-sgn V sigma(V) / (2 eps^2)`` (degree
+    ``ncoef``; ``sgn`` +1 on side 0, -1 on side 1)."""
+    ncoef = coef.shape[1]
+    k = (-1.0 if side == 0 else 1.0) * 0.5 / (eps * eps)
+    epoly[0] = 0.0
+    for c in range(ncoef):
+        epoly[c + 1] = k * coef[lay, c]
+
+
+@nb.njit(cache=True)
+def _add_eps_columns(out, bmat, t, s4, s5):
+    """``out[:, 4] += s4 B^T t`` and ``out[:, 5] += s5 B^T t`` (``t = mom[0:3]``)."""
+    for a in range(6):
+        bt = bmat[0, a] * t[0] + bmat[1, a] * t[1] + bmat[2, a] * t[2]
+        out[a, 4] += s4 * bt
+        out[a, 5] += s5 * bt
 
 
 @nb.njit(cache=True)
