@@ -429,12 +429,12 @@ def normal_impact_angles(yaw: float, convention: str = "axis_tilted") -> tuple[f
 
     ``"axis_tilted"``
         The velocity is along the target normal and the axis is tilted by ``yaw``:
-        ``obliquity = +yaw``, ``yaw = -yaw``. This reading reproduces the paper's
+        ``obliquity = +yaw``, ``yaw = -yaw``. This reading comes close to the paper's
         deviations for projectile #4 at 0.1 deg (0.16 deg at 280 m/s, 0.24 deg at
-        1000 m/s; pencore 0.163 and 0.256).
+        1000 m/s; pencore 0.166 and 0.259).
     ``"velocity_tilted"``
         The axis is along the normal and the velocity is tilted by ``yaw``:
-        ``obliquity = 0``, ``yaw = yaw`` (pencore 0.063 and 0.156 deg for the same cases).
+        ``obliquity = 0``, ``yaw = yaw`` (pencore 0.065 and 0.157 deg for the same cases).
     """
     if convention not in YAW_CONVENTIONS:
         raise InputError(
