@@ -1,6 +1,7 @@
 """The four speed figures of issue 12 in one table, with the machine and its load.
 
-1. per-trajectory time of the benchmark case (``bench_trajectory.py``: wall, median);
+1. per-trajectory time of the benchmark case (``bench_trajectory.py``: wall, median,
+   and the fastest repeat);
 2. fresh process to first result with a cold and a warm kernel cache
    (``bench_startup.py``, read from ``results/startup.csv``; run it first);
 3. full reproduction: ``--reproduction-wall S`` when ``snakemake --cores 2 --forceall``
@@ -48,6 +49,12 @@ def main() -> None:
     rows = []
     traj = _json_of("bench_trajectory.py")
     rows.append(("trajectory", traj["wall_s_median"] * 1e3, "ms", 5.0, traj["case"]))
+    # the median is the figure judged against the target; the best run is the one least
+    # moved by other tenants of a shared host (whose speed varied 1.5x between hours)
+    rows.append(
+        ("trajectory_best", traj["wall_s_min"] * 1e3, "ms", float("nan"),
+         f"{traj['case']}; fastest of the repeats")
+    )  # fmt: skip
     startup = pd.read_csv(HERE / "results" / "startup.csv").set_index("case")["wall_s"]
     for case in ("cold", "warm"):
         note = (
@@ -73,7 +80,8 @@ def main() -> None:
         rows.append(
             ("reproduction_rule_cpu_sum", cpu, "s", float("nan"),
              f"sum of per-rule CPU seconds of {len(tsvs)} Snakemake benchmark files "
-             "(load-independent; the wall on 2 idle cores is at least half of it)")
+             "(independent of this VM's load, not of the host's speed; the wall on 2 idle "
+             "cores is at least half of it)")
         )  # fmt: skip
     num = _json_of("bench_numpy.py")
     rows.append(
