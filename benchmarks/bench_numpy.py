@@ -2,7 +2,7 @@
 
 The numpy form: the DAFL traction of :mod:`pencore.dynamics` (smoothed Heaviside
 ``clip((Vn + eps) / (2 eps), 0, 1)``, on the shank widened as
-:func:`pencore.dynamics.band_eps` does, frictionless, one half-space layer) evaluated on
+:func:`pencore.bands.band_eps` does, frictionless, one half-space layer) evaluated on
 ``n_phi`` points around every ring by vectorised numpy, and integrated with scipy's
 ``solve_ivp`` (BDF, a stiff method as the law needs); pencore evaluates each ring in
 closed form in compiled code and integrates with its compiled Rosenbrock pair.
@@ -48,7 +48,7 @@ def numpy_loads(y: np.ndarray, rings: np.ndarray, a: np.ndarray, eps: float, n_p
     vn = np.einsum("ijk,ijk->ij", u, n)
     height = y[1] + p @ rot[1]
     sigma = a[0] + a[1] * vn + a[2] * vn * vn
-    # the shank bands' step widened by the spread of Vn along them (pencore.dynamics.band_eps)
+    # the shank bands' step widened by the spread of Vn along them (pencore.bands.band_eps)
     spread = np.where(na == 0.0, 0.5 * wt / r * math.hypot(w[1], w[2]), 0.0)
     e = np.sqrt(eps * eps + spread * spread)
     h = np.clip((vn + e) / (2.0 * e), 0.0, 1.0) * (height <= 0.0)

@@ -268,7 +268,7 @@ def band_regions(
 ) -> int:
     """Regions of a ring over which the share of its band inside a layer is affine.
 
-    The band of a ring (half-height ``hb``, m: :func:`pencore.dynamics.band_half_height`)
+    The band of a ring (half-height ``hb``, m: :func:`pencore.bands.band_half_height`)
     at angle ``phi`` spans the heights ``y(phi) +- hb`` with ``y(phi) = y0 + yk cos(phi
     - phiy)``; the share of it below a level is the ramp ``R = clip((level - y + hb) /
     (2 hb), 0, 1)``, and the share inside the layer ``[bot, top]`` is ``R(top) -

@@ -44,7 +44,7 @@ impact) the whole ring jumps in, and on a tilted one the loaded arc opens like
 ``sqrt(depth)``. Either makes the force non-smooth once per ring, and the step control
 then resolves every crossing (most of the steps and rejections of an oblique entry). The
 share of the band below the surface is instead ramped linearly over the band's height
-range ``+-hb`` (:func:`band_half_height`: the band's largest half-extent around the
+range ``+-hb`` (:func:`pencore.bands.band_half_height`: the band's largest half-extent around the
 ring). That share is exact for a shank band at any attitude and for any band at normal
 impact; elsewhere (a nose band at an angle, whose extent varies around the ring) the
 ramp is somewhat wider than the band. The ramp is affine in ``cos(phi - phiy)``, so the
@@ -54,7 +54,7 @@ mesh convergence becomes second order (``benchmarks/convergence.py``).
 
 Shank band step width: on a cylindrical band the normal velocity at a given angle
 varies along the band's length with the lateral spin, by up to ``+-dl/2 sqrt(w2^2 +
-w3^2)``. The step is widened to that spread (:func:`band_eps`: the half-width of the
+w3^2)``. The step is widened to that spread (:func:`pencore.bands.band_eps`: the half-width of the
 same variance, ``sqrt(eps^2 + s^2)``), so each shank ring's load turns over smoothly as
 the point of zero lateral velocity sweeps along the shank, as the band's integral does,
 instead of flipping sides at once (the a0 term's ``2 a0 r dl``) once per ring. It
@@ -81,6 +81,7 @@ from .arcs import (
     _poly_centred_arc_integrals,
     ring_height,
 )
+from .bands import band_eps, band_half_height
 from .windows import depth_factor
 
 # ---------------------------------------------------------------- rotations
@@ -335,54 +336,6 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
                         w3, coef, lay, fric, epsr, alpha, beta, cy, sy,
                     )  # fmt: skip
     return f, mom, clearance
-
-
-@nb.njit(cache=True)
-def band_half_height(r10, rk, r, na, nr, w):
-    """Half the height range (m) spanned across its width by the band a ring stands for.
-
-    A ring of weight ``w = r dl`` stands for the band of meridian length ``dl`` around it;
-    a point at meridian offset ``s`` from the ring is ``s (r10 nr - na rk cos(phi -
-    phiy))`` higher than the ring point at the same angle (``r10``: axial, ``rk``:
-    radial rate of height). The largest magnitude over the ring,
-    ``dl/2 (|r10 nr| + |na| rk)``, is the half-height of the band's immersion ramp
-    (:func:`contact_loads`); 0 for a band lying in a horizontal plane."""
-    if r <= 0.0:
-        return 0.0
-    return 0.5 * (w / r) * (abs(r10 * nr) + abs(na) * rk)
-
-
-@nb.njit(cache=True, inline="always")
-def band_eps(eps, r, na, w, w2, w3):
-    """Half-width (m/s) of the smoothed contact step on a ring's band, and its rate.
-
-    On a cylindrical band (``na = 0``: the shank) the normal velocity has no axial
-    term, and across the band's length ``dl = w / r`` it varies at a given angle by up
-    to ``+-s``, ``s = dl/2 sqrt(w2^2 + w3^2)`` (the lateral velocity ``(v2 + w3 x1, v3
-    - w2 x1)`` is affine in ``x1``). The step integrated over the band is the ring's
-    step box-filtered over that spread; it is replaced by one linear step of the same
-    variance, half-width ``sqrt(eps^2 + s^2)``. Without it the load of each shank
-    ring flips sides at once (``2 a0 r dl``, the a0 term) as the point of zero lateral
-    velocity sweeps over the ring, one jump per ring, each of which the step control
-    resolves. The widening vanishes with the ring spacing, so the converged loads are
-    unchanged. Other rings, and the sharp law (``eps = 0``), keep ``eps``.
-
-    Returns
-    -------
-    epsr : float
-        The band's half-width (m/s).
-    rate : float
-        ``d epsr / d w2 = rate * w2`` and likewise for ``w3`` (m^2/s; 0 when unchanged).
-    """
-    if na != 0.0 or eps <= 0.0 or r <= 0.0:
-        return eps, 0.0
-    c = 0.5 * w / r
-    c2 = c * c
-    s2 = c2 * (w2 * w2 + w3 * w3)
-    if s2 == 0.0:
-        return eps, 0.0  # exactly eps (and a zero gradient) without lateral spin
-    epsr = math.sqrt(eps * eps + s2)
-    return epsr, c2 / epsr
 
 
 @nb.njit(cache=True)

@@ -31,7 +31,7 @@ integrated by Gauss-Legendre quadrature (:func:`_ramp_moments`, to round-off), t
 rest in closed form.
 
 The shank bands' step half-width depends on the lateral spin
-(:func:`pencore.dynamics.band_eps`), which adds ``-w B^T t (d epsr / d(w2, w3))`` to the
+(:func:`pencore.bands.band_eps`), which adds ``-w B^T t (d epsr / d(w2, w3))`` to the
 ``w2, w3`` columns, ``t`` the integrals of ``dG/d(epsr) = -sgn V sigma(V) / (2 epsr^2)``
 over the band arcs (no end terms either: ``G`` vanishes at both band edges' ends). That
 part is not symmetric; the rest of the matrix is, and all of it is without lateral spin.
@@ -64,11 +64,10 @@ from .arcs import (
     band_regions,
     ring_height,
 )
+from .bands import band_eps, band_half_height
 from .contact_points import point_loads
 from .dynamics import (
     _leggauss,
-    band_eps,
-    band_half_height,
     body_velocity,
     quat_to_matrix,
     ring_velocity,

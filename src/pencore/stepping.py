@@ -20,7 +20,7 @@ from pathlib import Path
 import numba as nb
 import numpy as np
 
-from .dynamics import band_half_height
+from .bands import band_half_height
 
 #: Modules whose compiled functions inline others' (their caches go stale together).
 KERNEL_MODULES = (
