@@ -209,33 +209,17 @@ def load_jacobian(y, rings, bounds, coef, eps):
                         continue
                     for c in range(ncoef):
                         dpoly[c] = (c + 1) * poly[c + 1]
-                    if beta == 0.0:
-                        # chi = alpha on the whole region (a core, or a level band):
-                        # closed form, so a full ring's odd moments stay exactly 0
-                        for c in range(ncoef):
-                            dpoly[c] *= alpha
-                        _poly_arc_moments(
-                            dpoly, ncoef - 1, av, kv, phi0, slo, shi, ns, se, scj, sdj, mom
-                        )
-                    else:
-                        _ramp_moments(
-                            dpoly, ncoef - 1, av, bc, bs, alpha, beta, phiy, slo, shi, ns, gx,
-                            gw, mom,
-                        )  # fmt: skip
+                    _region_moments(
+                        dpoly, ncoef - 1, av, bc, bs, kv, phi0, alpha, beta, phiy, slo, shi,
+                        ns, se, scj, sdj, gx, gw, mom,
+                    )  # fmt: skip
                     if rate > 0.0:
                         # d(side's G)/d(epsr) = -sgn V sigma(V) / (2 epsr^2), no end terms
                         _eps_poly(coef, lay, epsr, side, epoly)
-                        if beta == 0.0:
-                            for c in range(ncoef + 1):
-                                epoly[c] *= alpha
-                            _poly_arc_moments(
-                                epoly, ncoef, av, kv, phi0, slo, shi, ns, se, scj, sdj, emom
-                            )
-                        else:
-                            _ramp_moments(
-                                epoly, ncoef, av, bc, bs, alpha, beta, phiy, slo, shi, ns, gx,
-                                gw, emom,
-                            )  # fmt: skip
+                        _region_moments(
+                            epoly, ncoef, av, bc, bs, kv, phi0, alpha, beta, phiy, slo, shi,
+                            ns, se, scj, sdj, gx, gw, emom,
+                        )  # fmt: skip
                 # S = [[1, c, s], [c, cc, cs], [s, cs, ss]]; the loads' Jacobian -w B^T S B
                 _add_btsb(out, bmat, mom, -we)
                 if rate > 0.0:
@@ -243,6 +227,23 @@ def load_jacobian(y, rings, bounds, coef, eps):
                     # loads' part -w B^T t (d epsr / d(w2, w3)), t the moments above
                     _add_eps_columns(out, bmat, emom, -we * rate * w2, -we * rate * w3)
     return out
+
+
+@nb.njit(cache=True, inline="always")
+def _region_moments(
+    p, deg, av, bc, bs, kv, phi0, alpha, beta, phiy, lo, hi, n, e, cj, dj, gx, gw, out
+):
+    """Add to ``out[0:6]`` the moments of ``P(V) chi`` over the arcs of a band region
+    (``chi = alpha - beta cos(phi - phiy)``, :func:`pencore.arcs.band_regions`). With
+    ``beta = 0`` (a core, or a level band) ``chi = alpha`` is folded into ``p`` (which
+    is scaled in place) and the moments are closed form, so a full ring's odd moments
+    stay exactly 0; a ramp goes to :func:`_ramp_moments`."""
+    if beta == 0.0:
+        for c in range(deg + 1):
+            p[c] *= alpha
+        _poly_arc_moments(p, deg, av, kv, phi0, lo, hi, n, e, cj, dj, out)
+    else:
+        _ramp_moments(p, deg, av, bc, bs, alpha, beta, phiy, lo, hi, n, gx, gw, out)
 
 
 @nb.njit(cache=True, inline="always")
