@@ -230,14 +230,10 @@ def shipped_table3_geometry(path: str | Path = TABLE3_GEOMETRY_FILE) -> tuple[fl
     so that the named projectiles do not depend on an optimiser run in every process.
     """
     data = _load_yaml(Path(path), "Table-3 geometry")
-    keys = ["diameter_m", "shank_length_m"]
-    check_keys(data, keys, str(path))
-    missing = [k for k in keys if k not in data]
-    if missing:
-        raise InputError(f"{path}: missing {', '.join(missing)}")
+    check_keys(data, ["diameter_m", "shank_length_m"], str(path))
     return (
-        number(data["diameter_m"], "diameter", str(path)),
-        number(data["shank_length_m"], "length", str(path)),
+        _num(data, "diameter_m", str(path), "diameter", allow_str=False),
+        _num(data, "shank_length_m", str(path), "length", allow_str=False),
     )
 
 
@@ -282,12 +278,14 @@ def target_names() -> list[str]:
 # ---------------------------------------------------------------- YAML
 
 
-def _num(d: dict[str, Any], key: str, what: str, limit: str | None = None) -> float:
+def _num(
+    d: dict[str, Any], key: str, what: str, limit: str | None = None, allow_str: bool = True
+) -> float:
     """``d[key]`` as a number within ``LIMITS[limit or key]`` (YAML's ``1e6`` string
-    form accepted)."""
+    form accepted unless ``allow_str`` is False)."""
     if key not in d:
         raise InputError(f"{what}: missing key {key!r}")
-    return number(d[key], limit or key, what, allow_str=True)
+    return number(d[key], limit or key, what, allow_str=allow_str)
 
 
 def _mapping(x: Any, what: str) -> dict[str, Any]:
