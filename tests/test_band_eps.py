@@ -22,7 +22,8 @@ def test_band_eps_closed_form_and_rate():
     # half-width sqrt(eps^2 + s^2) with s = dl/2 |(w2, w3)| = 0.01 m * 25 rad/s
     assert epsr == pytest.approx(math.hypot(EPS, 0.25), rel=1e-14)
     # the rate is d epsr / d w2 = rate w2 (and the same for w3): central differences
-    for k, h in ((0, 1e-4), (1, 1e-4)):
+    h = 1e-4
+    for k in (0, 1):
         up = [w2, w3]
         dn = [w2, w3]
         up[k] += h

@@ -44,20 +44,20 @@ impact) the whole ring jumps in, and on a tilted one the loaded arc opens like
 ``sqrt(depth)``. Either makes the force non-smooth once per ring, and the step control
 then resolves every crossing (most of the steps and rejections of an oblique entry). The
 share of the band below the surface is instead ramped linearly over the band's height
-range ``+-hb`` (:func:`pencore.bands.band_half_height`: the band's largest half-extent around the
-ring). That share is exact for a shank band at any attitude and for any band at normal
+range ``+-hb`` (:func:`pencore.bands.band_half_height`: the band's largest half-extent
+around the ring). That share is exact for a shank band at any attitude and for any band at normal
 impact; elsewhere (a nose band at an angle, whose extent varies around the ring) the
 ramp is somewhat wider than the band. The ramp is affine in ``cos(phi - phiy)``, so the
 ramped arcs are integrated in closed form as well (:func:`pencore.arcs.band_regions`,
 :func:`pencore.arcs._poly_arc_moments`); the ramp vanishes with the ring spacing and the
 mesh convergence becomes second order (``benchmarks/convergence.py``).
 
-Shank band step width: on a cylindrical band the normal velocity at a given angle
-varies along the band's length with the lateral spin, by up to ``+-dl/2 sqrt(w2^2 +
-w3^2)``. The step is widened to that spread (:func:`pencore.bands.band_eps`: the half-width of the
-same variance, ``sqrt(eps^2 + s^2)``), so each shank ring's load turns over smoothly as
-the point of zero lateral velocity sweeps along the shank, as the band's integral does,
-instead of flipping sides at once (the a0 term's ``2 a0 r dl``) once per ring. It
+Shank band step width: on a cylindrical band the normal velocity at a given angle varies
+along the band's length with the lateral spin, by up to ``+-dl/2 sqrt(w2^2 + w3^2)``.
+The step is widened to that spread (:func:`pencore.bands.band_eps`: the half-width of
+the same variance, ``sqrt(eps^2 + s^2)``), so each shank ring's load turns over smoothly
+as the point of zero lateral velocity sweeps along the shank, as the band's integral
+does, instead of flipping sides at once (the a0 term's ``2 a0 r dl``) once per ring. It
 vanishes with the ring spacing, leaves runs without lateral spin unchanged to the bit,
 and halves the mesh error of the turning angle and the deviation
 (``benchmarks/convergence.py``).
