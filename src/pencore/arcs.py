@@ -87,10 +87,12 @@ def _level_arc(c0: float, ck: float, phik: float, level: float, above: bool, lo,
     return _arc(phik + math.pi, math.pi - math.acos(c), lo, hi)
 
 
-@nb.njit(cache=True)
-def ring_height(ycm, r10, r11, r12, x1, r):
-    """Height of a ring's points as ``y0 + yk cos(phi - phiy)``: ``(y0, yk, phiy)`` (m, m,
-    rad) from the centre-of-mass height ``ycm`` and row 1 of the rotation matrix."""
+@nb.njit(cache=True, inline="always")
+def ring_height_terms(ycm, r10, r11, r12, x1, r):
+    """Height of a ring's points as ``y0 + yk cos(phi - phiy)``: ``(y0, yk, yc, ys)``
+    (m) from the centre-of-mass height ``ycm`` and row 1 of the rotation matrix, with
+    ``yk cos(phiy), yk sin(phiy) = yc, ys``. The angle ``phiy = atan2(ys, yc)`` is left
+    to the caller: only partial arcs need it."""
     y0 = ycm + r10 * x1
     yc = r11 * r
     ys = r12 * r
@@ -99,7 +101,7 @@ def ring_height(ycm, r10, r11, r12, x1, r):
         # ring parallel to the surface: a round-off tilt would orient its partial
         # contact arc at random, so it is either wholly in or wholly out
         yk = 0.0
-    return y0, yk, math.atan2(ys, yc)
+    return y0, yk, yc, ys
 
 
 # ---------------------------------------------------------------- closed-form arc integrals

@@ -79,7 +79,7 @@ from .arcs import (
     _poly_arc_integrals,
     _poly_arc_moments,
     _poly_centred_arc_integrals,
-    ring_height,
+    ring_height_terms,
 )
 from .bands import band_eps, band_half_height
 from .windows import depth_factor
@@ -120,16 +120,32 @@ def body_velocity(rot, y):
 
 
 @nb.njit(cache=True, inline="always")
-def ring_velocity(x1, r, na, nr, v1, v2, v3, w2, w3):
+def ring_velocity_terms(x1, r, na, nr, v1, v2, v3, w2, w3):
     """Normal velocity on a ring, ``Vn = av + bc cos(phi) + bs sin(phi) = av + kv
-    cos(phi - phi0)``: returns ``(q, av, bc, bs, kv, phi0)`` with ``q = nr x1 - na r``
-    the lever of the spin terms (body frame, SI units)."""
+    cos(phi - phi0)``: returns ``(q, av, bc, bs, kv)`` with ``q = nr x1 - na r`` the
+    lever of the spin terms (body frame, SI units). The angle ``phi0 = atan2(bs, bc)``
+    is left to the caller: only partial arcs need it."""
     q = nr * x1 - na * r
     av = na * v1
     bc = nr * v2 + w3 * q
     bs = nr * v3 - w2 * q
-    kv = math.sqrt(bc * bc + bs * bs)
-    return q, av, bc, bs, kv, math.atan2(bs, bc)
+    return q, av, bc, bs, math.sqrt(bc * bc + bs * bs)
+
+
+@nb.njit(cache=True, inline="always")
+def near_level(lo, hi, bounds):
+    """Whether the height range ``[lo, hi]`` (m) of a band comes within a relative 1e-9
+    of a finite layer level (top or bottom) in ``bounds``: there its regions may be
+    partial arcs or ramps, which need the arcs' angles."""
+    for lay in range(bounds.shape[0]):
+        for edge in range(2):
+            level = bounds[lay, edge]
+            if not (abs(level) < np.inf):
+                continue
+            tol = 1e-9 * (abs(lo) + abs(hi) + abs(level) + 1e-3)
+            if lo - tol <= level <= hi + tol:
+                return True
+    return False
 
 
 @nb.njit(cache=True, inline="always")
@@ -216,7 +232,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         na = rings[i, 2]
         nr = rings[i, 3]
         w = rings[i, 4]
-        y0, yk, phiy = ring_height(ycm, r10, r11, r12, x1, r)
+        y0, yk, yc, ys = ring_height_terms(ycm, r10, r11, r12, x1, r)
         hb = band_half_height(r10, rk, r, na, nr, w)
         low = y0 - yk - hb
         if low < clearance:
@@ -224,11 +240,22 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         if low > bounds[0, 0]:
             continue
         high = y0 + yk + hb
-        q, av, bc, bs, kv, phi0 = ring_velocity(x1, r, na, nr, v1, v2, v3, w2, w3)
+        q, av, bc, bs, kv = ring_velocity_terms(x1, r, na, nr, v1, v2, v3, w2, w3)
         cph = bc / kv if kv > 0.0 else 1.0  # cos(phi0), sin(phi0)
         sph = bs / kv if kv > 0.0 else 0.0
-        cy = math.cos(phiy)
-        sy = math.sin(phiy)
+        # the angles of the height and velocity terms orient partial arcs only: a band
+        # clear of every layer level, without friction, is loaded on whole-ring regions
+        # (the centred integrals), so their trigonometry is skipped there (the values
+        # below are then unused)
+        phiy = 0.0
+        phi0 = 0.0
+        cy = 1.0
+        sy = 0.0
+        if n_gauss > 0 or yk == 0.0 or near_level(y0 - yk - hb, high, bounds):
+            phiy = math.atan2(ys, yc)
+            phi0 = math.atan2(bs, bc)
+            cy = math.cos(phiy)
+            sy = math.sin(phiy)
         epsr, _ = band_eps(eps, r, na, w, w2, w3)
         for lay in range(nlay):
             if high < bounds[lay, 1]:

@@ -62,7 +62,7 @@ from .arcs import (
     _level_arc,
     _poly_arc_moments,
     band_regions,
-    ring_height,
+    ring_height_terms,
 )
 from .bands import band_eps, band_half_height
 from .contact_points import point_loads
@@ -70,7 +70,7 @@ from .dynamics import (
     _leggauss,
     body_velocity,
     quat_to_matrix,
-    ring_velocity,
+    ring_velocity_terms,
     side_poly,
 )
 from .models import SHANK_CAVITY, SURFACE_PANELS
@@ -172,11 +172,13 @@ def load_jacobian(y, rings, bounds, coef, eps):
         na = rings[i, 2]
         nr = rings[i, 3]
         w = rings[i, 4]
-        y0, yk, phiy = ring_height(y[1], rot[1, 0], rot[1, 1], rot[1, 2], x1, r)
+        y0, yk, yc, ys = ring_height_terms(y[1], rot[1, 0], rot[1, 1], rot[1, 2], x1, r)
+        phiy = math.atan2(ys, yc)
         hb = band_half_height(rot[1, 0], rk, r, na, nr, w)
         if y0 - yk - hb > bounds[0, 0]:
             continue
-        q, av, bc, bs, kv, phi0 = ring_velocity(x1, r, na, nr, v1, v2, v3, w2, w3)
+        q, av, bc, bs, kv = ring_velocity_terms(x1, r, na, nr, v1, v2, v3, w2, w3)
+        phi0 = math.atan2(bs, bc)
         bmat[0, 0] = na
         bmat[1, 1] = nr
         bmat[1, 5] = q
