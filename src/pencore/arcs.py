@@ -8,7 +8,9 @@ ring is therefore a union of arcs whose ends are where such a function crosses a
 ``cos`` and ``sin`` (the loads, :func:`_poly_arc_integrals`) or times their six
 products (the velocity Jacobian and the band ramps, :func:`_poly_arc_moments`) are
 closed form: Taylor-shift the polynomial to powers of ``cos(phi - phik)`` and use the
-recursions for the integrals of ``cos^j`` and ``cos^j sin``.
+recursions for the integrals of ``cos^j`` and ``cos^j sin``. Where the region is the
+whole ring, the loaded arc is centred on ``phik`` and its ends need no trigonometry
+(:func:`_poly_centred_arc_integrals`, :func:`_poly_centred_arc_moments`).
 """
 
 from __future__ import annotations
@@ -214,6 +216,53 @@ def _poly_centred_arc_integrals(poly, deg, a, k, cph, sph, level, e, cj):
         s1 += f * cj[j + 1]
         kp *= k
     return s0, cph * s1, sph * s1
+
+
+@nb.njit(cache=True)
+def _poly_centred_arc_moments(poly, deg, a, k, cph, sph, level, e, cj, out):
+    """:func:`_poly_arc_moments` over the whole-ring arc where ``V >= level``, with
+    ``V = a + k cos(phi - phi0)`` and ``cph, sph = cos(phi0), sin(phi0)``: adds the six
+    moments to ``out[0:6]``.
+
+    As in :func:`_poly_centred_arc_integrals`, the arc ``|phi - phi0| <= h`` is
+    symmetric about ``phi0``, so the moments with an odd power of ``sin(phi - phi0)``
+    vanish and only ``acos`` is needed, not the trigonometry of arc ends and of
+    ``phi0``. ``e, cj`` are scratch of length >= deg + 3."""
+    if k < 1e-300:
+        if a < level:
+            return
+        ch, sh, h = -1.0, 0.0, math.pi
+    else:
+        c = (level - a) / k
+        if c > 1.0:
+            return
+        if c <= -1.0:
+            ch, sh, h = -1.0, 0.0, math.pi
+        else:
+            ch, sh, h = c, math.sqrt(1.0 - c * c), math.acos(c)
+    _taylor_shift(poly, deg, a, e)
+    cj[0] = 2.0 * h
+    cj[1] = 2.0 * sh
+    cp = ch  # cos^(j-1) h
+    for j in range(2, deg + 3):
+        cj[j] = 2.0 * cp * sh / j + (j - 1) / j * cj[j - 2]
+        cp *= ch
+    i0 = ic = icc = iss = 0.0
+    kp = 1.0
+    for j in range(deg + 1):
+        f = e[j] * kp
+        i0 += f * cj[j]
+        ic += f * cj[j + 1]
+        icc += f * cj[j + 2]
+        iss += f * (cj[j] - cj[j + 2])
+        kp *= k
+    c, s = cph, sph
+    out[0] += i0
+    out[1] += c * ic
+    out[2] += s * ic
+    out[3] += c * c * icc + s * s * iss
+    out[4] += c * s * (icc - iss)
+    out[5] += s * s * icc + c * c * iss
 
 
 @nb.njit(cache=True, inline="always")

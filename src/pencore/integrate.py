@@ -10,8 +10,9 @@ implicit stages hold the shank in that band (the sliding mode of the discontinuo
 at the cost of a Jacobian per step.
 
 Jacobian: the kinematic rows are exact; the force and moment derivatives with respect to
-the velocities are finite differences; the derivatives with respect to position and
-attitude are left out (they are not stiff), which the error control absorbs.
+the velocities are closed form (:mod:`pencore.jacobian`) where the model allows it, else
+finite differences; the derivatives with respect to position and attitude are left out
+(they are not stiff), which the error control absorbs.
 
 Held Jacobian (``jacobian_age`` > 1): the Jacobian may be kept for several accepted steps.
 The pair stays consistent because its second-order solution is a W-method (Shampine &

@@ -28,7 +28,8 @@ are closed form like the loads' (:mod:`pencore.arcs`).
 With the band immersion ramp (:mod:`pencore.dynamics`) ``G`` carries the band's share
 ``chi(phi)``, which depends on the position only; the ramps of tilted rings are
 integrated by Gauss-Legendre quadrature (:func:`_ramp_moments`, to round-off), the
-rest in closed form.
+rest in closed form (a whole ring's core without the trigonometry of arc ends:
+:func:`pencore.arcs._poly_centred_arc_moments`).
 
 The shank bands' step half-width depends on the lateral spin
 (:func:`pencore.bands.band_eps`), which adds ``-w B^T t (d epsr / d(w2, w3))`` to the
@@ -58,17 +59,19 @@ import numpy as np
 from .arcs import (
     _MAXD,
     _MAXI,
+    TWO_PI,
     _intersect,
     _level_arc,
     _poly_arc_moments,
+    _poly_centred_arc_moments,
     band_regions,
     ring_height_terms,
 )
 from .bands import band_eps, band_half_height
 from .contact_points import point_loads
 from .dynamics import (
-    _leggauss,
     body_velocity,
+    near_level,
     quat_to_matrix,
     ring_velocity_terms,
     side_poly,
@@ -87,6 +90,8 @@ __all__ = [
 #: Gauss points per piece (<= 45 degrees) of a band's ramp arcs: the integrand is a
 #: trigonometric polynomial of degree <= 5 there (soil, concrete), integrated to round-off
 _N_RAMP = 8
+#: their nodes and weights on [-1, 1], computed once (a compiled constant)
+_RAMP_X, _RAMP_W = np.polynomial.legendre.leggauss(_N_RAMP)
 
 
 @nb.njit(cache=True)
@@ -164,7 +169,7 @@ def load_jacobian(y, rings, bounds, coef, eps):
     rhi = np.empty((4, _MAXI))
     rn = np.zeros(4, dtype=np.int64)
     rpar = np.empty((4, 3))
-    gx, gw = _leggauss(_N_RAMP)
+    gx, gw = _RAMP_X, _RAMP_W
     rk = math.sqrt(rot[1, 1] ** 2 + rot[1, 2] ** 2)
     for i in range(rings.shape[0]):
         x1 = rings[i, 0]
@@ -173,12 +178,18 @@ def load_jacobian(y, rings, bounds, coef, eps):
         nr = rings[i, 3]
         w = rings[i, 4]
         y0, yk, yc, ys = ring_height_terms(y[1], rot[1, 0], rot[1, 1], rot[1, 2], x1, r)
-        phiy = math.atan2(ys, yc)
         hb = band_half_height(rot[1, 0], rk, r, na, nr, w)
         if y0 - yk - hb > bounds[0, 0]:
             continue
         q, av, bc, bs, kv = ring_velocity_terms(x1, r, na, nr, v1, v2, v3, w2, w3)
-        phi0 = math.atan2(bs, bc)
+        cph = bc / kv if kv > 0.0 else 1.0  # cos(phi0), sin(phi0)
+        sph = bs / kv if kv > 0.0 else 0.0
+        # as in pencore.dynamics.contact_loads: the angles orient partial arcs only
+        phiy = 0.0
+        phi0 = 0.0
+        if yk == 0.0 or near_level(y0 - yk - hb, y0 + yk + hb, bounds):
+            phiy = math.atan2(ys, yc)
+            phi0 = math.atan2(bs, bc)
         bmat[0, 0] = na
         bmat[1, 1] = nr
         bmat[1, 5] = q
@@ -202,9 +213,25 @@ def load_jacobian(y, rings, bounds, coef, eps):
                 for c in range(6):
                     mom[c] = 0.0
                     emom[c] = 0.0
+                whole = rn[g] == 1 and rlo[g, 0] == 0.0 and rhi[g, 0] == TWO_PI
                 for side in range(2):
                     # G on this side (pencore.dynamics.side_poly); dpoly is G'
                     level, _ = side_poly(coef, lay, epsr, side, poly)
+                    if whole and beta == 0.0:
+                        # a whole-ring core: the loaded arc is centred on phi0
+                        for c in range(ncoef):
+                            dpoly[c] = (c + 1) * poly[c + 1] * alpha
+                        _poly_centred_arc_moments(
+                            dpoly, ncoef - 1, av, kv, cph, sph, level, se, scj, mom
+                        )
+                        if rate > 0.0:
+                            _eps_poly(coef, lay, epsr, side, epoly)
+                            for c in range(ncoef + 1):
+                                epoly[c] *= alpha
+                            _poly_centred_arc_moments(
+                                epoly, ncoef, av, kv, cph, sph, level, se, scj, emom
+                            )
+                        continue
                     nv = _level_arc(av, kv, phi0, level, True, vlo, vhi)
                     ns = _intersect(rlo[g], rhi[g], rn[g], vlo, vhi, nv, slo, shi)
                     if ns == 0:
@@ -223,7 +250,7 @@ def load_jacobian(y, rings, bounds, coef, eps):
                             ns, se, scj, sdj, gx, gw, emom,
                         )  # fmt: skip
                 # S = [[1, c, s], [c, cc, cs], [s, cs, ss]]; the loads' Jacobian -w B^T S B
-                _add_btsb(out, bmat, mom, -we)
+                _add_btsb(out, na, nr, q, mom, -we)
                 if rate > 0.0:
                     # the widened band's half-width depends on w2, w3 (band_eps): the
                     # loads' part -w B^T t (d epsr / d(w2, w3)), t the moments above
@@ -269,25 +296,42 @@ def _add_eps_columns(out, bmat, t, s4, s5):
         out[a, 5] += s5 * bt
 
 
-@nb.njit(cache=True)
-def _add_btsb(out, bmat, mom, scale):
-    """``out += scale * B^T S B`` with S the symmetric 3 x 3 of the moments ``mom``."""
-    s = np.empty((3, 3))
-    s[0, 0] = mom[0]
-    s[0, 1] = s[1, 0] = mom[1]
-    s[0, 2] = s[2, 0] = mom[2]
-    s[1, 1] = mom[3]
-    s[1, 2] = s[2, 1] = mom[4]
-    s[2, 2] = mom[5]
-    for a in range(6):
-        for b in range(6):
-            acc = 0.0
-            for i in range(3):
-                if bmat[i, a] == 0.0:
-                    continue
-                for j in range(3):
-                    acc += bmat[i, a] * s[i, j] * bmat[j, b]
-            out[a, b] += scale * acc
+@nb.njit(cache=True, inline="always")
+def _add_btsb(out, na, nr, q, mom, scale):
+    """``out += scale * B^T S B`` with S the symmetric 3 x 3 of the moments ``mom`` and
+    B the ring's 3 x 6 map from ``(v1, v2, v3, w1, w2, w3)`` to ``(av, bc, bs)``: its
+    columns are ``(na, 0, 0)``, ``(0, nr, 0)``, ``(0, 0, nr)``, 0, ``(0, 0, -q)`` and
+    ``(0, q, 0)`` (module notes), so ``B^T S B`` has 15 distinct non-zero entries,
+    written out here instead of a dense triple product."""
+    s00, s01, s02, s11, s12, s22 = mom[0], mom[1], mom[2], mom[3], mom[4], mom[5]
+    a0 = scale * na
+    a1 = scale * nr
+    a4 = scale * q
+    m = np.empty(15)
+    m[0] = a0 * na * s00  # (0, 0)
+    m[1] = a0 * nr * s01  # (0, 1)
+    m[2] = a0 * nr * s02  # (0, 2)
+    m[3] = -a0 * q * s02  # (0, 4)
+    m[4] = a0 * q * s01  # (0, 5)
+    m[5] = a1 * nr * s11  # (1, 1)
+    m[6] = a1 * nr * s12  # (1, 2)
+    m[7] = -a1 * q * s12  # (1, 4)
+    m[8] = a1 * q * s11  # (1, 5)
+    m[9] = a1 * nr * s22  # (2, 2)
+    m[10] = -a1 * q * s22  # (2, 4)
+    m[11] = a1 * q * s12  # (2, 5)
+    m[12] = a4 * q * s22  # (4, 4)
+    m[13] = -a4 * q * s12  # (4, 5)
+    m[14] = a4 * q * s11  # (5, 5)
+    k = 0
+    for a in (0, 1, 2, 4, 5):
+        for b in (0, 1, 2, 4, 5):
+            if b < a:
+                continue
+            out[a, b] += m[k]
+            if b != a:
+                out[b, a] += m[k]
+            k += 1
 
 
 @nb.njit(cache=True)
