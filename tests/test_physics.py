@@ -284,3 +284,24 @@ def test_held_jacobian_keeps_the_solution():
             fresh, held = float(runs[1][q]), float(runs[age][q])
             assert abs(held / fresh - 1.0) < 1e-4, (age, q, held, fresh)
     assert runs[6].attrs["n_rhs"] < runs[1].attrs["n_rhs"]
+
+
+def test_path_below_surface_clips_entry_and_skips_flight_above():
+    # a tip path that enters at 45 deg, leaves, and re-enters: the length below y = 0
+    # is the straight-line geometry, each entry clipped at the surface
+    from pencore.trajectory import _axes, _path_below
+
+    tip = np.array(
+        [[0.0, 1.0, 0.0], [2.0, -1.0, 0.0], [3.0, -2.0, 0.0], [5.0, 1.0, 0.0], [6.0, -3.0, 0.0]]
+    )
+    below = tip[:, 1] <= 0.0
+    expected = (
+        math.sqrt(2.0)  # (1, 0) -> (2, -1): the half below the surface
+        + math.sqrt(2.0)  # (2, -1) -> (3, -2)
+        + 0.75 * math.hypot(1.0, 4.0)  # (5, 1) -> (6, -3): 3/4 of it below
+    )
+    assert _path_below(tip, below) == pytest.approx(expected, rel=1e-14)
+    assert _path_below(tip[:1], below[:1]) == 0.0
+    # body axis 1 of a quarter turn about z: (1, 0, 0) -> (0, 1, 0); unnormalised input
+    q = np.array([[2.0 * math.cos(math.pi / 4), 0.0, 0.0, 2.0 * math.sin(math.pi / 4)]])
+    assert _axes(q)[0] == pytest.approx([0.0, 1.0, 0.0], abs=1e-15)

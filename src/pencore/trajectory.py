@@ -11,7 +11,6 @@ import numpy as np
 import xarray as xr
 
 from . import __version__
-from .dynamics import quat_to_matrix
 from .geometry import Projectile
 from .integrate import RunResult
 from .target import Target
@@ -52,6 +51,29 @@ def _projectile_dict(p: Projectile) -> dict[str, Any]:
     return d
 
 
+def _axes(q: np.ndarray) -> np.ndarray:
+    """Body axis 1 in the fixed frame for each quaternion row of ``q`` (n, 4): the first
+    column of :func:`pencore.dynamics.quat_to_matrix`, with the same operations in the
+    same order (so the same bits), for all rows at once."""
+    nq = np.sqrt(q[:, 0] * q[:, 0] + q[:, 1] * q[:, 1] + q[:, 2] * q[:, 2] + q[:, 3] * q[:, 3])
+    w, x, y, z = (q[:, k] / nq for k in range(4))
+    return np.stack(
+        [w * w + x * x - y * y - z * z, 2 * (x * y + w * z), 2 * (x * z - w * y)], axis=1
+    )
+
+
+def _path_below(tip: np.ndarray, below: np.ndarray) -> float:
+    """Length (m) of the tip path below the surface: the segments whose end is below
+    ``y = 0``, the first of each stretch clipped at the surface; summed in order."""
+    seg = np.linalg.norm(np.diff(tip, axis=0), axis=1)
+    end, start = below[1:], below[:-1]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        frac = tip[1:, 1] / (tip[1:, 1] - tip[:-1, 1])
+    part = np.where(end & start, seg, np.where(end, frac * seg, 0.0))
+    # a running sum adds left to right, as the loop it replaces did
+    return float(np.cumsum(part)[-1]) if part.size else 0.0
+
+
 def trajectory_dataset(
     projectile: Projectile,
     target: Target,
@@ -89,9 +111,7 @@ def trajectory_dataset(
     lc, mass = mp.lc, mp.mass
     inertia = np.array([mp.i_axial, mp.i_transverse, mp.i_transverse])
     n = len(ts)
-    axes = np.empty((n, 3))
-    for i in range(n):
-        axes[i] = quat_to_matrix(ys[i, 3:7])[:, 0]
+    axes = _axes(ys[:, 3:7])
     cm = ys[:, 0:3]
     tip = cm + lc * axes
     vel = ys[:, 7:10]
@@ -103,16 +123,7 @@ def trajectory_dataset(
     ke = 0.5 * mass * (vel**2).sum(1) + 0.5 * (inertia * om**2).sum(1)
     below = tip[:, 1] <= 0.0
     depth = float(max(0.0, -tip[:, 1].min()))
-    seg = np.linalg.norm(np.diff(tip, axis=0), axis=1)
-    # tip path below the surface: segments whose end is below y = 0, first one clipped
-    path = 0.0
-    for i in range(1, n):
-        if below[i]:
-            if below[i - 1]:
-                path += seg[i - 1]
-            else:
-                frac = tip[i, 1] / (tip[i, 1] - tip[i - 1, 1])
-                path += frac * seg[i - 1]
+    path = _path_below(tip, below)
     v0 = inputs["velocity"]
 
     def var(data, units, long_name, **extra):
