@@ -151,3 +151,17 @@ def test_bad_shipped_geometry_file_is_named(tmp_path, text, match):
     bad.write_text(text)
     with pytest.raises(InputError, match=match):
         shipped_table3_geometry(bad)
+
+
+def test_mass_properties_are_kept_per_projectile_and_follow_a_replaced_one():
+    import dataclasses
+
+    from pencore.library import get_projectile
+
+    p = get_projectile("p2")
+    assert p.mass_properties() is p.mass_properties()
+    wider = dataclasses.replace(p, diameter=2.0 * p.diameter)
+    # a new projectile computes its own: twice the diameter, at least four times the mass
+    # (the discs' areas; the nose also lengthens with its radius)
+    assert wider.mass_properties().mass > 4.0 * p.mass_properties().mass
+    assert dataclasses.asdict(p) == dataclasses.asdict(get_projectile("p2"))

@@ -278,7 +278,11 @@ class Projectile:
 
         Each disc of radius ``r`` and thickness ``ds`` contributes ``dm = rho pi r^2 ds``,
         ``dI_axial = dm r^2 / 2`` and ``dI_transverse = dm (r^2/4 + (s - s_c)^2)``.
+        Computed once per (immutable) projectile and kept: every trajectory asks for it.
         """
+        cached = self.__dict__.get("_mass_properties")
+        if cached is not None:
+            return cached
         a = self.radius
         parts: list[tuple[np.ndarray, np.ndarray, float]] = []  # s, r*ds-weights, rho
         ln = self.nose_length
@@ -304,7 +308,9 @@ class Projectile:
             raise GeometryError("the body has no volume (a flat nose needs a shank)")
         lc = m1 / m
         i_tr = i_disc + m2 - m * lc * lc
-        return MassProperties(float(m), float(lc), float(self.length), float(i_ax), float(i_tr))
+        mp = MassProperties(float(m), float(lc), float(self.length), float(i_ax), float(i_tr))
+        object.__setattr__(self, "_mass_properties", mp)  # a cache, not a field
+        return mp
 
     def rings(self, n_nose: int = 48, n_shank: int = 24, n_face: int = 4) -> Rings:
         """Surface bands: ``n_nose`` on the nose, ``n_shank`` per metre-ish of shank
