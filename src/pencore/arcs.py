@@ -143,16 +143,15 @@ def _cos_moments(pa, pb, nc, nd, cj, dj):
 
 
 @nb.njit(cache=True, inline="always")
-def _poly_arc_integrals(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj):
+def _poly_arc_integrals(poly, deg, a, k, phi0, cph, sph, lo, hi, n, e, cj, dj):
     """Integrals of P(V), P(V) cos(phi), P(V) sin(phi) over the intervals, where
-    ``V = a + k cos(phi - phi0)`` and ``P(V) = sum poly[i] V^i`` (i <= deg).
+    ``V = a + k cos(phi - phi0)`` and ``P(V) = sum poly[i] V^i`` (i <= deg); ``cph,
+    sph`` are ``cos(phi0), sin(phi0)`` (the caller has them without trigonometry).
     ``e, cj, dj`` are scratch arrays of length >= deg + 2."""
     _taylor_shift(poly, deg, a, e)
     s0 = 0.0
     sc = 0.0
     ss = 0.0
-    cph = math.cos(phi0)
-    sph = math.sin(phi0)
     for m in range(n):
         if lo[m] == 0.0 and hi[m] == TWO_PI:
             # whole ring: exact integrals (odd powers and the sine moments vanish), so
@@ -277,11 +276,11 @@ def _full_circle_cos_power(j):
 
 
 @nb.njit(cache=True)
-def _poly_arc_moments(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj, out):
+def _poly_arc_moments(poly, deg, a, k, phi0, cph, sph, lo, hi, n, e, cj, dj, out):
     """Add to ``out[0:6]`` the integrals of ``P(V)`` times ``1, cos, sin, cos^2,
     cos sin, sin^2`` (of ``phi``) over the intervals, with ``V = a + k cos(phi - phi0)``
-    and ``P(V) = sum poly[i] V^i`` (i <= deg); ``e, cj, dj`` are scratch of length
-    >= deg + 3."""
+    and ``P(V) = sum poly[i] V^i`` (i <= deg); ``cph, sph`` are ``cos(phi0),
+    sin(phi0)``; ``e, cj, dj`` are scratch of length >= deg + 3."""
     _taylor_shift(poly, deg, a, e)
     # moments in psi = phi - phi0: cos^j psi (C_j) and cos^j psi sin psi (D_j)
     i0 = ic = isn = icc = ics = iss = 0.0
@@ -303,8 +302,8 @@ def _poly_arc_moments(poly, deg, a, k, phi0, lo, hi, n, e, cj, dj, out):
             iss += f * (cj[j] - cj[j + 2])
             kp *= k
     # back to phi: cos phi = c cos psi - s sin psi, sin phi = s cos psi + c sin psi
-    c = math.cos(phi0)
-    s = math.sin(phi0)
+    c = cph
+    s = sph
     out[0] += i0
     out[1] += c * ic - s * isn
     out[2] += s * ic + c * isn

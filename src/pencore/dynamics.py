@@ -253,7 +253,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         sy = 0.0
         if n_gauss > 0 or yk == 0.0 or near_level(y0 - yk - hb, high, bounds):
             phiy = math.atan2(ys, yc)
-            phi0 = math.atan2(bs, bc)
+            phi0 = math.atan2(bs, bc) if kv > 0.0 else 0.0  # as cph, sph
             cy = math.cos(phiy)
             sy = math.sin(phiy)
         epsr, _ = band_eps(eps, r, na, w, w2, w3)
@@ -333,7 +333,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
                         continue
                     if not ramp:
                         a_, b_, c_ = _poly_arc_integrals(
-                            poly, dg, av, kv, phi0, slo, shi, ns, se, scj, sdj
+                            poly, dg, av, kv, phi0, cph, sph, slo, shi, ns, se, scj, sdj
                         )
                         s0 += a_
                         sc += b_
@@ -342,8 +342,9 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
                         for c in range(6):
                             moments[c] = 0.0
                         _poly_arc_moments(
-                            poly, dg, av, kv, phi0, slo, shi, ns, se, scj, sdj, moments
-                        )
+                            poly, dg, av, kv, phi0, cph, sph, slo, shi, ns, se, scj, sdj,
+                            moments,
+                        )  # fmt: skip
                         # chi (1, cos, sin): cos(phi - phiy) = cy cos(phi) + sy sin(phi)
                         s0 += alpha * moments[0] - beta * (cy * moments[1] + sy * moments[2])
                         sc += alpha * moments[1] - beta * (cy * moments[3] + sy * moments[4])

@@ -189,7 +189,7 @@ def load_jacobian(y, rings, bounds, coef, eps):
         phi0 = 0.0
         if yk == 0.0 or near_level(y0 - yk - hb, y0 + yk + hb, bounds):
             phiy = math.atan2(ys, yc)
-            phi0 = math.atan2(bs, bc)
+            phi0 = math.atan2(bs, bc) if kv > 0.0 else 0.0  # as cph, sph
         bmat[0, 0] = na
         bmat[1, 1] = nr
         bmat[1, 5] = q
@@ -270,7 +270,9 @@ def _region_moments(
     if beta == 0.0:
         for c in range(deg + 1):
             p[c] *= alpha
-        _poly_arc_moments(p, deg, av, kv, phi0, lo, hi, n, e, cj, dj, out)
+        cph = bc / kv if kv > 0.0 else 1.0  # cos(phi0), sin(phi0)
+        sph = bs / kv if kv > 0.0 else 0.0
+        _poly_arc_moments(p, deg, av, kv, phi0, cph, sph, lo, hi, n, e, cj, dj, out)
     else:
         _ramp_moments(p, deg, av, bc, bs, alpha, beta, phiy, lo, hi, n, gx, gw, out)
 
