@@ -312,6 +312,63 @@ def _poly_arc_moments(poly, deg, a, k, phi0, cph, sph, lo, hi, n, e, cj, dj, out
     out[5] += s * s * icc + 2.0 * c * s * ics + c * c * iss
 
 
+@nb.njit(cache=True)
+def _poly_arc_cubic_moments(poly, deg, a, k, phi0, cph, sph, lo, hi, n, e, cj, dj, out):
+    """Add to ``out[0:10]`` the integrals of ``P(V)`` times ``1, c, s, c^2, c s, s^2,
+    c^3, c^2 s, c s^2, s^3`` (``c, s = cos(phi), sin(phi)``) over the intervals, with
+    ``V = a + k cos(phi - phi0)``, ``P(V) = sum poly[i] V^i`` (i <= deg) and ``cph, sph
+    = cos(phi0), sin(phi0)``: :func:`_poly_arc_moments` one power further, for the band
+    ramps of the velocity Jacobian (:mod:`pencore.jacobian`), whose share ``chi`` adds
+    one factor of ``cos(phi - phiy)``. ``e, cj, dj`` are scratch of length >= deg + 4.
+
+    The moments ``M_pq`` of ``cos^p psi sin^q psi`` (``psi = phi - phi0``, p + q <= 3)
+    come from ``C_j`` (``cos^j``) and ``D_j`` (``cos^j sin``) with ``sin^2 = 1 - cos^2``;
+    ``c = C u - S v`` and ``s = S u + C v`` (``u, v = cos psi, sin psi``) take them back
+    to ``phi``."""
+    _taylor_shift(poly, deg, a, e)
+    m = np.zeros(10)  # M00, M10, M01, M20, M11, M02, M30, M21, M12, M03
+    for i in range(n):
+        if lo[i] == 0.0 and hi[i] == TWO_PI:
+            for j in range(deg + 4):
+                cj[j] = _full_circle_cos_power(j)
+                dj[j] = 0.0
+        else:
+            _cos_moments(lo[i] - phi0, hi[i] - phi0, deg + 4, deg + 3, cj, dj)
+        kp = 1.0
+        for j in range(deg + 1):
+            f = e[j] * kp
+            m[0] += f * cj[j]
+            m[1] += f * cj[j + 1]
+            m[2] += f * dj[j]
+            m[3] += f * cj[j + 2]
+            m[4] += f * dj[j + 1]
+            m[5] += f * (cj[j] - cj[j + 2])
+            m[6] += f * cj[j + 3]
+            m[7] += f * dj[j + 2]
+            m[8] += f * (cj[j + 1] - cj[j + 3])
+            m[9] += f * (dj[j] - dj[j + 2])
+            kp *= k
+    c, s = cph, sph
+    cc, ss, cs = c * c, s * s, c * s
+    out[0] += m[0]
+    out[1] += c * m[1] - s * m[2]
+    out[2] += s * m[1] + c * m[2]
+    out[3] += cc * m[3] - 2.0 * cs * m[4] + ss * m[5]
+    out[4] += cs * (m[3] - m[5]) + (cc - ss) * m[4]
+    out[5] += ss * m[3] + 2.0 * cs * m[4] + cc * m[5]
+    # (C u - S v)^3, (C u - S v)^2 (S u + C v), (C u - S v) (S u + C v)^2, (S u + C v)^3
+    out[6] += c * cc * m[6] - 3.0 * cc * s * m[7] + 3.0 * c * ss * m[8] - s * ss * m[9]
+    out[7] += (
+        cc * s * m[6] + (c * cc - 2.0 * c * ss) * m[7] + (s * ss - 2.0 * cc * s) * m[8]
+        + c * ss * m[9]
+    )  # fmt: skip
+    out[8] += (
+        c * ss * m[6] + (2.0 * cc * s - s * ss) * m[7] + (c * cc - 2.0 * c * ss) * m[8]
+        - cc * s * m[9]
+    )  # fmt: skip
+    out[9] += s * ss * m[6] + 3.0 * ss * c * m[7] + 3.0 * s * cc * m[8] + c * cc * m[9]
+
+
 @nb.njit(cache=True, inline="always")
 def band_regions(
     y0, yk, phiy, hb, top, bot, wl, l1lo, l1hi, l2lo, l2hi, blo, bhi, rlo, rhi, rn, rpar

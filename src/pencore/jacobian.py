@@ -26,10 +26,10 @@ the velocities. The arc integrals of ``G'`` times the six products of ``1, cos, 
 are closed form like the loads' (:mod:`pencore.arcs`).
 
 With the band immersion ramp (:mod:`pencore.dynamics`) ``G`` carries the band's share
-``chi(phi)``, which depends on the position only; the ramps of tilted rings are
-integrated by Gauss-Legendre quadrature (:func:`_ramp_moments`, to round-off), the
-rest in closed form (a whole ring's core without the trigonometry of arc ends:
-:func:`pencore.arcs._poly_centred_arc_moments`).
+``chi(phi)``, which depends on the position only; the ramps of tilted rings take one
+more power of ``cos, sin`` (:func:`_ramp_moments`), closed form as well, and a whole
+ring's core needs no trigonometry of arc ends
+(:func:`pencore.arcs._poly_centred_arc_moments`).
 
 The shank bands' step half-width depends on the lateral spin
 (:func:`pencore.bands.band_eps`), which adds ``-w B^T t (d epsr / d(w2, w3))`` to the
@@ -62,6 +62,7 @@ from .arcs import (
     TWO_PI,
     _intersect,
     _level_arc,
+    _poly_arc_cubic_moments,
     _poly_arc_moments,
     _poly_centred_arc_moments,
     band_regions,
@@ -87,40 +88,25 @@ __all__ = [
 ]
 
 
-#: Gauss points per piece (<= 45 degrees) of a band's ramp arcs: the integrand is a
-#: trigonometric polynomial of degree <= 5 there (soil, concrete), integrated to round-off
-_N_RAMP = 8
-#: their nodes and weights on [-1, 1], computed once (a compiled constant)
-_RAMP_X, _RAMP_W = np.polynomial.legendre.leggauss(_N_RAMP)
-
-
-@nb.njit(cache=True)
-def _ramp_moments(dpoly, deg, av, bc, bs, alpha, beta, phiy, lo, hi, n, gx, gw, out):
+@nb.njit(cache=True, inline="always")
+def _ramp_moments(dpoly, deg, av, kv, phi0, cph, sph, alpha, beta, phiy, lo, hi, n, e, cj,
+                  dj, out):  # fmt: skip
     """Add to ``out[0:6]`` the integrals of ``P(V) chi`` times ``1, cos, sin, cos^2,
-    cos sin, sin^2`` over the arcs, with ``V = av + bc cos + bs sin`` and the band share
-    ``chi = alpha - beta cos(phi - phiy)`` (:func:`pencore.arcs.band_regions`), by
-    Gauss-Legendre quadrature on pieces of at most 45 degrees."""
-    for m in range(n):
-        length = hi[m] - lo[m]
-        npieces = int(math.ceil(length / (0.25 * math.pi)))
-        h = length / npieces
-        for p in range(npieces):
-            a = lo[m] + p * h
-            for g in range(gx.shape[0]):
-                phi = a + 0.5 * h * (gx[g] + 1.0)
-                c = math.cos(phi)
-                s = math.sin(phi)
-                v = av + bc * c + bs * s
-                pv = 0.0
-                for k in range(deg, -1, -1):
-                    pv = pv * v + dpoly[k]
-                f = pv * (alpha - beta * math.cos(phi - phiy)) * 0.5 * h * gw[g]
-                out[0] += f
-                out[1] += f * c
-                out[2] += f * s
-                out[3] += f * c * c
-                out[4] += f * c * s
-                out[5] += f * s * s
+    cos sin, sin^2`` over the arcs, with ``V = av + kv cos(phi - phi0)`` and the band
+    share ``chi = alpha - beta cos(phi - phiy)`` (:func:`pencore.arcs.band_regions`),
+    in closed form from the moments of ``P(V)`` up to the third power of ``cos, sin``
+    (:func:`pencore.arcs._poly_arc_cubic_moments`)."""
+    m = np.zeros(10)
+    _poly_arc_cubic_moments(dpoly, deg, av, kv, phi0, cph, sph, lo, hi, n, e, cj, dj, m)
+    cy = math.cos(phiy)
+    sy = math.sin(phiy)
+    # chi m = alpha m - beta (cy cos + sy sin) m
+    out[0] += alpha * m[0] - beta * (cy * m[1] + sy * m[2])
+    out[1] += alpha * m[1] - beta * (cy * m[3] + sy * m[4])
+    out[2] += alpha * m[2] - beta * (cy * m[4] + sy * m[5])
+    out[3] += alpha * m[3] - beta * (cy * m[6] + sy * m[7])
+    out[4] += alpha * m[4] - beta * (cy * m[7] + sy * m[8])
+    out[5] += alpha * m[5] - beta * (cy * m[8] + sy * m[9])
 
 
 @nb.njit(cache=True)
@@ -169,7 +155,6 @@ def load_jacobian(y, rings, bounds, coef, eps):
     rhi = np.empty((4, _MAXI))
     rn = np.zeros(4, dtype=np.int64)
     rpar = np.empty((4, 3))
-    gx, gw = _RAMP_X, _RAMP_W
     rk = math.sqrt(rot[1, 1] ** 2 + rot[1, 2] ** 2)
     for i in range(rings.shape[0]):
         x1 = rings[i, 0]
@@ -240,14 +225,14 @@ def load_jacobian(y, rings, bounds, coef, eps):
                         dpoly[c] = (c + 1) * poly[c + 1]
                     _region_moments(
                         dpoly, ncoef - 1, av, bc, bs, kv, phi0, alpha, beta, phiy, slo, shi,
-                        ns, se, scj, sdj, gx, gw, mom,
+                        ns, se, scj, sdj, mom,
                     )  # fmt: skip
                     if rate > 0.0:
                         # d(side's G)/d(epsr) = -sgn V sigma(V) / (2 epsr^2), no end terms
                         _eps_poly(coef, lay, epsr, side, epoly)
                         _region_moments(
                             epoly, ncoef, av, bc, bs, kv, phi0, alpha, beta, phiy, slo, shi,
-                            ns, se, scj, sdj, gx, gw, emom,
+                            ns, se, scj, sdj, emom,
                         )  # fmt: skip
                 # S = [[1, c, s], [c, cc, cs], [s, cs, ss]]; the loads' Jacobian -w B^T S B
                 _add_btsb(out, na, nr, q, mom, -we)
@@ -259,22 +244,20 @@ def load_jacobian(y, rings, bounds, coef, eps):
 
 
 @nb.njit(cache=True, inline="always")
-def _region_moments(
-    p, deg, av, bc, bs, kv, phi0, alpha, beta, phiy, lo, hi, n, e, cj, dj, gx, gw, out
-):
+def _region_moments(p, deg, av, bc, bs, kv, phi0, alpha, beta, phiy, lo, hi, n, e, cj, dj, out):
     """Add to ``out[0:6]`` the moments of ``P(V) chi`` over the arcs of a band region
     (``chi = alpha - beta cos(phi - phiy)``, :func:`pencore.arcs.band_regions`). With
     ``beta = 0`` (a core, or a level band) ``chi = alpha`` is folded into ``p`` (which
     is scaled in place) and the moments are closed form, so a full ring's odd moments
     stay exactly 0; a ramp goes to :func:`_ramp_moments`."""
+    cph = bc / kv if kv > 0.0 else 1.0  # cos(phi0), sin(phi0)
+    sph = bs / kv if kv > 0.0 else 0.0
     if beta == 0.0:
         for c in range(deg + 1):
             p[c] *= alpha
-        cph = bc / kv if kv > 0.0 else 1.0  # cos(phi0), sin(phi0)
-        sph = bs / kv if kv > 0.0 else 0.0
         _poly_arc_moments(p, deg, av, kv, phi0, cph, sph, lo, hi, n, e, cj, dj, out)
     else:
-        _ramp_moments(p, deg, av, bc, bs, alpha, beta, phiy, lo, hi, n, gx, gw, out)
+        _ramp_moments(p, deg, av, kv, phi0, cph, sph, alpha, beta, phiy, lo, hi, n, e, cj, dj, out)
 
 
 @nb.njit(cache=True, inline="always")
