@@ -4,7 +4,9 @@ Outcome codes, the run record :class:`RunResult`, the stopping test, small compi
 helpers (LU solve, quaternion normalisation), SIGINT deferral, and the numba cache
 guard: numba keys a cached function on its own source file only, but the integrators
 inline the force kernels of other modules, so every kernel cache is dropped when any
-kernel source has changed (:func:`_invalidate_stale_caches`, run on import).
+kernel source has changed (:func:`_invalidate_stale_caches`, run on import), wherever
+numba keeps them (``__pycache__`` next to the sources, ``NUMBA_CACHE_DIR``, or the
+user-wide cache of a read-only install).
 """
 
 from __future__ import annotations
@@ -25,6 +27,7 @@ from .bands import band_half_height
 #: Modules whose compiled functions inline others' (their caches go stale together).
 KERNEL_MODULES = (
     "windows",
+    "bands",
     "arcs",
     "dynamics",
     "jacobian",
@@ -36,10 +39,34 @@ KERNEL_MODULES = (
 )
 
 
+def _kernel_cache_dir(here: Path) -> Path | None:
+    """The directory numba caches the kernels of ``here`` in: the first of its cache
+    locators that applies (``NUMBA_CACHE_DIR``, then ``__pycache__`` when writable,
+    then the user-wide cache), as :class:`numba.core.caching.CacheImpl` chooses."""
+    try:
+        from numba.core import caching
+
+        impl = getattr(caching, "CacheImpl", None) or caching._CacheImpl
+        classes = impl._locator_classes
+    except (ImportError, AttributeError):  # another numba layout: the default place
+        return here / "__pycache__"
+    source = str(here / "dynamics.py")
+    for cls in classes:
+        try:
+            locator = cls.from_function(_kernel_cache_dir, source)
+        except Exception:  # a locator that does not apply to a plain source file
+            continue
+        if locator is not None:
+            return Path(locator.get_cache_path())
+    return None
+
+
 def _invalidate_stale_caches() -> None:
     """Drop the numba caches of every kernel module when any kernel source changed."""
     here = Path(__file__).parent
-    cache_dir = here / "__pycache__"
+    cache_dir = _kernel_cache_dir(here)
+    if cache_dir is None:
+        return  # numba will not cache here either
     h = hashlib.sha256()
     for name in KERNEL_MODULES:
         f = here / f"{name}.py"
