@@ -305,3 +305,23 @@ def test_path_below_surface_clips_entry_and_skips_flight_above():
     # body axis 1 of a quarter turn about z: (1, 0, 0) -> (0, 1, 0); unnormalised input
     q = np.array([[2.0 * math.cos(math.pi / 4), 0.0, 0.0, 2.0 * math.sin(math.pi / 4)]])
     assert _axes(q)[0] == pytest.approx([0.0, 1.0, 0.0], abs=1e-15)
+
+
+def test_most_coefficients_the_kernels_hold_and_a_clear_error_beyond():
+    # zero-padding the soil law to MAX_COEFFICIENTS terms is the same law: the run must
+    # not change (an oblique entry exercises the ramps and the Jacobian's cubic moments,
+    # whose scratch is the tightest); one coefficient more is refused by name
+    from pencore.arcs import _MAXD
+    from pencore.target import MAX_COEFFICIENTS, TargetError
+
+    assert MAX_COEFFICIENTS + 4 <= _MAXD + 2
+    soil = MEDIA["soil"]
+    padded = Medium(
+        "soil-padded", soil.coefficients + (0.0,) * (MAX_COEFFICIENTS - len(soil.coefficients))
+    )
+    a = pencore.simulate("p2", Target("a", (Layer(soil),)), 600.0, 45.0)
+    b = pencore.simulate("p2", Target("b", (Layer(padded),)), 600.0, 45.0)
+    assert float(b.path_length) == pytest.approx(float(a.path_length), rel=1e-12)
+    assert float(b.final_deviation) == pytest.approx(float(a.final_deviation), rel=1e-9)
+    with pytest.raises(TargetError, match=r"9 resistance coefficients given.*at most 8"):
+        Medium("too-many", (1e7,) * 9)

@@ -61,6 +61,12 @@ from .validate import InputError, number
 __all__ = ["Medium", "Layer", "Target", "TargetError"]
 
 
+#: Most resistance coefficients a medium may have: the compiled kernels hold the stress
+#: polynomial, its smoothed step (one degree more) and the Jacobian's moments (three
+#: more) in arrays of ``pencore.arcs._MAXD + 2`` entries (tests/test_physics.py checks).
+MAX_COEFFICIENTS = 8
+
+
 class TargetError(InputError):
     """A target definition that cannot be used."""
 
@@ -114,6 +120,12 @@ class Medium:
         c = tuple(_check("coefficient", x, f"{what} a{i}") for i, x in enumerate(self.coefficients))
         if not c:
             raise TargetError(f"{what}: coefficients must be a non-empty list [a0, a1, a2, ...]")
+        if len(c) > MAX_COEFFICIENTS:
+            raise TargetError(
+                f"{what}: {len(c)} resistance coefficients given; the solver supports at "
+                f"most {MAX_COEFFICIENTS} (a0 .. a{MAX_COEFFICIENTS - 1}: a polynomial of "
+                f"degree {MAX_COEFFICIENTS - 1} in the normal velocity)"
+            )
         if not any(x > 0.0 for x in c):
             raise TargetError(
                 f"{what}: every resistance coefficient is zero, so nothing resists the "
