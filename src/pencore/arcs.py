@@ -178,6 +178,34 @@ def _poly_arc_integrals(poly, deg, a, k, phi0, cph, sph, lo, hi, n, e, cj, dj):
 
 
 @nb.njit(cache=True, inline="always")
+def _centred_cos_powers(a, k, level, nc, cj):
+    """``cj[j]``, j < nc: integral of ``cos^j psi`` over the arc ``|psi| <= h`` where
+    ``a + k cos(psi) >= level`` (``cos h = (level - a) / k``; the whole turn when that
+    is <= -1 or ``k = 0`` with ``a >= level``); False when the arc is empty. Only
+    ``acos`` is needed: ``sin h = sqrt(1 - cos^2 h)``, and the odd powers of a whole
+    turn come out as exact zeros (nc >= 2)."""
+    if k < 1e-300:
+        if a < level:
+            return False
+        ch, sh, h = -1.0, 0.0, math.pi
+    else:
+        c = (level - a) / k
+        if c > 1.0:
+            return False
+        if c <= -1.0:
+            ch, sh, h = -1.0, 0.0, math.pi
+        else:
+            ch, sh, h = c, math.sqrt(1.0 - c * c), math.acos(c)
+    cj[0] = 2.0 * h
+    cj[1] = 2.0 * sh
+    cp = ch  # cos^(j-1) h
+    for j in range(2, nc):
+        cj[j] = 2.0 * cp * sh / j + (j - 1) / j * cj[j - 2]
+        cp *= ch
+    return True
+
+
+@nb.njit(cache=True, inline="always")
 def _poly_centred_arc_integrals(poly, deg, a, k, cph, sph, level, e, cj):
     """:func:`_poly_arc_integrals` over the whole-ring arc where ``V >= level``, with
     ``V = a + k cos(phi - phi0)`` and ``cph, sph = cos(phi0), sin(phi0)``.
@@ -187,25 +215,9 @@ def _poly_centred_arc_integrals(poly, deg, a, k, cph, sph, level, e, cj):
     is known, ``sin h = sqrt(1 - cos^2 h)``); ``C_j`` is the integral of ``cos^j`` over
     it. The whole ring (``h = pi``) gives exact zeros for the odd ``C_j``. ``e, cj``
     are scratch of length >= deg + 2."""
-    if k < 1e-300:
-        if a < level:
-            return 0.0, 0.0, 0.0
-        ch, sh, h = -1.0, 0.0, math.pi
-    else:
-        c = (level - a) / k
-        if c > 1.0:
-            return 0.0, 0.0, 0.0
-        if c <= -1.0:
-            ch, sh, h = -1.0, 0.0, math.pi
-        else:
-            ch, sh, h = c, math.sqrt(1.0 - c * c), math.acos(c)
+    if not _centred_cos_powers(a, k, level, deg + 2, cj):
+        return 0.0, 0.0, 0.0
     _taylor_shift(poly, deg, a, e)
-    cj[0] = 2.0 * h
-    cj[1] = 2.0 * sh
-    cp = ch  # cos^(j-1) h
-    for j in range(2, deg + 2):
-        cj[j] = 2.0 * cp * sh / j + (j - 1) / j * cj[j - 2]
-        cp *= ch
     s0 = 0.0
     s1 = 0.0
     kp = 1.0
@@ -227,25 +239,9 @@ def _poly_centred_arc_moments(poly, deg, a, k, cph, sph, level, e, cj, out):
     symmetric about ``phi0``, so the moments with an odd power of ``sin(phi - phi0)``
     vanish and only ``acos`` is needed, not the trigonometry of arc ends and of
     ``phi0``. ``e, cj`` are scratch of length >= deg + 3."""
-    if k < 1e-300:
-        if a < level:
-            return
-        ch, sh, h = -1.0, 0.0, math.pi
-    else:
-        c = (level - a) / k
-        if c > 1.0:
-            return
-        if c <= -1.0:
-            ch, sh, h = -1.0, 0.0, math.pi
-        else:
-            ch, sh, h = c, math.sqrt(1.0 - c * c), math.acos(c)
+    if not _centred_cos_powers(a, k, level, deg + 3, cj):
+        return
     _taylor_shift(poly, deg, a, e)
-    cj[0] = 2.0 * h
-    cj[1] = 2.0 * sh
-    cp = ch  # cos^(j-1) h
-    for j in range(2, deg + 3):
-        cj[j] = 2.0 * cp * sh / j + (j - 1) / j * cj[j - 2]
-        cp *= ch
     i0 = ic = icc = iss = 0.0
     kp = 1.0
     for j in range(deg + 1):
@@ -275,6 +271,19 @@ def _full_circle_cos_power(j):
     return v
 
 
+@nb.njit(cache=True, inline="always")
+def _arc_cos_moments(lo, hi, phi0, nc, cj, dj):
+    """:func:`_cos_moments` of the arc ``[lo, hi]`` in ``psi = phi - phi0``: ``cj[j]``,
+    j < nc, and ``dj[j]``, j < nc - 1; a whole turn (``[0, 2 pi]``) exactly, so its odd
+    ``C_j`` and all ``D_j`` are zeros, not round-off."""
+    if lo == 0.0 and hi == TWO_PI:
+        for j in range(nc):
+            cj[j] = _full_circle_cos_power(j)
+            dj[j] = 0.0
+    else:
+        _cos_moments(lo - phi0, hi - phi0, nc, nc - 1, cj, dj)
+
+
 @nb.njit(cache=True)
 def _poly_arc_moments(poly, deg, a, k, phi0, cph, sph, lo, hi, n, e, cj, dj, out):
     """Add to ``out[0:6]`` the integrals of ``P(V)`` times ``1, cos, sin, cos^2,
@@ -285,12 +294,7 @@ def _poly_arc_moments(poly, deg, a, k, phi0, cph, sph, lo, hi, n, e, cj, dj, out
     # moments in psi = phi - phi0: cos^j psi (C_j) and cos^j psi sin psi (D_j)
     i0 = ic = isn = icc = ics = iss = 0.0
     for m in range(n):
-        if lo[m] == 0.0 and hi[m] == TWO_PI:
-            for j in range(deg + 3):
-                cj[j] = _full_circle_cos_power(j)
-                dj[j] = 0.0
-        else:
-            _cos_moments(lo[m] - phi0, hi[m] - phi0, deg + 3, deg + 2, cj, dj)
+        _arc_cos_moments(lo[m], hi[m], phi0, deg + 3, cj, dj)
         kp = 1.0
         for j in range(deg + 1):
             f = e[j] * kp
@@ -328,12 +332,7 @@ def _poly_arc_cubic_moments(poly, deg, a, k, phi0, cph, sph, lo, hi, n, e, cj, d
     _taylor_shift(poly, deg, a, e)
     m = np.zeros(10)  # M00, M10, M01, M20, M11, M02, M30, M21, M12, M03
     for i in range(n):
-        if lo[i] == 0.0 and hi[i] == TWO_PI:
-            for j in range(deg + 4):
-                cj[j] = _full_circle_cos_power(j)
-                dj[j] = 0.0
-        else:
-            _cos_moments(lo[i] - phi0, hi[i] - phi0, deg + 4, deg + 3, cj, dj)
+        _arc_cos_moments(lo[i], hi[i], phi0, deg + 4, cj, dj)
         kp = 1.0
         for j in range(deg + 1):
             f = e[j] * kp
