@@ -149,6 +149,21 @@ def near_level(lo, hi, bounds):
 
 
 @nb.njit(cache=True, inline="always")
+def arc_angles(need, yc, ys, bc, bs, kv):
+    """The angles of a ring's height and normal-velocity terms and the height's cosine
+    and sine, ``(phiy, phi0, cos phiy, sin phiy)``, when ``need``; else ``(0, 0, 1,
+    0)``. They orient partial arcs and ramps only: a band clear of every layer level
+    (:func:`near_level`) is loaded on whole-ring regions, whose centred integrals need
+    no angle, so their trigonometry is skipped there. ``phi0`` is 0 when ``kv = 0``,
+    as its cosine and sine ``(bc, bs) / kv`` are then taken to be ``(1, 0)``."""
+    if not need:
+        return 0.0, 0.0, 1.0, 0.0
+    phiy = math.atan2(ys, yc)
+    phi0 = math.atan2(bs, bc) if kv > 0.0 else 0.0
+    return phiy, phi0, math.cos(phiy), math.sin(phiy)
+
+
+@nb.njit(cache=True, inline="always")
 def side_poly(coef, lay, eps, side, poly):
     """Fill ``poly`` with the normal stress of layer ``lay`` on one side of the smoothed
     step, as a polynomial in ``Vn``; returns ``(level, degree)``: the stress applies
@@ -243,19 +258,9 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         q, av, bc, bs, kv = ring_velocity_terms(x1, r, na, nr, v1, v2, v3, w2, w3)
         cph = bc / kv if kv > 0.0 else 1.0  # cos(phi0), sin(phi0)
         sph = bs / kv if kv > 0.0 else 0.0
-        # the angles of the height and velocity terms orient partial arcs only: a band
-        # clear of every layer level, without friction, is loaded on whole-ring regions
-        # (the centred integrals), so their trigonometry is skipped there (the values
-        # below are then unused)
-        phiy = 0.0
-        phi0 = 0.0
-        cy = 1.0
-        sy = 0.0
-        if n_gauss > 0 or yk == 0.0 or near_level(y0 - yk - hb, high, bounds):
-            phiy = math.atan2(ys, yc)
-            phi0 = math.atan2(bs, bc) if kv > 0.0 else 0.0  # as cph, sph
-            cy = math.cos(phiy)
-            sy = math.sin(phiy)
+        # friction's quadrature points need the angles on every ring
+        need = n_gauss > 0 or yk == 0.0 or near_level(y0 - yk - hb, high, bounds)
+        phiy, phi0, cy, sy = arc_angles(need, yc, ys, bc, bs, kv)
         epsr, _ = band_eps(eps, r, na, w, w2, w3)
         for lay in range(nlay):
             if high < bounds[lay, 1]:

@@ -71,6 +71,7 @@ from .arcs import (
 from .bands import band_eps, band_half_height
 from .contact_points import point_loads
 from .dynamics import (
+    arc_angles,
     body_velocity,
     near_level,
     quat_to_matrix,
@@ -89,17 +90,15 @@ __all__ = [
 
 
 @nb.njit(cache=True, inline="always")
-def _ramp_moments(dpoly, deg, av, kv, phi0, cph, sph, alpha, beta, phiy, lo, hi, n, e, cj,
+def _ramp_moments(dpoly, deg, av, kv, phi0, cph, sph, alpha, beta, cy, sy, lo, hi, n, e, cj,
                   dj, out):  # fmt: skip
     """Add to ``out[0:6]`` the integrals of ``P(V) chi`` times ``1, cos, sin, cos^2,
     cos sin, sin^2`` over the arcs, with ``V = av + kv cos(phi - phi0)`` and the band
-    share ``chi = alpha - beta cos(phi - phiy)`` (:func:`pencore.arcs.band_regions`),
-    in closed form from the moments of ``P(V)`` up to the third power of ``cos, sin``
-    (:func:`pencore.arcs._poly_arc_cubic_moments`)."""
+    share ``chi = alpha - beta cos(phi - phiy)`` (:func:`pencore.arcs.band_regions`;
+    ``cy, sy = cos(phiy), sin(phiy)``), in closed form from the moments of ``P(V)`` up
+    to the third power of ``cos, sin`` (:func:`pencore.arcs._poly_arc_cubic_moments`)."""
     m = np.zeros(10)
     _poly_arc_cubic_moments(dpoly, deg, av, kv, phi0, cph, sph, lo, hi, n, e, cj, dj, m)
-    cy = math.cos(phiy)
-    sy = math.sin(phiy)
     # chi m = alpha m - beta (cy cos + sy sin) m
     out[0] += alpha * m[0] - beta * (cy * m[1] + sy * m[2])
     out[1] += alpha * m[1] - beta * (cy * m[3] + sy * m[4])
@@ -169,12 +168,8 @@ def load_jacobian(y, rings, bounds, coef, eps):
         q, av, bc, bs, kv = ring_velocity_terms(x1, r, na, nr, v1, v2, v3, w2, w3)
         cph = bc / kv if kv > 0.0 else 1.0  # cos(phi0), sin(phi0)
         sph = bs / kv if kv > 0.0 else 0.0
-        # as in pencore.dynamics.contact_loads: the angles orient partial arcs only
-        phiy = 0.0
-        phi0 = 0.0
-        if yk == 0.0 or near_level(y0 - yk - hb, y0 + yk + hb, bounds):
-            phiy = math.atan2(ys, yc)
-            phi0 = math.atan2(bs, bc) if kv > 0.0 else 0.0  # as cph, sph
+        need = yk == 0.0 or near_level(y0 - yk - hb, y0 + yk + hb, bounds)
+        phiy, phi0, cy, sy = arc_angles(need, yc, ys, bc, bs, kv)
         bmat[0, 0] = na
         bmat[1, 1] = nr
         bmat[1, 5] = q
@@ -200,17 +195,21 @@ def load_jacobian(y, rings, bounds, coef, eps):
                     emom[c] = 0.0
                 whole = rn[g] == 1 and rlo[g, 0] == 0.0 and rhi[g, 0] == TWO_PI
                 for side in range(2):
-                    # G on this side (pencore.dynamics.side_poly); dpoly is G'
+                    # G on this side (pencore.dynamics.side_poly); dpoly is G', epoly
+                    # d(side's G)/d(epsr) = -sgn V sigma(V) / (2 epsr^2), no end terms
                     level, _ = side_poly(coef, lay, epsr, side, poly)
+                    for c in range(ncoef):
+                        dpoly[c] = (c + 1) * poly[c + 1]
+                    if rate > 0.0:
+                        _eps_poly(coef, lay, epsr, side, epoly)
                     if whole and beta == 0.0:
-                        # a whole-ring core: the loaded arc is centred on phi0
+                        # a whole-ring core (chi = alpha): the loaded arc is centred on phi0
                         for c in range(ncoef):
-                            dpoly[c] = (c + 1) * poly[c + 1] * alpha
+                            dpoly[c] *= alpha
                         _poly_centred_arc_moments(
                             dpoly, ncoef - 1, av, kv, cph, sph, level, se, scj, mom
                         )
                         if rate > 0.0:
-                            _eps_poly(coef, lay, epsr, side, epoly)
                             for c in range(ncoef + 1):
                                 epoly[c] *= alpha
                             _poly_centred_arc_moments(
@@ -221,18 +220,14 @@ def load_jacobian(y, rings, bounds, coef, eps):
                     ns = _intersect(rlo[g], rhi[g], rn[g], vlo, vhi, nv, slo, shi)
                     if ns == 0:
                         continue
-                    for c in range(ncoef):
-                        dpoly[c] = (c + 1) * poly[c + 1]
                     _region_moments(
-                        dpoly, ncoef - 1, av, bc, bs, kv, phi0, alpha, beta, phiy, slo, shi,
-                        ns, se, scj, sdj, mom,
+                        dpoly, ncoef - 1, av, kv, phi0, cph, sph, alpha, beta, cy, sy, slo,
+                        shi, ns, se, scj, sdj, mom,
                     )  # fmt: skip
                     if rate > 0.0:
-                        # d(side's G)/d(epsr) = -sgn V sigma(V) / (2 epsr^2), no end terms
-                        _eps_poly(coef, lay, epsr, side, epoly)
                         _region_moments(
-                            epoly, ncoef, av, bc, bs, kv, phi0, alpha, beta, phiy, slo, shi,
-                            ns, se, scj, sdj, emom,
+                            epoly, ncoef, av, kv, phi0, cph, sph, alpha, beta, cy, sy, slo,
+                            shi, ns, se, scj, sdj, emom,
                         )  # fmt: skip
                 # S = [[1, c, s], [c, cc, cs], [s, cs, ss]]; the loads' Jacobian -w B^T S B
                 _add_btsb(out, na, nr, q, mom, -we)
@@ -244,20 +239,21 @@ def load_jacobian(y, rings, bounds, coef, eps):
 
 
 @nb.njit(cache=True, inline="always")
-def _region_moments(p, deg, av, bc, bs, kv, phi0, alpha, beta, phiy, lo, hi, n, e, cj, dj, out):
+def _region_moments(p, deg, av, kv, phi0, cph, sph, alpha, beta, cy, sy, lo, hi, n, e, cj, dj, out):
     """Add to ``out[0:6]`` the moments of ``P(V) chi`` over the arcs of a band region
-    (``chi = alpha - beta cos(phi - phiy)``, :func:`pencore.arcs.band_regions`). With
+    (``chi = alpha - beta cos(phi - phiy)``, :func:`pencore.arcs.band_regions`;
+    ``cph, sph`` and ``cy, sy`` the cosines and sines of ``phi0`` and ``phiy``). With
     ``beta = 0`` (a core, or a level band) ``chi = alpha`` is folded into ``p`` (which
     is scaled in place) and the moments are closed form, so a full ring's odd moments
     stay exactly 0; a ramp goes to :func:`_ramp_moments`."""
-    cph = bc / kv if kv > 0.0 else 1.0  # cos(phi0), sin(phi0)
-    sph = bs / kv if kv > 0.0 else 0.0
     if beta == 0.0:
         for c in range(deg + 1):
             p[c] *= alpha
         _poly_arc_moments(p, deg, av, kv, phi0, cph, sph, lo, hi, n, e, cj, dj, out)
     else:
-        _ramp_moments(p, deg, av, kv, phi0, cph, sph, alpha, beta, phiy, lo, hi, n, e, cj, dj, out)
+        _ramp_moments(
+            p, deg, av, kv, phi0, cph, sph, alpha, beta, cy, sy, lo, hi, n, e, cj, dj, out
+        )
 
 
 @nb.njit(cache=True, inline="always")
@@ -292,31 +288,29 @@ def _add_btsb(out, na, nr, q, mom, scale):
     a0 = scale * na
     a1 = scale * nr
     a4 = scale * q
-    m = np.empty(15)
-    m[0] = a0 * na * s00  # (0, 0)
-    m[1] = a0 * nr * s01  # (0, 1)
-    m[2] = a0 * nr * s02  # (0, 2)
-    m[3] = -a0 * q * s02  # (0, 4)
-    m[4] = a0 * q * s01  # (0, 5)
-    m[5] = a1 * nr * s11  # (1, 1)
-    m[6] = a1 * nr * s12  # (1, 2)
-    m[7] = -a1 * q * s12  # (1, 4)
-    m[8] = a1 * q * s11  # (1, 5)
-    m[9] = a1 * nr * s22  # (2, 2)
-    m[10] = -a1 * q * s22  # (2, 4)
-    m[11] = a1 * q * s12  # (2, 5)
-    m[12] = a4 * q * s22  # (4, 4)
-    m[13] = -a4 * q * s12  # (4, 5)
-    m[14] = a4 * q * s11  # (5, 5)
-    k = 0
-    for a in (0, 1, 2, 4, 5):
-        for b in (0, 1, 2, 4, 5):
-            if b < a:
-                continue
-            out[a, b] += m[k]
-            if b != a:
-                out[b, a] += m[k]
-            k += 1
+    _add_sym(out, 0, 0, a0 * na * s00)
+    _add_sym(out, 0, 1, a0 * nr * s01)
+    _add_sym(out, 0, 2, a0 * nr * s02)
+    _add_sym(out, 0, 4, -a0 * q * s02)
+    _add_sym(out, 0, 5, a0 * q * s01)
+    _add_sym(out, 1, 1, a1 * nr * s11)
+    _add_sym(out, 1, 2, a1 * nr * s12)
+    _add_sym(out, 1, 4, -a1 * q * s12)
+    _add_sym(out, 1, 5, a1 * q * s11)
+    _add_sym(out, 2, 2, a1 * nr * s22)
+    _add_sym(out, 2, 4, -a1 * q * s22)
+    _add_sym(out, 2, 5, a1 * q * s12)
+    _add_sym(out, 4, 4, a4 * q * s22)
+    _add_sym(out, 4, 5, -a4 * q * s12)
+    _add_sym(out, 5, 5, a4 * q * s11)
+
+
+@nb.njit(cache=True, inline="always")
+def _add_sym(out, a, b, v):
+    """``out[a, b] += v`` and, off the diagonal, ``out[b, a] += v``."""
+    out[a, b] += v
+    if a != b:
+        out[b, a] += v
 
 
 @nb.njit(cache=True)
