@@ -42,9 +42,7 @@ def test_centred_arc_equals_the_general_form(seed):
     s = np.zeros(12)
     cs = (math.cos(phi0), math.sin(phi0))
     ref = _poly_arc_integrals(poly, deg, a, k, phi0, *cs, lo, hi, n, s.copy(), s.copy(), s.copy())
-    got = _poly_centred_arc_integrals(
-        poly, deg, a, k, math.cos(phi0), math.sin(phi0), level, s.copy(), s.copy()
-    )
+    got = _poly_centred_arc_integrals(poly, deg, a, k, *cs, level, s.copy(), s.copy())
     scale = np.abs(poly).sum() * (abs(a) + k + 1.0) ** deg * TWO_PI
     assert np.allclose(got, ref, rtol=0.0, atol=1e-12 * scale)
 
@@ -66,8 +64,7 @@ def test_centred_moments_equal_the_general_form(seed):
     cs = (math.cos(phi0), math.sin(phi0))
     _poly_arc_moments(poly, deg, a, k, phi0, *cs, lo, hi, n, s.copy(), s.copy(), s.copy(), ref)
     got = np.zeros(6)
-    c0, s0 = math.cos(phi0), math.sin(phi0)
-    _poly_centred_arc_moments(poly, deg, a, k, c0, s0, level, s.copy(), s.copy(), got)
+    _poly_centred_arc_moments(poly, deg, a, k, *cs, level, s.copy(), s.copy(), got)
     scale = np.abs(poly).sum() * (abs(a) + k + 1.0) ** deg * TWO_PI
     assert np.allclose(got, ref, rtol=0.0, atol=1e-12 * scale)
     if seed % 10 == 1:
