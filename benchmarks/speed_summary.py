@@ -1,7 +1,8 @@
 """The four speed figures of issue 12 in one table, with the machine and its load.
 
 1. per-trajectory time of the benchmark case (``bench_trajectory.py``: wall, median,
-   and the fastest repeat);
+   and the fastest repeat), and what it would be with every right-hand side at the
+   arithmetic floor of the kernel (``bench_floor.py``);
 2. fresh process to first result with a cold and a warm kernel cache
    (``bench_startup.py``, read from ``results/startup.csv``; run it first);
 3. full reproduction: ``--reproduction-wall S`` when ``snakemake --cores 2 --forceall``
@@ -54,6 +55,15 @@ def main() -> None:
     rows.append(
         ("trajectory_best", traj["wall_s_min"] * 1e3, "ms", float("nan"),
          f"{traj['case']}; fastest of the repeats")
+    )  # fmt: skip
+    # how far the same discretisation could go: every right-hand side at the arithmetic
+    # floor of its kernel (bench_floor.py), all else as measured
+    fl = _json_of("bench_floor.py")
+    rows.append(
+        ("trajectory_floor_bound", fl["bound_ms"], "ms", 5.0,
+         f"{fl['case']}; best run with each of its {fl['rhs_calls']} right-hand sides at the "
+         f"arithmetic floor of the kernel ({fl['floor_us']:.2f} us against "
+         f"{fl['rhs_us']:.2f} us), all else as measured: bench_floor.py")
     )  # fmt: skip
     startup = pd.read_csv(HERE / "results" / "startup.csv").set_index("case")["wall_s"]
     for case in ("cold", "warm"):

@@ -1,0 +1,207 @@
+"""Where the benchmark trajectory's time goes, and the arithmetic floor of its kernel.
+
+Issue 12 asks for 5 ms per trajectory at the present accuracy. This benchmark splits the
+benchmark case (p2, soil, 45 deg, 1000 m/s, default numerics; the one of
+``bench_trajectory.py``) into its parts and measures how far the right-hand side could
+fall with the same discretisation:
+
+- ``rhs_us``: one call of the compiled right-hand side, averaged over the run's accepted
+  states (called from a compiled loop, so without Python's call overhead);
+- ``floor_us``: the same states through a kernel that does only the arithmetic no kernel
+  of this discretisation can skip: for every ring in contact, its normal-velocity terms,
+  its step polynomials and the closed-form integrals of its two smoothed-step sides over
+  the loaded arc as if the ring were wholly immersed (no layer levels, partial arcs,
+  ramps, windows or friction: those cost more, never less). Its loads equal the full
+  kernel's on an immersed state, which is checked and printed (``floor_check``);
+- ``jacobian_us``, and the calls and Jacobians of one run;
+- ``bound_ms``: the trajectory if every right-hand side cost only its floor and nothing
+  else changed; ``bound_bare_ms``: only the floor calls and the Dataset (no Jacobians,
+  no step control or linear algebra).
+
+Reported, never asserted. Run: python benchmarks/bench_floor.py [--json FILE]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import time
+
+import numba as nb
+import numpy as np
+
+import pencore
+from pencore.arcs import _MAXD, _poly_centred_arc_integrals, ring_height_terms
+from pencore.bands import band_eps, band_half_height
+from pencore.dynamics import (
+    body_velocity,
+    contact_loads,
+    quat_to_matrix,
+    ring_velocity_terms,
+    side_poly,
+)
+from pencore.forces import default_model, rhs_model
+from pencore.jacobian import model_load_jacobian
+from pencore.solver import _run, initial_state, prepare
+
+CASE = "p2, soil, obliquity 45 deg, 1000 m/s, default numerics"
+
+
+@nb.njit
+def floor_loads(y, rings, bounds, coef, eps):
+    """Force and moment (body frame, N and N m) from the floor arithmetic (see module
+    docstring): every ring in contact integrated as a whole immersed ring of layer 0."""
+    rot = quat_to_matrix(y[3:7])
+    v1, v2, v3 = body_velocity(rot, y)
+    w2, w3 = y[11], y[12]
+    r10, r11, r12 = rot[1, 0], rot[1, 1], rot[1, 2]
+    rk = math.sqrt(r11 * r11 + r12 * r12)
+    f = np.zeros(3)
+    mom = np.zeros(3)
+    polys = np.zeros((2, _MAXD))
+    levels = np.zeros(2)
+    se = np.zeros(_MAXD + 2)
+    scj = np.zeros(_MAXD + 2)
+    deg = 0
+    last = -1.0
+    top = bounds[0, 0]
+    for i in range(rings.shape[0]):
+        x1, r, na, nr, w = rings[i, 0], rings[i, 1], rings[i, 2], rings[i, 3], rings[i, 4]
+        y0, yk, _, _ = ring_height_terms(y[1], r10, r11, r12, x1, r)
+        if y0 - yk - band_half_height(r10, rk, r, na, nr, w) > top:
+            continue
+        q, av, bc, bs, kv = ring_velocity_terms(x1, r, na, nr, v1, v2, v3, w2, w3)
+        cph = bc / kv if kv > 0.0 else 1.0
+        sph = bs / kv if kv > 0.0 else 0.0
+        epsr, _ = band_eps(eps, r, na, w, w2, w3)
+        if epsr != last:  # the step polynomials, shared by bands of one step width
+            for side in range(2):
+                levels[side], deg = side_poly(coef, 0, epsr, side, polys[side])
+            last = epsr
+        s0 = sc = ss = 0.0
+        for side in range(2):
+            a_, b_, c_ = _poly_centred_arc_integrals(
+                polys[side], deg, av, kv, cph, sph, levels[side], se, scj
+            )
+            s0 += a_
+            sc += b_
+            ss += c_
+        f[0] -= w * na * s0
+        f[1] -= w * nr * sc
+        f[2] -= w * nr * ss
+        mom[1] += w * q * ss
+        mom[2] -= w * q * sc
+    return f, mom
+
+
+@nb.njit
+def _loop_floor(ys, reps, rings, bounds, coef, eps):
+    s = 0.0
+    for k in range(ys.shape[0]):
+        for _ in range(reps):
+            f, m = floor_loads(ys[k], rings, bounds, coef, eps)
+            s += f[0] + m[1]
+    return s
+
+
+@nb.njit
+def _loop_rhs(ys, reps, mass, inertia, g, rings, bounds, coef, fric, eps, model):
+    s = 0.0
+    for k in range(ys.shape[0]):
+        for _ in range(reps):
+            d, _ = rhs_model(ys[k], mass, inertia, g, rings, bounds, coef, fric, eps, 0, model)
+            s += d[7]
+    return s
+
+
+@nb.njit
+def _loop_jac(ys, reps, rings, bounds, coef, fric, eps, model):
+    s = 0.0
+    for k in range(ys.shape[0]):
+        for _ in range(reps):
+            s += model_load_jacobian(ys[k], rings, bounds, coef, fric, eps, model)[0, 0]
+    return s
+
+
+def _best(fn, n: int) -> float:
+    best = math.inf
+    for _ in range(n):
+        t = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t)
+    return best
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeats", type=int, default=20)
+    ap.add_argument("--json", help="also write the figures to this JSON file")
+    args = ap.parse_args()
+    os.environ.setdefault("NUMBA_NUM_THREADS", "1")
+
+    pr = prepare("p2", "soil")
+    eps = pr.numerics.eps
+    y0 = initial_state(
+        pr.projectile, pr.rings, 1000.0, math.radians(45.0), 0.0, 0.0, None, 0.0, "cm"
+    )
+    run = _run(pr, y0, 1000.0, False)
+    ys = run.ys
+    g = np.zeros(3)
+    model = default_model()
+    ker = (pr.rings, pr.bounds, pr.coef)
+
+    # the floor computes the full kernel's loads on an immersed state (last accepted)
+    f_full, m_full, _ = contact_loads(ys[-1], *ker, pr.fric, eps, 0)
+    f_floor, m_floor = floor_loads(ys[-1], *ker, eps)
+    scale = np.abs(np.concatenate([f_full, m_full])).max()
+    check = float(np.abs(np.concatenate([f_floor - f_full, m_floor - m_full])).max() / scale)
+
+    reps = 5
+    rhs_args = (pr.mass, pr.inertia, g, *ker, pr.fric, eps, model)
+    _loop_rhs(ys[:2], 1, *rhs_args)
+    _loop_floor(ys[:2], 1, *ker, eps)
+    _loop_jac(ys[:2], 1, *ker, pr.fric, eps, model)
+    per = ys.shape[0] * reps
+    rhs_us = _best(lambda: _loop_rhs(ys, reps, *rhs_args), 5) / per * 1e6
+    floor_us = _best(lambda: _loop_floor(ys, reps, *ker, eps), 5) / per * 1e6
+    jac_us = _best(lambda: _loop_jac(ys, reps, *ker, pr.fric, eps, model), 5) / per * 1e6
+    run_ms = _best(lambda: _run(pr, y0, 1000.0, False), args.repeats) * 1e3
+    sim_ms = (
+        _best(
+            lambda: pencore.simulate("p2", "soil", 1000.0, obliquity=45.0, prepared=pr),
+            args.repeats,
+        )
+        * 1e3
+    )
+    n_rhs, n_jac = run.n_rhs, run.n_jacobians
+    rhs_ms = n_rhs * rhs_us / 1e3
+    jac_ms = n_jac * jac_us / 1e3
+    out = {
+        "case": CASE,
+        "simulate_ms_best": sim_ms,
+        "integration_ms_best": run_ms,
+        "dataset_and_setup_ms": sim_ms - run_ms,
+        "rhs_calls": n_rhs,
+        "jacobians": n_jac,
+        "accepted_steps": int(ys.shape[0] - 1),
+        "rhs_us": rhs_us,
+        "jacobian_us": jac_us,
+        "rhs_total_ms": rhs_ms,
+        "jacobian_total_ms": jac_ms,
+        "step_control_and_linear_algebra_ms": run_ms - rhs_ms - jac_ms,
+        "floor_us": floor_us,
+        "floor_check_relative": check,
+        "bound_ms": sim_ms - n_rhs * (rhs_us - floor_us) / 1e3,
+        "bound_bare_ms": n_rhs * floor_us / 1e3 + (sim_ms - run_ms),
+    }
+    for k, v in out.items():
+        print(f"{k:40s} {v:.4g}" if isinstance(v, float) else f"{k:40s} {v}")
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(out, f, indent=2)
+
+
+if __name__ == "__main__":
+    main()
