@@ -29,6 +29,7 @@ KERNEL_MODULES = (
     "windows",
     "bands",
     "arcs",
+    "friction",
     "dynamics",
     "jacobian",
     "contact_points",
