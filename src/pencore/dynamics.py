@@ -240,6 +240,15 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
     rpar = np.empty((4, 3))  # alpha, beta, signed area weight
     nside = 1 if eps <= 0.0 else 2
     gx, gw = _leggauss(n_gauss)
+    # whole-ring fast path: one layer, no depth windows, no friction; a band clear of
+    # the layer's levels is then either out of contact or a whole ring of it (alpha 1),
+    # so the region sets are not built; its step polynomials are those of the last band
+    # with the same step width (same operations as the general path: bit-identical)
+    simple = nlay == 1 and bounds.shape[1] < 5 and n_gauss <= 0
+    wpolys = np.zeros((2, _MAXD))
+    wlevel = np.zeros(2)
+    wdeg = 0
+    weps = np.nan
 
     rk = math.sqrt(r11 * r11 + r12 * r12)  # |d(height)/d(radius)| of a ring point
     for i in range(rings.shape[0]):
@@ -261,8 +270,31 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         sph = bs / kv if kv > 0.0 else 0.0
         # friction's quadrature points need the angles on every ring
         need = n_gauss > 0 or yk == 0.0 or near_level(y0 - yk - hb, high, bounds)
-        phiy, phi0, cy, sy = arc_angles(need, yc, ys, bc, bs, kv)
         epsr, _ = band_eps(eps, r, na, w, w2, w3)
+        if simple and not need:
+            if high < bounds[0, 1]:
+                continue  # wholly below a plate's bottom face
+            if epsr != weps:
+                for side in range(nside):
+                    wlevel[side], wdeg = side_poly(coef, 0, epsr, side, wpolys[side])
+                weps = epsr
+            s0 = 0.0
+            sc = 0.0
+            ss = 0.0
+            for side in range(nside):
+                a_, b_, c_ = _poly_centred_arc_integrals(
+                    wpolys[side], wdeg, av, kv, cph, sph, wlevel[side], se, scj
+                )
+                s0 += a_
+                sc += b_
+                ss += c_
+            f[0] -= w * na * s0
+            f[1] -= w * nr * sc
+            f[2] -= w * nr * ss
+            mom[1] += w * q * ss
+            mom[2] -= w * q * sc
+            continue
+        phiy, phi0, cy, sy = arc_angles(need, yc, ys, bc, bs, kv)
         for lay in range(nlay):
             if high < bounds[lay, 1]:
                 continue  # wholly below this layer
