@@ -13,10 +13,16 @@ fall with the same discretisation:
   the loaded arc as if the ring were wholly immersed (no layer levels, partial arcs,
   ramps, windows or friction: those cost more, never less). Its loads equal the full
   kernel's on an immersed state, which is checked and printed (``floor_check``);
+- ``floor_simd_us``: the same arithmetic written for the vector units (the rings as
+  columns, branch-free passes the compiler vectorises, ``acos`` in a scalar pass of its
+  own: numba's vector ``acos`` needs Intel's SVML, which llvmlite's wheels are built
+  without). Written for the benchmark's three-term soil law; it computes the same loads
+  to round-off (reassociated sums);
 - ``jacobian_us``, and the calls and Jacobians of one run;
 - ``bound_ms``: the trajectory if every right-hand side cost only its floor and nothing
   else changed; ``bound_bare_ms``: only the floor calls and the Dataset (no Jacobians,
-  no step control or linear algebra).
+  no step control or linear algebra); ``bound_simd_ms``: as ``bound_ms`` with the
+  vectorised floor.
 
 Every figure is the fastest of interleaved rounds (the host's speed drifts). Reported,
 never asserted. Run: python benchmarks/bench_floor.py [--rounds N] [--json FILE]
@@ -97,6 +103,91 @@ def floor_loads(y, rings, bounds, coef, eps):
     return f, mom
 
 
+@nb.njit(fastmath=True)
+def floor_loads_simd(y, cols, top, coef, eps, buf):
+    """:func:`floor_loads` for a three-term law ``a0 + a1 V + a2 V^2`` with the rings as
+    columns ``cols = rings.T`` (contiguous) and scratch ``buf`` (9, n): the per-ring
+    work in branch-free passes over all rings (out-of-contact rings masked), which the
+    compiler vectorises, and ``acos`` in a scalar pass."""
+    rot = quat_to_matrix(y[3:7])
+    v1, v2, v3 = body_velocity(rot, y)
+    w2, w3 = y[11], y[12]
+    r10, r11, r12 = rot[1, 0], rot[1, 1], rot[1, 2]
+    rk = math.sqrt(r11 * r11 + r12 * r12)
+    a0, a1, a2 = coef[0, 0], coef[0, 1], coef[0, 2]
+    x1, r, na, nr, w = cols[0], cols[1], cols[2], cols[3], cols[4]
+    av, kv, ep, cc, hh, mk, q, cph, sph = (
+        buf[0],
+        buf[1],
+        buf[2],
+        buf[3],
+        buf[4],
+        buf[5],
+        buf[6],
+        buf[7],
+        buf[8],
+    )
+    wsp = math.sqrt(w2 * w2 + w3 * w3)
+    n = x1.shape[0]
+    for i in range(n):
+        hb = 0.5 * (w[i] / r[i]) * (abs(r10 * nr[i]) + abs(na[i]) * rk)
+        mk[i] = 1.0 if y[1] + r10 * x1[i] - rk * r[i] - hb <= top else 0.0
+        q[i] = nr[i] * x1[i] - na[i] * r[i]
+        av[i] = na[i] * v1
+        bc = nr[i] * v2 + w3 * q[i]
+        bs = nr[i] * v3 - w2 * q[i]
+        kv[i] = math.sqrt(bc * bc + bs * bs) + 1e-300
+        cph[i] = bc / kv[i]
+        sph[i] = bs / kv[i]
+        s = 0.5 * w[i] / r[i] * wsp  # band_eps on shank bands (na = 0)
+        ep[i] = math.sqrt(eps * eps + s * s) if na[i] == 0.0 else eps
+    f0 = f1 = f2 = m1 = m2 = 0.0
+    for side in range(2):
+        sg = 1.0 if side == 0 else -1.0
+        for i in range(n):
+            cc[i] = min(max((-sg * ep[i] - av[i]) / kv[i], -1.0), 1.0)
+        for i in range(n):
+            hh[i] = math.acos(cc[i])
+        for i in range(n):
+            # side's G(V) = sg (V - L) sigma(V) / (2 eps), L = -sg eps: Taylor
+            # coefficients at av, times the integrals C_j of cos^j over |psi| <= h
+            lev = -sg * ep[i]
+            ch = cc[i]
+            sh = math.sqrt(1.0 - ch * ch)
+            c0 = 2.0 * hh[i]
+            c1 = 2.0 * sh
+            c2 = ch * sh + 0.5 * c0
+            c3 = 2.0 * ch * ch * sh / 3.0 + (2.0 / 3.0) * c1
+            c4 = 0.5 * ch * ch * ch * sh + 0.75 * c2
+            q2 = a1 - lev * a2
+            q1 = a0 - lev * a1
+            a = av[i]
+            k = kv[i]
+            e0 = ((a2 * a + q2) * a + q1) * a - lev * a0
+            e1 = ((3.0 * a2 * a + 2.0 * q2) * a + q1) * k
+            e2 = (3.0 * a2 * a + q2) * k * k
+            e3 = a2 * k * k * k
+            g = sg * 0.5 / ep[i] * w[i] * mk[i]
+            s0 = g * (e0 * c0 + e1 * c1 + e2 * c2 + e3 * c3)
+            s1 = g * (e0 * c1 + e1 * c2 + e2 * c3 + e3 * c4)
+            f0 -= na[i] * s0
+            f1 -= nr[i] * s1 * cph[i]
+            f2 -= nr[i] * s1 * sph[i]
+            m1 += q[i] * s1 * sph[i]
+            m2 -= q[i] * s1 * cph[i]
+    return np.array([f0, f1, f2]), np.array([0.0, m1, m2])
+
+
+@nb.njit
+def _loop_simd(ys, reps, cols, top, coef, eps, buf):
+    s = 0.0
+    for k in range(ys.shape[0]):
+        for _ in range(reps):
+            f, m = floor_loads_simd(ys[k], cols, top, coef, eps, buf)
+            s += f[0] + m[1]
+    return s
+
+
 @nb.njit
 def _loop_floor(ys, reps, rings, bounds, coef, eps):
     s = 0.0
@@ -160,11 +251,20 @@ def main() -> None:
     scale = np.abs(np.concatenate([f_full, m_full])).max()
     check = float(np.abs(np.concatenate([f_floor - f_full, m_floor - m_full])).max() / scale)
 
+    if pr.coef.shape != (1, 3) or not math.isinf(pr.bounds[0, 1]):
+        raise SystemExit("bench_floor: the vectorised floor is written for one three-term layer")
+    cols = np.ascontiguousarray(pr.rings.T)
+    buf = np.zeros((9, cols.shape[1]))
+    top = pr.bounds[0, 0]
+    f_simd, m_simd = floor_loads_simd(ys[-1], cols, top, pr.coef, eps, buf)
+    check_simd = float(np.abs(np.concatenate([f_simd - f_full, m_simd - m_full])).max() / scale)
+
     reps = 5
     rhs_args = (pr.mass, pr.inertia, g, *ker, pr.fric, eps, model)
     _loop_rhs(ys[:2], 1, *rhs_args)
     _loop_floor(ys[:2], 1, *ker, eps)
     _loop_jac(ys[:2], 1, *ker, pr.fric, eps, model)
+    _loop_simd(ys[:2], 1, cols, top, pr.coef, eps, buf)
     per = ys.shape[0] * reps
 
     def sim() -> None:
@@ -172,16 +272,20 @@ def main() -> None:
 
     # the host's speed drifts between moments: every figure is measured in each of the
     # rounds, interleaved, and the fastest of each is kept (the least disturbed)
-    best = {"rhs": math.inf, "floor": math.inf, "jac": math.inf, "run": math.inf, "sim": math.inf}
+    best = dict.fromkeys(("rhs", "floor", "simd", "jac", "run", "sim"), math.inf)
     for _ in range(args.rounds):
         best["rhs"] = min(best["rhs"], _best(lambda: _loop_rhs(ys, reps, *rhs_args), 3) / per)
         best["floor"] = min(best["floor"], _best(lambda: _loop_floor(ys, reps, *ker, eps), 3) / per)
+        best["simd"] = min(
+            best["simd"], _best(lambda: _loop_simd(ys, reps, cols, top, pr.coef, eps, buf), 3) / per
+        )
         best["jac"] = min(
             best["jac"], _best(lambda: _loop_jac(ys, reps, *ker, pr.fric, eps, model), 3) / per
         )
         best["run"] = min(best["run"], _best(lambda: _run(pr, y0, 1000.0, False), args.repeats))
         best["sim"] = min(best["sim"], _best(sim, args.repeats))
     rhs_us, floor_us, jac_us = best["rhs"] * 1e6, best["floor"] * 1e6, best["jac"] * 1e6
+    simd_us = best["simd"] * 1e6
     run_ms, sim_ms = best["run"] * 1e3, best["sim"] * 1e3
     n_rhs, n_jac = run.n_rhs, run.n_jacobians
     rhs_ms = n_rhs * rhs_us / 1e3
@@ -201,8 +305,11 @@ def main() -> None:
         "step_control_and_linear_algebra_ms": run_ms - rhs_ms - jac_ms,
         "floor_us": floor_us,
         "floor_check_relative": check,
+        "floor_simd_us": simd_us,
+        "floor_simd_check_relative": check_simd,
         "bound_ms": sim_ms - n_rhs * (rhs_us - floor_us) / 1e3,
         "bound_bare_ms": n_rhs * floor_us / 1e3 + (sim_ms - run_ms),
+        "bound_simd_ms": sim_ms - n_rhs * (rhs_us - simd_us) / 1e3,
     }
     for k, v in out.items():
         print(f"{k:40s} {v:.4g}" if isinstance(v, float) else f"{k:40s} {v}")

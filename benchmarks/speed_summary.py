@@ -65,6 +65,11 @@ def main() -> None:
          f"arithmetic floor of the kernel ({fl['floor_us']:.2f} us against "
          f"{fl['rhs_us']:.2f} us), all else as measured: bench_floor.py")
     )  # fmt: skip
+    rows.append(
+        ("trajectory_floor_simd_bound", fl["bound_simd_ms"], "ms", 5.0,
+         f"{fl['case']}; as trajectory_floor_bound with the vectorised floor "
+         f"({fl['floor_simd_us']:.2f} us a call; acos scalar): bench_floor.py")
+    )  # fmt: skip
     startup = pd.read_csv(HERE / "results" / "startup.csv").set_index("case")["wall_s"]
     for case in ("cold", "warm"):
         note = (
