@@ -69,3 +69,42 @@ def test_fast_path_equals_general_path(target, velocity, obliquity):
             below += ys[k][1] < pr.bounds[0, 1] - 0.2
     if np.isfinite(pr.bounds[0, 1]):
         assert below > 0, "no state with the nose through the plate was checked"
+
+
+@pytest.mark.parametrize("ncoef", [1, 3, 8])
+@pytest.mark.parametrize("eps", [1e-3, 0.0])
+def test_whole_ring_integrals_equal_one_ring_form(ncoef, eps):
+    """:func:`pencore.wholering.whole_ring_integrals` (rings innermost, vectorised) gives
+    bit for bit what :func:`pencore.arcs._poly_centred_arc_integrals` gives ring by ring
+    and side by side, for laws of 1 to 8 terms, the smoothed and the sharp step, and
+    rings unloaded (empty arc), wholly loaded, partly loaded and without lateral
+    velocity (``kv = 0``, above and below the level), with mixed step widths."""
+    from pencore.arcs import _MAXD, _poly_centred_arc_integrals, side_poly
+    from pencore.wholering import whole_ring_integrals
+
+    rng = np.random.default_rng(ncoef)
+    coef = rng.uniform(0.5, 2.0, (1, ncoef)) * 10.0 ** np.arange(ncoef)[::-1]
+    n = 40
+    av = rng.uniform(-3.0, 3.0, n)
+    kv = rng.uniform(0.0, 3.0, n)
+    av[:4] = [5.0, -5.0, 2e-4, -2e-4]  # wholly loaded, unloaded, near the step
+    kv[:4] = [1.0, 1.0, 0.0, 0.0]  # the last two without lateral velocity
+    ang = rng.uniform(-np.pi, np.pi, n)
+    epsr = np.where(rng.uniform(size=n) < 0.5, eps, np.sqrt(eps**2 + 1e-6)) if eps else 0.0
+    tab = np.vstack([av, kv, np.cos(ang), np.sin(ang), np.broadcast_to(epsr, n)])
+    nside = 2 if eps > 0 else 1
+    out = np.empty((3, n))
+    whole_ring_integrals(np.ascontiguousarray(tab), n, coef, nside, out)
+    poly = np.zeros(_MAXD)
+    se = np.zeros(_MAXD + 2)
+    scj = np.zeros(_MAXD + 2)
+    for m in range(n):
+        s = [0.0, 0.0, 0.0]
+        for side in range(nside):
+            level, deg = side_poly(coef, 0, tab[4, m], side, poly)
+            r = _poly_centred_arc_integrals(
+                poly, deg, av[m], kv[m], tab[2, m], tab[3, m], level, se, scj
+            )
+            s = [s[0] + r[0], s[1] + r[1], s[2] + r[2]]
+        np.testing.assert_array_equal(out[:, m], s)
+    assert np.any(out[0] == 0.0) and np.any(out[0] != 0.0)

@@ -106,6 +106,29 @@ def ring_height_terms(ycm, r10, r11, r12, x1, r):
     return y0, yk, yc, ys
 
 
+@nb.njit(cache=True, inline="always")
+def side_poly(coef, lay, eps, side, poly):
+    """Fill ``poly`` with the normal stress of layer ``lay`` on one side of the smoothed
+    step, as a polynomial in ``Vn``; returns ``(level, degree)``: the stress applies
+    where ``Vn >= level``. ``eps = 0``: ``sigma(V)`` from 0 (one side). ``eps > 0``: the
+    step ``H_eps sigma`` is the side-0 term ``(V + eps) sigma / (2 eps)`` on
+    ``V >= -eps`` minus the side-1 term ``(V - eps) sigma / (2 eps)`` on ``V >= eps``."""
+    ncoef = coef.shape[1]
+    if eps <= 0.0:
+        for c in range(ncoef):
+            poly[c] = coef[lay, c]
+        return 0.0, ncoef - 1
+    inv = 0.5 / eps
+    level = -eps if side == 0 else eps
+    sgn = 1.0 if side == 0 else -1.0
+    for c in range(ncoef + 1):
+        poly[c] = 0.0
+    for c in range(ncoef):
+        poly[c + 1] += sgn * inv * coef[lay, c]
+        poly[c] += -sgn * inv * level * coef[lay, c]
+    return level, ncoef
+
+
 # ---------------------------------------------------------------- closed-form arc integrals
 
 

@@ -80,9 +80,11 @@ from .arcs import (
     _poly_arc_moments,
     _poly_centred_arc_integrals,
     ring_height_terms,
+    side_poly,
 )
 from .bands import band_eps, band_half_height
 from .friction import _friction_ring, _leggauss
+from .wholering import whole_ring_integrals
 from .windows import depth_factor
 
 # ---------------------------------------------------------------- rotations
@@ -164,29 +166,6 @@ def arc_angles(need, yc, ys, bc, bs, kv):
     return phiy, phi0, math.cos(phiy), math.sin(phiy)
 
 
-@nb.njit(cache=True, inline="always")
-def side_poly(coef, lay, eps, side, poly):
-    """Fill ``poly`` with the normal stress of layer ``lay`` on one side of the smoothed
-    step, as a polynomial in ``Vn``; returns ``(level, degree)``: the stress applies
-    where ``Vn >= level``. ``eps = 0``: ``sigma(V)`` from 0 (one side). ``eps > 0``: the
-    step ``H_eps sigma`` is the side-0 term ``(V + eps) sigma / (2 eps)`` on
-    ``V >= -eps`` minus the side-1 term ``(V - eps) sigma / (2 eps)`` on ``V >= eps``."""
-    ncoef = coef.shape[1]
-    if eps <= 0.0:
-        for c in range(ncoef):
-            poly[c] = coef[lay, c]
-        return 0.0, ncoef - 1
-    inv = 0.5 / eps
-    level = -eps if side == 0 else eps
-    sgn = 1.0 if side == 0 else -1.0
-    for c in range(ncoef + 1):
-        poly[c] = 0.0
-    for c in range(ncoef):
-        poly[c + 1] += sgn * inv * coef[lay, c]
-        poly[c] += -sgn * inv * level * coef[lay, c]
-    return level, ncoef
-
-
 @nb.njit(cache=True)
 def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
     """Resultant contact force and moment.
@@ -242,16 +221,16 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
     gx, gw = _leggauss(n_gauss)
     # whole-ring fast path: one layer, no depth windows, no friction; a band clear of
     # the layer's levels is then either out of contact or a whole ring of it (alpha 1),
-    # so the region sets are not built; its step polynomials are those of the last band
-    # with the same step width (same operations as the general path: bit-identical)
+    # so no region sets are built and its integrals are done for all such rings at once
+    # (pencore.wholering, vectorised; same operations per ring: bit-identical)
     simple = nlay == 1 and bounds.shape[1] < 5 and n_gauss <= 0
-    wpolys = np.zeros((2, _MAXD))
-    wlevel = np.zeros(2)
-    wdeg = 0
-    weps = np.nan
-
+    n = rings.shape[0]
+    geo = np.empty((14, n))  # per ring: y0 yk yc ys hb q av bc bs kv cph sph epsr need
+    kind = np.empty(n, dtype=np.int64)  # -1 out of contact, -2 general, else fast slot
+    tab = np.empty((5, n))  # the fast rings' av, kv, cos/sin(phi0), epsr
+    nf = 0
     rk = math.sqrt(r11 * r11 + r12 * r12)  # |d(height)/d(radius)| of a ring point
-    for i in range(rings.shape[0]):
+    for i in range(n):
         x1 = rings[i, 0]
         r = rings[i, 1]
         na = rings[i, 2]
@@ -262,6 +241,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         low = y0 - yk - hb
         if low < clearance:
             clearance = low
+        kind[i] = -1
         if low > bounds[0, 0]:
             continue
         high = y0 + yk + hb
@@ -274,26 +254,58 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         if simple and not need:
             if high < bounds[0, 1]:
                 continue  # wholly below a plate's bottom face
-            if epsr != weps:
-                for side in range(nside):
-                    wlevel[side], wdeg = side_poly(coef, 0, epsr, side, wpolys[side])
-                weps = epsr
-            s0 = 0.0
-            sc = 0.0
-            ss = 0.0
-            for side in range(nside):
-                a_, b_, c_ = _poly_centred_arc_integrals(
-                    wpolys[side], wdeg, av, kv, cph, sph, wlevel[side], se, scj
-                )
-                s0 += a_
-                sc += b_
-                ss += c_
+            kind[i] = nf
+            tab[0, nf] = av
+            tab[1, nf] = kv
+            tab[2, nf] = cph
+            tab[3, nf] = sph
+            tab[4, nf] = epsr
+            nf += 1
+        else:
+            kind[i] = -2
+        geo[0, i] = y0
+        geo[1, i] = yk
+        geo[2, i] = yc
+        geo[3, i] = ys
+        geo[4, i] = hb
+        geo[5, i] = q
+        geo[6, i] = av
+        geo[7, i] = bc
+        geo[8, i] = bs
+        geo[9, i] = kv
+        geo[10, i] = cph
+        geo[11, i] = sph
+        geo[12, i] = epsr
+        geo[13, i] = 1.0 if need else 0.0
+    wint = np.empty((3, nf))
+    if nf > 0:
+        whole_ring_integrals(tab, nf, coef, nside, wint)
+
+    # the loads in ring order (the order of the sums is that of the one-ring loop)
+    for i in range(n):
+        if kind[i] == -1:
+            continue
+        x1 = rings[i, 0]
+        r = rings[i, 1]
+        na = rings[i, 2]
+        nr = rings[i, 3]
+        w = rings[i, 4]
+        q = geo[5, i]
+        if kind[i] >= 0:
+            s0 = wint[0, kind[i]]
+            sc = wint[1, kind[i]]
+            ss = wint[2, kind[i]]
             f[0] -= w * na * s0
             f[1] -= w * nr * sc
             f[2] -= w * nr * ss
             mom[1] += w * q * ss
             mom[2] -= w * q * sc
             continue
+        y0, yk, yc, ys, hb = geo[0, i], geo[1, i], geo[2, i], geo[3, i], geo[4, i]
+        av, bc, bs, kv = geo[6, i], geo[7, i], geo[8, i], geo[9, i]
+        cph, sph, epsr = geo[10, i], geo[11, i], geo[12, i]
+        high = y0 + yk + hb
+        need = geo[13, i] != 0.0
         phiy, phi0, cy, sy = arc_angles(need, yc, ys, bc, bs, kv)
         for lay in range(nlay):
             if high < bounds[lay, 1]:

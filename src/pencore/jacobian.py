@@ -67,6 +67,7 @@ from .arcs import (
     _poly_centred_arc_moments,
     band_regions,
     ring_height_terms,
+    side_poly,
 )
 from .bands import band_eps, band_half_height
 from .contact_points import point_loads
@@ -76,7 +77,6 @@ from .dynamics import (
     near_level,
     quat_to_matrix,
     ring_velocity_terms,
-    side_poly,
 )
 from .models import SHANK_CAVITY, SURFACE_PANELS
 from .windows import depth_factor
@@ -195,7 +195,7 @@ def load_jacobian(y, rings, bounds, coef, eps):
                     emom[c] = 0.0
                 whole = rn[g] == 1 and rlo[g, 0] == 0.0 and rhi[g, 0] == TWO_PI
                 for side in range(2):
-                    # G on this side (pencore.dynamics.side_poly); dpoly is G', epoly
+                    # G on this side (pencore.arcs.side_poly); dpoly is G', epoly
                     # d(side's G)/d(epsr) = -sgn V sigma(V) / (2 epsr^2), no end terms
                     level, _ = side_poly(coef, lay, epsr, side, poly)
                     for c in range(ncoef):
@@ -258,7 +258,7 @@ def _region_moments(p, deg, av, kv, phi0, cph, sph, alpha, beta, cy, sy, lo, hi,
 
 @nb.njit(cache=True, inline="always")
 def _eps_poly(coef, lay, eps, side, epoly):
-    """Fill ``epoly`` with the derivative of :func:`pencore.dynamics.side_poly`'s
+    """Fill ``epoly`` with the derivative of :func:`pencore.arcs.side_poly`'s
     polynomial with respect to ``eps``: ``-sgn V sigma(V) / (2 eps^2)`` (degree
     ``ncoef``; ``sgn`` +1 on side 0, -1 on side 1)."""
     ncoef = coef.shape[1]

@@ -30,6 +30,7 @@ KERNEL_MODULES = (
     "bands",
     "arcs",
     "friction",
+    "wholering",
     "dynamics",
     "jacobian",
     "contact_points",

@@ -1,0 +1,123 @@
+"""Normal-stress integrals of whole immersed rings, all rings at once (numba).
+
+A ring wholly inside one layer, clear of its levels, is loaded on the arc
+``|phi - phi0| <= h`` where its normal velocity ``V = av + kv cos(phi - phi0)`` is
+above each side's level of the smoothed step (:func:`pencore.arcs.side_poly`);
+:func:`pencore.arcs._poly_centred_arc_integrals` integrates one ring and side. This
+module does the same operations for many rings with the rings as the innermost loop,
+which the compiler turns into vector instructions: the branches and the ``acos`` of the
+arc's half-angle stay in a scalar pass, the Taylor shift, the ``cos^j`` recursion and
+the sums are branch-free passes over the rings. Each ring's result is the same
+sequence of floating-point operations as the one-ring form, so the loads are
+bit-identical to it (``tests/test_fast_path.py``). SI units.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba as nb
+import numpy as np
+
+from .arcs import _MAXD, side_poly
+
+
+@nb.njit(cache=True)
+def whole_ring_integrals(tab, nf, coef, nside, out):
+    """Integrals of the smoothed-step normal stress over the loaded arcs of ``nf`` whole
+    rings of layer 0.
+
+    Parameters
+    ----------
+    tab : (5, >= nf) array
+        Per ring (columns): ``av, kv`` (m/s) of its normal velocity, ``cos, sin`` of
+        ``phi0`` and its step half-width ``epsr`` (m/s), in rows 0-4.
+    nf : int
+        Number of rings (the first ``nf`` columns).
+    coef : (nlay, ncoef) array
+        Normal-stress coefficients (Pa, Pa s/m, ...); layer 0 is used.
+    nside : int
+        2 for the smoothed step (``epsr > 0``), 1 for the sharp one.
+    out : (3, >= nf) array
+        Receives, per ring, the integrals of ``G(V)``, ``G(V) cos(phi)``, ``G(V)
+        sin(phi)`` over the turn (Pa rad), summed over the sides in side order.
+    """
+    cj = np.empty((_MAXD + 2, nf))
+    e = np.empty((_MAXD, nf))
+    ch = np.empty(nf)
+    sh = np.empty(nf)
+    ok = np.empty(nf)
+    cp = np.empty(nf)
+    kp = np.empty(nf)
+    s0 = np.empty(nf)
+    s1 = np.empty(nf)
+    poly = np.zeros(_MAXD)
+    av = tab[0]
+    kv = tab[1]
+    cph = tab[2]
+    sph = tab[3]
+    for m in range(nf):
+        out[0, m] = 0.0
+        out[1, m] = 0.0
+        out[2, m] = 0.0
+    for side in range(nside):
+        # each ring's step polynomial (one per step width) and level; the cos powers'
+        # end point (pencore.arcs._centred_cos_powers): branches and acos, scalar
+        last = np.nan
+        level = 0.0
+        deg = 0
+        for m in range(nf):
+            if tab[4, m] != last:
+                level, deg = side_poly(coef, 0, tab[4, m], side, poly)
+                last = tab[4, m]
+            for c in range(deg + 1):
+                e[c, m] = poly[c]
+            a = av[m]
+            k = kv[m]
+            ok[m] = 1.0
+            if k < 1e-300:
+                if a < level:
+                    ok[m] = 0.0
+                ch[m], sh[m], cj[0, m] = -1.0, 0.0, math.pi
+            else:
+                c = (level - a) / k
+                if c > 1.0:
+                    ok[m] = 0.0
+                    ch[m], sh[m], cj[0, m] = 1.0, 0.0, 0.0
+                elif c <= -1.0:
+                    ch[m], sh[m], cj[0, m] = -1.0, 0.0, math.pi
+                else:
+                    ch[m], sh[m], cj[0, m] = c, math.sqrt(1.0 - c * c), math.acos(c)
+        # cos^j integrals over |psi| <= h, rings innermost (cj[0] holds h until here)
+        for m in range(nf):
+            cj[0, m] = 2.0 * cj[0, m]
+            cj[1, m] = 2.0 * sh[m]
+            cp[m] = ch[m]
+        for j in range(2, deg + 2):
+            for m in range(nf):
+                cj[j, m] = 2.0 * cp[m] * sh[m] / j + (j - 1) / j * cj[j - 2, m]
+                cp[m] *= ch[m]
+        # Taylor shift of each ring's polynomial to av (pencore.arcs._taylor_shift)
+        for j in range(deg):
+            for c in range(deg - 1, j - 1, -1):
+                for m in range(nf):
+                    e[c, m] += av[m] * e[c + 1, m]
+        for m in range(nf):
+            s0[m] = 0.0
+            s1[m] = 0.0
+            kp[m] = 1.0
+        for j in range(deg + 1):
+            for m in range(nf):
+                f = e[j, m] * kp[m]
+                s0[m] += f * cj[j, m]
+                s1[m] += f * cj[j + 1, m]
+                kp[m] *= kv[m]
+        for m in range(nf):
+            if ok[m] != 0.0:
+                out[0, m] += s0[m]
+                out[1, m] += cph[m] * s1[m]
+                out[2, m] += sph[m] * s1[m]
+            else:
+                out[0, m] += 0.0
+                out[1, m] += 0.0
+                out[2, m] += 0.0
