@@ -71,6 +71,30 @@ def test_fast_path_equals_general_path(target, velocity, obliquity):
         assert below > 0, "no state with the nose through the plate was checked"
 
 
+@pytest.mark.parametrize(
+    "target, velocity, obliquity",
+    [
+        (Target("soil0", (Layer(Medium("soil0", SOIL)),)), 1000.0, 45.0),
+        (Target("plate", (Layer(Medium("plate", (4.0e8, 0.0, 2400.0)), 0.3),)), 900.0, 20.0),
+    ],
+)
+def test_jacobian_fast_path_equals_general_path(target, velocity, obliquity):
+    """The same for the velocity Jacobian (:func:`pencore.jacobian.load_jacobian`, whose
+    whole rings go through :func:`pencore.wholering.whole_ring_moments`). The general
+    path is forced by depth-window columns that are all off (lengths 0: a factor of
+    exactly 1), which the fast path does not take."""
+    from pencore.jacobian import load_jacobian
+
+    pr, ys = _states(target, velocity, obliquity, yaw_deg=1.0)
+    assert pr.bounds.shape[1] < 5
+    windows_off = np.hstack([pr.bounds, np.zeros((pr.bounds.shape[0], 3))])
+    eps = pr.numerics.eps
+    for k in np.unique(np.linspace(0, len(ys) - 1, 25).astype(int)):
+        fast = load_jacobian(ys[k], pr.rings, pr.bounds, pr.coef, eps)
+        general = load_jacobian(ys[k], pr.rings, windows_off, pr.coef, eps)
+        np.testing.assert_array_equal(fast, general)
+
+
 @pytest.mark.parametrize("ncoef", [1, 3, 8])
 @pytest.mark.parametrize("eps", [1e-3, 0.0])
 def test_whole_ring_integrals_equal_one_ring_form(ncoef, eps):

@@ -79,6 +79,7 @@ from .dynamics import (
     ring_velocity_terms,
 )
 from .models import SHANK_CAVITY, SURFACE_PANELS
+from .wholering import whole_ring_moments
 from .windows import depth_factor
 
 __all__ = [
@@ -155,7 +156,26 @@ def load_jacobian(y, rings, bounds, coef, eps):
     rn = np.zeros(4, dtype=np.int64)
     rpar = np.empty((4, 3))
     rk = math.sqrt(rot[1, 1] ** 2 + rot[1, 2] ** 2)
-    for i in range(rings.shape[0]):
+    # as in pencore.dynamics.contact_loads: on a one-layer target without windows, a
+    # band clear of the layer's levels is a whole ring of it (or below a plate's
+    # bottom); the moments of all such rings are computed together, vectorised
+    # (pencore.wholering.whole_ring_moments, same operations per ring), and added in
+    # ring order below, so the Jacobian is bit-identical to the one-ring form
+    simple = nlay == 1 and bounds.shape[1] < 5
+    n = rings.shape[0]
+    geo = np.empty((15, n))  # y0 yk yc ys hb q av bc bs kv cph sph epsr rate need
+    kind = np.empty(n, dtype=np.int64)  # -1 out, -2 general, else slot in the tables
+    slot2 = np.empty(n, dtype=np.int64)  # slot in the step-width tables (rate > 0)
+    tab = np.empty((4, n))
+    tab2 = np.empty((4, n))
+    dps = np.empty((2, _MAXD, n))
+    eps_ = np.empty((2, _MAXD, n))
+    lev = np.empty((2, n))
+    lev2 = np.empty((2, n))
+    nf = 0
+    nf2 = 0
+    last = np.nan
+    for i in range(n):
         x1 = rings[i, 0]
         r = rings[i, 1]
         na = rings[i, 2]
@@ -163,19 +183,80 @@ def load_jacobian(y, rings, bounds, coef, eps):
         w = rings[i, 4]
         y0, yk, yc, ys = ring_height_terms(y[1], rot[1, 0], rot[1, 1], rot[1, 2], x1, r)
         hb = band_half_height(rot[1, 0], rk, r, na, nr, w)
+        kind[i] = -1
         if y0 - yk - hb > bounds[0, 0]:
             continue
         q, av, bc, bs, kv = ring_velocity_terms(x1, r, na, nr, v1, v2, v3, w2, w3)
         cph = bc / kv if kv > 0.0 else 1.0  # cos(phi0), sin(phi0)
         sph = bs / kv if kv > 0.0 else 0.0
         need = yk == 0.0 or near_level(y0 - yk - hb, y0 + yk + hb, bounds)
-        phiy, phi0, cy, sy = arc_angles(need, yc, ys, bc, bs, kv)
+        epsr, rate = band_eps(eps, r, na, w, w2, w3)
+        for c, v in enumerate((y0, yk, yc, ys, hb, q, av, bc, bs, kv, cph, sph, epsr, rate)):
+            geo[c, i] = v
+        geo[14, i] = 1.0 if need else 0.0
+        kind[i] = -2
+        if not (simple and not need):
+            continue
+        if y0 + yk + hb < bounds[0, 1]:
+            kind[i] = -1  # wholly below a plate's bottom face
+            continue
+        kind[i] = nf
+        tab[0, nf], tab[1, nf], tab[2, nf], tab[3, nf] = av, kv, cph, sph
+        for side in range(2):
+            if epsr != last:  # G' of this side (the same for bands of one step width)
+                level, _ = side_poly(coef, 0, epsr, side, poly)
+                lev[side, nf] = level
+                for c in range(ncoef):
+                    dpoly[c] = (c + 1) * poly[c + 1]
+                for c in range(ncoef):
+                    dps[side, c, nf] = dpoly[c]
+            else:
+                lev[side, nf] = lev[side, nf - 1]
+                for c in range(ncoef):
+                    dps[side, c, nf] = dps[side, c, nf - 1]
+        last = epsr
+        nf += 1
+        if rate > 0.0:
+            slot2[i] = nf2
+            tab2[0, nf2], tab2[1, nf2], tab2[2, nf2], tab2[3, nf2] = av, kv, cph, sph
+            for side in range(2):
+                _eps_poly(coef, 0, epsr, side, epoly)
+                lev2[side, nf2] = lev[side, nf - 1]
+                for c in range(ncoef + 1):
+                    eps_[side, c, nf2] = epoly[c]
+            nf2 += 1
+    moms = np.empty((6, nf))
+    if nf > 0:
+        whole_ring_moments(tab, nf, dps, lev, ncoef - 1, moms)
+    emoms = np.empty((6, nf2))
+    if nf2 > 0:
+        whole_ring_moments(tab2, nf2, eps_, lev2, ncoef, emoms)
+
+    for i in range(n):
+        if kind[i] == -1:
+            continue
+        x1 = rings[i, 0]
+        r = rings[i, 1]
+        na = rings[i, 2]
+        nr = rings[i, 3]
+        w = rings[i, 4]
+        y0, yk, yc, ys, hb = geo[0, i], geo[1, i], geo[2, i], geo[3, i], geo[4, i]
+        q, av, bc, bs, kv = geo[5, i], geo[6, i], geo[7, i], geo[8, i], geo[9, i]
+        cph, sph, epsr, rate = geo[10, i], geo[11, i], geo[12, i], geo[13, i]
+        need = geo[14, i] != 0.0
+        phiy, phi0, cy, sy = 0.0, 0.0, 1.0, 0.0
+        if kind[i] < 0:
+            phiy, phi0, cy, sy = arc_angles(need, yc, ys, bc, bs, kv)
         bmat[0, 0] = na
         bmat[1, 1] = nr
         bmat[1, 5] = q
         bmat[2, 2] = nr
         bmat[2, 4] = -q
-        epsr, rate = band_eps(eps, r, na, w, w2, w3)
+        if kind[i] >= 0:
+            _add_btsb(out, na, nr, q, moms[:, kind[i]], -w)
+            if rate > 0.0:
+                _add_eps_columns(out, bmat, emoms[:, slot2[i]], -w * rate * w2, -w * rate * w3)
+            continue
         for lay in range(nlay):
             if y0 + yk + hb < bounds[lay, 1]:
                 continue

@@ -121,3 +121,98 @@ def whole_ring_integrals(tab, nf, coef, nside, out):
                 out[0, m] += 0.0
                 out[1, m] += 0.0
                 out[2, m] += 0.0
+
+
+@nb.njit(cache=True)
+def whole_ring_moments(tab, nf, polys, levels, deg, out):
+    """:func:`pencore.arcs._poly_centred_arc_moments` of ``nf`` whole rings at once,
+    both sides of the step, rings innermost (the Jacobian's counterpart of
+    :func:`whole_ring_integrals`; same operations per ring).
+
+    Parameters
+    ----------
+    tab : (>= 4, >= nf) array
+        Per ring: ``av, kv`` (m/s), ``cos, sin`` of ``phi0`` (rows 0-3).
+    nf : int
+        Number of rings.
+    polys : (2, >= deg + 1, >= nf) array
+        Per side and ring, the polynomial in ``V`` to integrate (e.g. ``G'``).
+    levels : (2, >= nf) array
+        Per side and ring, the level of ``V`` above which it applies (m/s).
+    deg : int
+        Degree of the polynomials.
+    out : (6, >= nf) array
+        Receives per ring the six moments (1, c, s, cc, cs, ss of ``phi``), summed over
+        the two sides in side order.
+    """
+    cj = np.empty((_MAXD + 3, nf))
+    e = np.empty((_MAXD, nf))
+    ch = np.empty(nf)
+    sh = np.empty(nf)
+    ok = np.empty(nf)
+    cp = np.empty(nf)
+    kp = np.empty(nf)
+    sums = np.empty((4, nf))
+    av = tab[0]
+    kv = tab[1]
+    for m in range(nf):
+        for r in range(6):
+            out[r, m] = 0.0
+    for side in range(2):
+        for m in range(nf):
+            level = levels[side, m]
+            a = av[m]
+            k = kv[m]
+            ok[m] = 1.0
+            if k < 1e-300:
+                if a < level:
+                    ok[m] = 0.0
+                ch[m], sh[m], cj[0, m] = -1.0, 0.0, math.pi
+            else:
+                c = (level - a) / k
+                if c > 1.0:
+                    ok[m] = 0.0
+                    ch[m], sh[m], cj[0, m] = 1.0, 0.0, 0.0
+                elif c <= -1.0:
+                    ch[m], sh[m], cj[0, m] = -1.0, 0.0, math.pi
+                else:
+                    ch[m], sh[m], cj[0, m] = c, math.sqrt(1.0 - c * c), math.acos(c)
+            for c in range(deg + 1):
+                e[c, m] = polys[side, c, m]
+        for m in range(nf):
+            cj[0, m] = 2.0 * cj[0, m]
+            cj[1, m] = 2.0 * sh[m]
+            cp[m] = ch[m]
+        for j in range(2, deg + 3):
+            for m in range(nf):
+                cj[j, m] = 2.0 * cp[m] * sh[m] / j + (j - 1) / j * cj[j - 2, m]
+                cp[m] *= ch[m]
+        for j in range(deg):
+            for c in range(deg - 1, j - 1, -1):
+                for m in range(nf):
+                    e[c, m] += av[m] * e[c + 1, m]
+        for m in range(nf):
+            sums[0, m] = 0.0
+            sums[1, m] = 0.0
+            sums[2, m] = 0.0
+            sums[3, m] = 0.0
+            kp[m] = 1.0
+        for j in range(deg + 1):
+            for m in range(nf):
+                f = e[j, m] * kp[m]
+                sums[0, m] += f * cj[j, m]
+                sums[1, m] += f * cj[j + 1, m]
+                sums[2, m] += f * cj[j + 2, m]
+                sums[3, m] += f * (cj[j, m] - cj[j + 2, m])
+                kp[m] *= kv[m]
+        for m in range(nf):
+            if ok[m] != 0.0:
+                c = tab[2, m]
+                s = tab[3, m]
+                i0, ic, icc, iss = sums[0, m], sums[1, m], sums[2, m], sums[3, m]
+                out[0, m] += i0
+                out[1, m] += c * ic
+                out[2, m] += s * ic
+                out[3, m] += c * c * icc + s * s * iss
+                out[4, m] += c * s * (icc - iss)
+                out[5, m] += s * s * icc + c * c * iss
