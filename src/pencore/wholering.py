@@ -23,6 +23,51 @@ from .arcs import _MAXD, side_poly
 
 
 @nb.njit(cache=True)
+def _centred_arcs(av, kv, level, nf, ncos, ok, ch, sh, cp, cj):
+    """Per ring m < nf, the arc ``|psi| <= h`` where ``av + kv cos(psi) >= level[m]``
+    and the integrals ``cj[j, m]`` (j < ncos) of ``cos^j`` over it, as
+    :func:`pencore.arcs._centred_cos_powers` (same operations); ``ok[m]`` 0 when the
+    arc is empty. The end point (branches, ``acos``) in a scalar pass, the recursion
+    with the rings innermost (vectorised)."""
+    for m in range(nf):
+        a = av[m]
+        k = kv[m]
+        ok[m] = 1.0
+        if k < 1e-300:
+            if a < level[m]:
+                ok[m] = 0.0
+            ch[m], sh[m], cj[0, m] = -1.0, 0.0, math.pi
+        else:
+            c = (level[m] - a) / k
+            if c > 1.0:
+                ok[m] = 0.0
+                ch[m], sh[m], cj[0, m] = 1.0, 0.0, 0.0
+            elif c <= -1.0:
+                ch[m], sh[m], cj[0, m] = -1.0, 0.0, math.pi
+            else:
+                ch[m], sh[m], cj[0, m] = c, math.sqrt(1.0 - c * c), math.acos(c)
+    for m in range(nf):  # cj[0] held h until here
+        cj[0, m] = 2.0 * cj[0, m]
+        cj[1, m] = 2.0 * sh[m]
+        cp[m] = ch[m]
+    for j in range(2, ncos):
+        for m in range(nf):
+            cj[j, m] = 2.0 * cp[m] * sh[m] / j + (j - 1) / j * cj[j - 2, m]
+            cp[m] *= ch[m]
+
+
+@nb.njit(cache=True)
+def _taylor_shift_rings(av, e, deg, nf):
+    """``e[:, m]`` := Taylor coefficients of ``P(av[m] + x)`` from those of ``P`` in
+    ``e[:, m]``, as :func:`pencore.arcs._taylor_shift` (same operations), rings
+    innermost."""
+    for j in range(deg):
+        for c in range(deg - 1, j - 1, -1):
+            for m in range(nf):
+                e[c, m] += av[m] * e[c + 1, m]
+
+
+@nb.njit(cache=True)
 def whole_ring_integrals(tab, nf, coef, nside, out):
     """Integrals of the smoothed-step normal stress over the loaded arcs of ``nf`` whole
     rings of layer 0.
@@ -51,6 +96,7 @@ def whole_ring_integrals(tab, nf, coef, nside, out):
     kp = np.empty(nf)
     s0 = np.empty(nf)
     s1 = np.empty(nf)
+    lv = np.empty(nf)
     poly = np.zeros(_MAXD)
     av = tab[0]
     kv = tab[1]
@@ -61,8 +107,7 @@ def whole_ring_integrals(tab, nf, coef, nside, out):
         out[1, m] = 0.0
         out[2, m] = 0.0
     for side in range(nside):
-        # each ring's step polynomial (one per step width) and level; the cos powers'
-        # end point (pencore.arcs._centred_cos_powers): branches and acos, scalar
+        # each ring's step polynomial (one per step width) and level
         last = np.nan
         level = 0.0
         deg = 0
@@ -70,38 +115,11 @@ def whole_ring_integrals(tab, nf, coef, nside, out):
             if tab[4, m] != last:
                 level, deg = side_poly(coef, 0, tab[4, m], side, poly)
                 last = tab[4, m]
+            lv[m] = level
             for c in range(deg + 1):
                 e[c, m] = poly[c]
-            a = av[m]
-            k = kv[m]
-            ok[m] = 1.0
-            if k < 1e-300:
-                if a < level:
-                    ok[m] = 0.0
-                ch[m], sh[m], cj[0, m] = -1.0, 0.0, math.pi
-            else:
-                c = (level - a) / k
-                if c > 1.0:
-                    ok[m] = 0.0
-                    ch[m], sh[m], cj[0, m] = 1.0, 0.0, 0.0
-                elif c <= -1.0:
-                    ch[m], sh[m], cj[0, m] = -1.0, 0.0, math.pi
-                else:
-                    ch[m], sh[m], cj[0, m] = c, math.sqrt(1.0 - c * c), math.acos(c)
-        # cos^j integrals over |psi| <= h, rings innermost (cj[0] holds h until here)
-        for m in range(nf):
-            cj[0, m] = 2.0 * cj[0, m]
-            cj[1, m] = 2.0 * sh[m]
-            cp[m] = ch[m]
-        for j in range(2, deg + 2):
-            for m in range(nf):
-                cj[j, m] = 2.0 * cp[m] * sh[m] / j + (j - 1) / j * cj[j - 2, m]
-                cp[m] *= ch[m]
-        # Taylor shift of each ring's polynomial to av (pencore.arcs._taylor_shift)
-        for j in range(deg):
-            for c in range(deg - 1, j - 1, -1):
-                for m in range(nf):
-                    e[c, m] += av[m] * e[c + 1, m]
+        _centred_arcs(av, kv, lv, nf, deg + 2, ok, ch, sh, cp, cj)
+        _taylor_shift_rings(av, e, deg, nf)
         for m in range(nf):
             s0[m] = 0.0
             s1[m] = 0.0
@@ -160,37 +178,10 @@ def whole_ring_moments(tab, nf, polys, levels, deg, out):
             out[r, m] = 0.0
     for side in range(2):
         for m in range(nf):
-            level = levels[side, m]
-            a = av[m]
-            k = kv[m]
-            ok[m] = 1.0
-            if k < 1e-300:
-                if a < level:
-                    ok[m] = 0.0
-                ch[m], sh[m], cj[0, m] = -1.0, 0.0, math.pi
-            else:
-                c = (level - a) / k
-                if c > 1.0:
-                    ok[m] = 0.0
-                    ch[m], sh[m], cj[0, m] = 1.0, 0.0, 0.0
-                elif c <= -1.0:
-                    ch[m], sh[m], cj[0, m] = -1.0, 0.0, math.pi
-                else:
-                    ch[m], sh[m], cj[0, m] = c, math.sqrt(1.0 - c * c), math.acos(c)
             for c in range(deg + 1):
                 e[c, m] = polys[side, c, m]
-        for m in range(nf):
-            cj[0, m] = 2.0 * cj[0, m]
-            cj[1, m] = 2.0 * sh[m]
-            cp[m] = ch[m]
-        for j in range(2, deg + 3):
-            for m in range(nf):
-                cj[j, m] = 2.0 * cp[m] * sh[m] / j + (j - 1) / j * cj[j - 2, m]
-                cp[m] *= ch[m]
-        for j in range(deg):
-            for c in range(deg - 1, j - 1, -1):
-                for m in range(nf):
-                    e[c, m] += av[m] * e[c + 1, m]
+        _centred_arcs(av, kv, levels[side], nf, deg + 3, ok, ch, sh, cp, cj)
+        _taylor_shift_rings(av, e, deg, nf)
         for m in range(nf):
             sums[0, m] = 0.0
             sums[1, m] = 0.0
