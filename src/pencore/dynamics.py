@@ -223,7 +223,8 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
     # the layer's levels is then either out of contact or a whole ring of it (alpha 1),
     # so no region sets are built and its integrals are done for all such rings at once
     # (pencore.wholering, vectorised; same operations per ring: bit-identical)
-    simple = nlay == 1 and bounds.shape[1] < 5 and n_gauss <= 0
+    # (friction is excluded through `need` below: its quadrature needs every ring's angles)
+    simple = nlay == 1 and bounds.shape[1] < 5
     n = rings.shape[0]
     geo = np.empty((14, n))  # per ring: y0 yk yc ys hb q av bc bs kv cph sph epsr need
     kind = np.empty(n, dtype=np.int64)  # -1 out of contact, -2 general, else fast slot
@@ -263,19 +264,8 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
             nf += 1
         else:
             kind[i] = -2
-        geo[0, i] = y0
-        geo[1, i] = yk
-        geo[2, i] = yc
-        geo[3, i] = ys
-        geo[4, i] = hb
-        geo[5, i] = q
-        geo[6, i] = av
-        geo[7, i] = bc
-        geo[8, i] = bs
-        geo[9, i] = kv
-        geo[10, i] = cph
-        geo[11, i] = sph
-        geo[12, i] = epsr
+        for c, v in enumerate((y0, yk, yc, ys, hb, q, av, bc, bs, kv, cph, sph, epsr)):
+            geo[c, i] = v
         geo[13, i] = 1.0 if need else 0.0
     wint = np.empty((3, nf))
     if nf > 0:

@@ -207,9 +207,7 @@ def load_jacobian(y, rings, bounds, coef, eps):
                 level, _ = side_poly(coef, 0, epsr, side, poly)
                 lev[side, nf] = level
                 for c in range(ncoef):
-                    dpoly[c] = (c + 1) * poly[c + 1]
-                for c in range(ncoef):
-                    dps[side, c, nf] = dpoly[c]
+                    dps[side, c, nf] = (c + 1) * poly[c + 1]
             else:
                 lev[side, nf] = lev[side, nf - 1]
                 for c in range(ncoef):
