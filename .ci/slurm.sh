@@ -25,7 +25,8 @@ WORK="$(mktemp -d /tmp/pencore-slurm.XXXXXX)"
 SLURM_DIR="$WORK/slurm"
 SMK_LOG="$WORK/snakemake-slurm.log"
 LOCAL_LOG="$WORK/snakemake-local.log"
-CTLD_PID="" ; SLURMD_PID="" ; MUNGE_STARTED=0
+CTLD_PID="" ; SLURMD_PID="" ; MUNGE_STARTED=0 ; CONF_WRITTEN=0
+OWN_HEADER="# written by pencore .ci/slurm.sh (single-node CI cluster)"
 
 log() { echo "slurm.sh [$(( $(date +%s) - T0 ))s]: $*"; }
 
@@ -58,6 +59,11 @@ teardown() {
             kill -9 "$p" 2>/dev/null
         fi
     done
+    if [[ $CONF_WRITTEN -eq 1 ]]; then   # leave /etc/slurm as it was found
+        rm -f /etc/slurm/slurm.conf
+        [[ -f /etc/slurm/slurm.conf.pencore-orig ]] \
+            && mv /etc/slurm/slurm.conf.pencore-orig /etc/slurm/slurm.conf
+    fi
     if [[ $MUNGE_STARTED -eq 1 && -f /run/munge/munged.pid ]]; then
         kill "$(cat /run/munge/munged.pid)" 2>/dev/null
     fi
@@ -108,12 +114,27 @@ MEM="$(sed -n 's/.* RealMemory=\([0-9]*\).*/\1/p' <<<"$NODE_LINE")"
 MEM=$(( MEM * 95 / 100 ))                 # full RealMemory drains the node ("Low RealMemory")
 mkdir -p "$SLURM_DIR"/{state,spool,log}
 chown -R slurm:slurm "$SLURM_DIR" 2>/dev/null || true
+# The configuration goes where every Slurm command and the jobs' srun look for it,
+# /etc/slurm/slurm.conf (srun inside a batch job does not see a SLURM_CONF set here), and
+# the teardown puts back what was there. Older versions of this script left theirs
+# behind: every later Snakemake process on the machine then waited ~9 s at start, as
+# the Slurm executor plugin runs `scontrol show config` when imported and scontrol waits
+# for the stopped controller. Such a leftover (recognised by its first line) is removed.
 CONF_DIR=/etc/slurm
 mkdir -p "$CONF_DIR"
-[[ -f "$CONF_DIR/slurm.conf" && ! -f "$CONF_DIR/slurm.conf.pencore-orig" ]] \
-    && cp "$CONF_DIR/slurm.conf" "$CONF_DIR/slurm.conf.pencore-orig"
+for f in "$CONF_DIR/slurm.conf" "$CONF_DIR/slurm.conf.pencore-orig"; do
+    if [[ -f "$f" && "$(head -n 1 "$f")" == "$OWN_HEADER" ]]; then
+        log "removing $f left by an older version of this script"
+        rm -f "$f"
+    fi
+done
+if [[ -f "$CONF_DIR/slurm.conf.pencore-orig" && ! -e "$CONF_DIR/slurm.conf" ]]; then
+    mv "$CONF_DIR/slurm.conf.pencore-orig" "$CONF_DIR/slurm.conf"
+fi
+[[ -f "$CONF_DIR/slurm.conf" ]] && mv "$CONF_DIR/slurm.conf" "$CONF_DIR/slurm.conf.pencore-orig"
+CONF_WRITTEN=1
 cat > "$CONF_DIR/slurm.conf" <<EOF
-# written by pencore .ci/slurm.sh (single-node CI cluster)
+$OWN_HEADER
 ClusterName=pencoreci
 SlurmctldHost=$HOST
 SlurmUser=root
