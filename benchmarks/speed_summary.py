@@ -5,13 +5,14 @@
    arithmetic floor of the kernel (``bench_floor.py``);
 2. fresh process to first result with a cold and a warm kernel cache
    (``bench_startup.py``, read from ``results/startup.csv``; run it first);
-3. full reproduction: ``--reproduction-wall S`` when ``snakemake --cores 2 --forceall``
-   was timed, and the sum of the per-rule CPU seconds (``cpu_time`` column) of the
-   ``results/benchmarks/**/*.tsv`` files Snakemake wrote (``--benchmarks DIR``);
+3. full reproduction, ``snakemake --cores 2 --forceall`` in a fresh clone: wall, CPU
+   of all its processes, and the job floor (``bench_reproduction.py``, read from
+   ``results/reproduction.json``; run it first);
 4. pencore against the numpy form of the same force law (``bench_numpy.py``: ratio).
 
 Writes benchmarks/results/speed.csv. Run (from the repository root):
-python benchmarks/speed_summary.py [--reproduction-wall S] [--benchmarks DIR]
+python benchmarks/bench_startup.py && python benchmarks/bench_reproduction.py
+python benchmarks/speed_summary.py
 """
 
 from __future__ import annotations
@@ -43,10 +44,7 @@ def _json_of(script: str) -> dict:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--reproduction-wall", type=float, default=None)
-    ap.add_argument("--reproduction-note", default="", help="e.g. the load during it")
-    ap.add_argument("--benchmarks", default="results/benchmarks")
-    args = ap.parse_args()
+    ap.parse_args()
     rows = []
     traj = _json_of("bench_trajectory.py")
     rows.append(("trajectory", traj["wall_s_median"] * 1e3, "ms", 5.0, traj["case"]))
@@ -78,26 +76,26 @@ def main() -> None:
             else ("fresh process after python -m pencore.warmup (the install step)")
         )
         rows.append((f"first_result_{case}_cache", float(startup[case]), "s", 2.0, note))
-    if args.reproduction_wall is not None:
-        rows.append(
-            ("reproduction_wall", args.reproduction_wall, "s", 60.0,
-             f"snakemake --cores 2 --forceall, wall {args.reproduction_note}".strip())
-        )  # fmt: skip
-    tsvs = list(Path(args.benchmarks).rglob("*.tsv"))
-    if tsvs:
-        cpus = [float(pd.read_csv(f, sep="\t")["cpu_time"].iloc[0]) for f in tsvs]
-        cpu = sum(cpus)
-        rows.append(
-            ("reproduction_job_floor", len(cpus) * min(cpus), "s", float("nan"),
-             f"{len(cpus)} jobs x the cheapest job's CPU ({min(cpus):.2f} s: process start, "
-             "imports, kernel loading): CPU no reproduction of this shape goes below")
-        )  # fmt: skip
-        rows.append(
-            ("reproduction_rule_cpu_sum", cpu, "s", float("nan"),
-             f"sum of per-rule CPU seconds of {len(tsvs)} Snakemake benchmark files "
-             "(independent of this VM's load, not of the host's speed; the wall on 2 idle "
-             "cores is at least half of it)")
-        )  # fmt: skip
+    rep = json.loads((HERE / "results" / "reproduction.json").read_text())
+    load = rep["machine_before"], rep["machine_after"]
+    rows.append(
+        ("reproduction_wall", rep["wall_s"], "s", 60.0,
+         f"snakemake --cores {rep['cores']} --forceall in a fresh clone after the install "
+         f"step, {rep['n_jobs']} jobs; load {load[0]['load_1min']} before, "
+         f"{load[1]['load_1min']} after (1 min), {load[1]['measured_utc']}: "
+         "bench_reproduction.py")
+    )  # fmt: skip
+    rows.append(
+        ("reproduction_cpu", rep["cpu_s"], "s", float("nan"),
+         "user + system CPU of Snakemake and all its jobs (getrusage of the children, "
+         "exact); the wall on 2 idle cores is at least half of it")
+    )  # fmt: skip
+    rows.append(
+        ("reproduction_job_floor", rep["job_floor_s"], "s", float("nan"),
+         f"{rep['n_jobs']} jobs x the cheapest job's wall ({rep['job_wall_min_s']:.2f} s, "
+         f"{rep['cheapest_job']}: process start, imports, kernel loading): what no "
+         "reproduction of this shape goes below")
+    )  # fmt: skip
     num = _json_of("bench_numpy.py")
     rows.append(
         ("numpy_ratio", num["trajectory_ratio_numpy_over_compiled"], "x", float("nan"),
