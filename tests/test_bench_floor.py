@@ -5,9 +5,7 @@ quotes is a floor of *this* kernel's work and not of a cheaper, different sum.""
 
 from __future__ import annotations
 
-import importlib.util
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -15,15 +13,10 @@ import pytest
 from pencore.dynamics import contact_loads
 from pencore.solver import _run, initial_state, prepare
 
-BENCH = Path(__file__).resolve().parents[1] / "benchmarks" / "bench_floor.py"
-
 
 @pytest.fixture(scope="module")
-def floor():
-    spec = importlib.util.spec_from_file_location("bench_floor", BENCH)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+def floor(load_benchmark):
+    return load_benchmark("bench_floor")
 
 
 @pytest.fixture(scope="module")
