@@ -96,6 +96,14 @@ def main() -> None:
         print("bench_reproduction: install step (python -m pencore.warmup) ...", flush=True)
         timed_run([sys.executable, "-m", "pencore.warmup"], clone)
         before = machine()
+        # the clone is of HEAD: what it measures is HEAD, whatever the working tree holds
+        before["commit"] = subprocess.run(
+            ["git", "rev-parse", "--short", "HEAD"], cwd=clone, capture_output=True,
+            text=True, check=True,
+        ).stdout.strip()  # fmt: skip
+        if machine()["commit"].endswith("-dirty"):
+            print("bench_reproduction: uncommitted changes are not measured (the clone is "
+                  f"of HEAD, {before['commit']})", flush=True)  # fmt: skip
         print(f"bench_reproduction: snakemake --cores {args.cores} --forceall ...", flush=True)
         wall, cpu = timed_run(
             [sys.executable, "-m", "snakemake", "--cores", str(args.cores), "--forceall",
@@ -108,7 +116,7 @@ def main() -> None:
             "cores": args.cores,
             **summary(job_table(clone / "results" / "benchmarks")),
             "machine_before": before,
-            "machine_after": machine(),
+            "machine_after": {**machine(), "commit": before["commit"]},
         }
     Path(args.json).parent.mkdir(parents=True, exist_ok=True)
     Path(args.json).write_text(json.dumps(out, indent=1) + "\n")

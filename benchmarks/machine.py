@@ -1,5 +1,5 @@
-"""The machine and its load, recorded next to every speed figure (lscpu model, cores,
-uptime load averages)."""
+"""The machine, its load and the code, recorded next to every speed figure (lscpu model,
+cores, uptime load averages, git commit)."""
 
 from __future__ import annotations
 
@@ -10,7 +10,8 @@ from datetime import UTC
 
 
 def machine() -> dict[str, str | float | int]:
-    """CPU model, logical cores, 1/5/15-min load averages and the UTC time of the reading."""
+    """CPU model, logical cores, 1/5/15-min load averages, the UTC time of the reading and
+    the commit measured."""
     model = platform.processor() or platform.machine()
     try:
         for line in subprocess.run(
@@ -30,4 +31,23 @@ def machine() -> dict[str, str | float | int]:
         "load_5min": round(load5, 2),
         "load_15min": round(load15, 2),
         "measured_utc": datetime.now(UTC).strftime("%Y-%m-%dT%H:%MZ"),
+        "commit": commit(),
     }
+
+
+def commit() -> str:
+    """Short hash of the checked-out commit, ``-dirty`` if the tree has changes; ``unknown``
+    outside a git checkout."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    try:
+        head = subprocess.run(
+            ["git", "rev-parse", "--short", "HEAD"], cwd=here, capture_output=True, text=True,
+            check=True,
+        ).stdout.strip()  # fmt: skip
+        dirty = subprocess.run(
+            ["git", "status", "--porcelain", "--untracked-files=no"], cwd=here,
+            capture_output=True, text=True, check=True,
+        ).stdout.strip()  # fmt: skip
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+    return head + ("-dirty" if dirty else "")

@@ -82,7 +82,8 @@ def main() -> None:
         ("reproduction_wall", rep["wall_s"], "s", 60.0,
          f"snakemake --cores {rep['cores']} --forceall in a fresh clone after the install "
          f"step, {rep['n_jobs']} jobs; load {load[0]['load_1min']} before, "
-         f"{load[1]['load_1min']} after (1 min), {load[1]['measured_utc']}: "
+         f"{load[1]['load_1min']} after (1 min), {load[1]['measured_utc']}, commit "
+         f"{load[0].get('commit', 'unknown')}: "
          "bench_reproduction.py")
     )  # fmt: skip
     rows.append(
