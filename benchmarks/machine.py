@@ -36,16 +36,18 @@ def machine() -> dict[str, str | float | int]:
 
 
 def commit() -> str:
-    """Short hash of the checked-out commit, ``-dirty`` if the tree has changes; ``unknown``
-    outside a git checkout."""
-    here = os.path.dirname(os.path.abspath(__file__))
+    """Short hash of the checked-out commit, ``-dirty`` if the tree has changes outside
+    ``benchmarks/results``; ``unknown`` outside a git checkout."""
+    here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # repository root
     try:
         head = subprocess.run(
             ["git", "rev-parse", "--short", "HEAD"], cwd=here, capture_output=True, text=True,
             check=True,
         ).stdout.strip()  # fmt: skip
         dirty = subprocess.run(
-            ["git", "status", "--porcelain", "--untracked-files=no"], cwd=here,
+            # the benchmarks' own result files do not make the measured code dirty
+            ["git", "status", "--porcelain", "--untracked-files=no", "--", ".",
+             ":(exclude)benchmarks/results"], cwd=here,
             capture_output=True, text=True, check=True,
         ).stdout.strip()  # fmt: skip
     except (OSError, subprocess.CalledProcessError):
