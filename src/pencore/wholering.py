@@ -22,6 +22,17 @@ import numpy as np
 from .arcs import _MAXD, side_poly
 
 
+@nb.njit(cache=True, inline="always")
+def _ring_scratch(nf, ncos):
+    """Work arrays of :func:`_centred_arcs` (``cj`` with ``ncos`` rows, ``ch, sh, ok,
+    cp``), of :func:`_taylor_shift_rings` (``e``) and the powers of ``kv`` (``kp``),
+    for ``nf`` rings."""
+    return (
+        np.empty((ncos, nf)), np.empty((_MAXD, nf)), np.empty(nf), np.empty(nf),
+        np.empty(nf), np.empty(nf), np.empty(nf),
+    )  # fmt: skip
+
+
 @nb.njit(cache=True)
 def _centred_arcs(av, kv, level, nf, ncos, ok, ch, sh, cp, cj):
     """Per ring m < nf, the arc ``|psi| <= h`` where ``av + kv cos(psi) >= level[m]``
@@ -87,13 +98,7 @@ def whole_ring_integrals(tab, nf, coef, nside, out):
         Receives, per ring, the integrals of ``G(V)``, ``G(V) cos(phi)``, ``G(V)
         sin(phi)`` over the turn (Pa rad), summed over the sides in side order.
     """
-    cj = np.empty((_MAXD + 2, nf))
-    e = np.empty((_MAXD, nf))
-    ch = np.empty(nf)
-    sh = np.empty(nf)
-    ok = np.empty(nf)
-    cp = np.empty(nf)
-    kp = np.empty(nf)
+    cj, e, ch, sh, ok, cp, kp = _ring_scratch(nf, _MAXD + 2)
     s0 = np.empty(nf)
     s1 = np.empty(nf)
     lv = np.empty(nf)
@@ -163,13 +168,7 @@ def whole_ring_moments(tab, nf, polys, levels, deg, out):
         Receives per ring the six moments (1, c, s, cc, cs, ss of ``phi``), summed over
         the two sides in side order.
     """
-    cj = np.empty((_MAXD + 3, nf))
-    e = np.empty((_MAXD, nf))
-    ch = np.empty(nf)
-    sh = np.empty(nf)
-    ok = np.empty(nf)
-    cp = np.empty(nf)
-    kp = np.empty(nf)
+    cj, e, ch, sh, ok, cp, kp = _ring_scratch(nf, _MAXD + 3)
     sums = np.empty((4, nf))
     av = tab[0]
     kv = tab[1]
