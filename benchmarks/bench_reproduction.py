@@ -97,13 +97,14 @@ def main() -> None:
         timed_run([sys.executable, "-m", "pencore.warmup"], clone)
         before = machine()
         # the clone is of HEAD: what it measures is HEAD, whatever the working tree holds
-        before["commit"] = subprocess.run(
+        head = subprocess.run(
             ["git", "rev-parse", "--short", "HEAD"], cwd=clone, capture_output=True,
             text=True, check=True,
         ).stdout.strip()  # fmt: skip
-        if machine()["commit"].endswith("-dirty"):
+        if before["commit"].endswith("-dirty"):
             print("bench_reproduction: uncommitted changes are not measured (the clone is "
-                  f"of HEAD, {before['commit']})", flush=True)  # fmt: skip
+                  f"of HEAD, {head})", flush=True)  # fmt: skip
+        before["commit"] = head
         print(f"bench_reproduction: snakemake --cores {args.cores} --forceall ...", flush=True)
         wall, cpu = timed_run(
             [sys.executable, "-m", "snakemake", "--cores", str(args.cores), "--forceall",
