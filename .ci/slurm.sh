@@ -128,9 +128,6 @@ for f in "$CONF_DIR/slurm.conf" "$CONF_DIR/slurm.conf.pencore-orig"; do
         rm -f "$f"
     fi
 done
-if [[ -f "$CONF_DIR/slurm.conf.pencore-orig" && ! -e "$CONF_DIR/slurm.conf" ]]; then
-    mv "$CONF_DIR/slurm.conf.pencore-orig" "$CONF_DIR/slurm.conf"
-fi
 [[ -f "$CONF_DIR/slurm.conf" ]] && mv "$CONF_DIR/slurm.conf" "$CONF_DIR/slurm.conf.pencore-orig"
 CONF_WRITTEN=1
 cat > "$CONF_DIR/slurm.conf" <<EOF
