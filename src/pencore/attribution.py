@@ -60,13 +60,11 @@ import pandas as pd
 import xarray as xr
 
 from . import analysis, critical
+from .attribution_choices import CHOICES, REVERSALS, check_choices  # noqa: F401 - re-exported
 from .library import MEDIA
-from .models import emulation as _emulation
-from .models import shank_model
-from .solver import SPIN_CENTRES, prepare, run_impact, simulate
+from .solver import prepare, run_impact, simulate
 from .stepping import RunResult
 from .target import Target
-from .validate import InputError, check_keys, number
 
 __all__ = ["disputed_quantities", "PAPER", "CHOICES", "paper_comparison"]  # noqa: F822
 
@@ -97,20 +95,7 @@ def __getattr__(name: str) -> Any:
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-#: Allowed keys of a setting.
-CHOICES = (
-    "shank",
-    "emulation",
-    "numerics",
-    "start_height",
-    "spin_about",
-    "yaw_reading",
-    "reversal",
-    "friction",
-)
-
 OMEGAS = (5.0, 20.0, 25.0)
-REVERSALS = ("turns_back", "exits")
 PHI_SPEEDS = (280.0, 1000.0)
 VCR_RANGE = (600.0, 2600.0)
 VCR_START = (-1.0, 1.0, 0.0)
@@ -118,36 +103,6 @@ VCR_START = (-1.0, 1.0, 0.0)
 FIG12_OBLIQUITY = 30.0
 FIG12_YAWS = (0.0, 2.0)
 FIG12_RANGE = (300.0, 4000.0)
-
-
-def _setting(choices: Mapping[str, Any]) -> dict[str, Any]:
-    """Checked choices with defaults filled in."""
-    if not isinstance(choices, Mapping):
-        raise InputError(f"attribution setting must be a mapping of choices, got {choices!r}")
-    check_keys(choices, CHOICES, "attribution setting")
-    s = dict(choices)
-    s["shank"] = shank_model(s.get("shank"))
-    s["emulation"] = _emulation(s.get("emulation"))
-    num = s.get("numerics") or {}
-    if not isinstance(num, Mapping):
-        raise InputError(f"attribution numerics must be a mapping of overrides, got {num!r}")
-    s["numerics"] = dict(num)
-    s["start_height"] = number(s.get("start_height", 0.0), "start_height", "attribution")
-    s["spin_about"] = s.get("spin_about", "cm")
-    if s["spin_about"] not in SPIN_CENTRES:
-        raise InputError(
-            f"attribution spin_about must be one of {', '.join(SPIN_CENTRES)}, "
-            f"got {s['spin_about']!r}"
-        )
-    s["reversal"] = s.get("reversal", "turns_back")
-    if s["reversal"] not in REVERSALS:
-        raise InputError(
-            f"attribution reversal must be one of {', '.join(REVERSALS)}, got {s['reversal']!r}"
-        )
-    s["yaw_reading"] = s.get("yaw_reading", "axis_tilted")
-    critical.normal_impact_angles(0.1, s["yaw_reading"])  # checks the name
-    s["friction"] = number(s.get("friction", 0.0), "friction", "attribution")
-    return s
 
 
 def _turned_back(run: xr.Dataset | RunResult, reversal: str) -> bool:
@@ -182,7 +137,7 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
         the paper's values as ``paper_*``; wall times (s) per group. The setting is in
         the attribute ``setting_json``.
     """
-    s = _setting(choices or {})
+    s = check_choices(choices or {})
     target = _target(s["friction"])
     kw = dict(shank=s["shank"], emulation=s["emulation"], **s["numerics"])
     p2 = prepare("p2", target, **kw)

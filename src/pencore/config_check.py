@@ -29,7 +29,9 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
-from .validate import LIMITS
+from .attribution_choices import check_settings
+from .studies.ensemble_cases import check_case
+from .validate import LIMITS, InputError
 
 __all__ = ["ConfigError", "MAX_GRID", "check_config", "schema_error_message"]
 
@@ -171,18 +173,12 @@ def check_config(config: Mapping[str, Any], root: str | Path = ".") -> None:
     if len(set(names)) != len(names):
         _fail("ensemble.cases", f"duplicate case names {sorted(names)}")
     for i, case in enumerate(cases):
-        from .studies.ensemble import check_case
-        from .validate import InputError
-
         try:
             check_case(case)
         except InputError as exc:
             _fail(f"ensemble.cases[{i}]", str(exc))
     settings = config.get("attribution", {}).get("settings")
     if settings:
-        from .studies.attribution import check_settings
-        from .validate import InputError
-
         try:
             check_settings(settings)
         except InputError as exc:

@@ -33,6 +33,7 @@ from typing import Any
 import numpy as np
 
 from .analysis import DEFAULT_SPEED_FRACTION, final_deviation
+from .conventions import YAW_CONVENTIONS, normal_impact_angles
 from .library import InputError
 from .solver import Numerics, prepare, run_impact, simulate
 
@@ -61,9 +62,6 @@ VELOCITY_TOL = 5.0
 OMEGA_TOL = 0.5
 #: Scan points used by :func:`vcr`, :func:`omega_c` and :func:`vci` before bisecting.
 DEFAULT_SCAN = 5
-
-#: Readings of "normal impact with yaw" (:func:`normal_impact_angles`).
-YAW_CONVENTIONS = ("axis_tilted", "velocity_tilted")
 
 #: Possible values of :attr:`CriticalResult.status`.
 STATUSES = ("ok", "non_monotone", "below_range", "above_range", "max_iter")
@@ -418,32 +416,6 @@ def omega_c(
         return _turns_back(pr, sim, velocity, obliquity, yaw, w)
 
     return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="omega_c")
-
-
-def normal_impact_angles(yaw: float, convention: str = "axis_tilted") -> tuple[float, float]:
-    """``(obliquity, yaw)`` arguments of :func:`pencore.simulate` for a normal impact with
-    yaw ``yaw`` (deg).
-
-    The yaw phi2 is the velocity angle minus the axis angle (paper Fig. 10); for a
-    "normal impact with yaw" (paper Figs 13-15) either can be the normal one:
-
-    ``"axis_tilted"``
-        The velocity is along the target normal and the axis is tilted by ``yaw``:
-        ``obliquity = +yaw``, ``yaw = -yaw``. This reading comes close to the paper's
-        deviations for projectile #4 at 0.1 deg (0.16 deg at 280 m/s, 0.24 deg at
-        1000 m/s; pencore 0.166 and 0.259).
-    ``"velocity_tilted"``
-        The axis is along the normal and the velocity is tilted by ``yaw``:
-        ``obliquity = 0``, ``yaw = yaw`` (pencore 0.065 and 0.157 deg for the same cases).
-    """
-    if convention not in YAW_CONVENTIONS:
-        raise InputError(
-            f"yaw convention must be one of {', '.join(YAW_CONVENTIONS)}, got {convention!r}"
-        )
-    yaw = float(yaw)
-    if convention == "axis_tilted":
-        return yaw, -yaw
-    return 0.0, yaw
 
 
 def vci(

@@ -10,14 +10,12 @@ from typing import Any
 
 import numpy as np
 
+from .conventions import SPIN_CENTRES
 from .dynamics import quat_to_matrix
 from .geometry import Projectile
 from .validate import InputError, number
 
 __all__ = ["initial_state", "SPIN_CENTRES"]
-
-#: Points the initial spin ``omega`` turns about (:func:`initial_state`).
-SPIN_CENTRES = ("cm", "tip")
 
 
 def _axis_quaternion(obliquity: float) -> np.ndarray:

@@ -1,5 +1,5 @@
 # Configuration helpers of the Section 4 rules (workflow/rules/section4.smk); no rules here.
-from pencore.studies.config import parts_of
+from pencore.studies.parts import parts_of
 
 S4 = config["section4"]
 

@@ -22,6 +22,7 @@ module                     contents
 ``trends``                 trend verdicts within search brackets
 ``comparison_rows``        row helpers of the comparison table
 ``comparison``             :func:`paper_comparison`: the paper's numbers beside pencore's
+``parts``                  which studies exist and their job parts (light: the Snakefile's)
 ``config``                 workflow config -> study parts, :func:`from_config`, :func:`gather`
 ``perforation``            beyond the paper: ballistic limit map, residual velocity curve
 =========================  ===============================================================
@@ -35,10 +36,12 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import fields, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from ..library import InputError
-from ..solver import DEFAULT_NUMERICS, Numerics
+from ..validate import InputError
+
+if TYPE_CHECKING:
+    from ..solver import Numerics
 
 __all__ = ["resolve_numerics"]
 
@@ -49,6 +52,10 @@ def resolve_numerics(numerics: Numerics | Mapping[str, Any] | None = None) -> Nu
     In a mapping, entries that are ``None`` mean "keep pencore's default" (the workflow's
     config schema fills unset numerics keys with ``null``).
     """
+    # imported here: the package itself stays light (the workflow imports
+    # pencore.studies.sources and .parts at every Snakemake start)
+    from ..solver import DEFAULT_NUMERICS, Numerics
+
     if numerics is None:
         return DEFAULT_NUMERICS
     if isinstance(numerics, Numerics):

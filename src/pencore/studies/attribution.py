@@ -36,8 +36,9 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from ..attribution import _setting, disputed_quantities
-from ..validate import InputError, check_keys
+from ..attribution import disputed_quantities
+from ..attribution_choices import check_settings
+from ..validate import InputError
 
 __all__ = ["NUMBERS", "TOLERANCE", "check_settings", "run_setting", "gather", "attribution_table"]
 
@@ -58,41 +59,6 @@ NUMBERS: dict[str, tuple[str, str]] = {
     "phi_p4_1000": ("phi of #4, yaw 0.1 deg, 1000 m/s (Fig. 14)", "degree"),
     "fig12_falls": ("Vcr of #2 at 30 deg falls from yaw 0 to 2 deg (Fig. 12)", "1"),
 }
-SETTING_KEYS = ("name", "label", "group", "argued", "choices")
-
-
-def check_settings(settings: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
-    """The configured settings, checked (unique names, known keys, valid choices).
-
-    Raises
-    ------
-    InputError
-        One line naming the setting and the bad key or value.
-    """
-    out = []
-    seen = set()
-    for i, st in enumerate(settings):
-        if not isinstance(st, Mapping):
-            raise InputError(f"attribution setting {i + 1} must be a mapping, got {st!r}")
-        check_keys(st, SETTING_KEYS, f"attribution setting {i + 1}")
-        name = st.get("name")
-        if not isinstance(name, str) or not name or name in seen:
-            raise InputError(f"attribution setting {i + 1}: missing or duplicate name {name!r}")
-        seen.add(name)
-        choices = dict(st.get("choices") or {})
-        _setting(choices)  # the checks of the run itself, without running
-        out.append(
-            {
-                "name": name,
-                "label": str(st.get("label", name)),
-                "group": str(st.get("group", "")),
-                "argued": bool(st.get("argued", True)),
-                "choices": choices,
-            }
-        )
-    if not out:
-        raise InputError("attribution: no settings configured")
-    return out
 
 
 def run_setting(setting: Mapping[str, Any]) -> xr.Dataset:

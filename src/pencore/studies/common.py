@@ -13,6 +13,7 @@ import xarray as xr
 from scipy import stats
 
 from ..library import InputError, get_projectile
+from .parts import grid  # noqa: F401 - re-exported (studies import it from here)
 
 __all__ = [
     "PROJECTILES",
@@ -110,15 +111,6 @@ def start_from_height(height: float) -> tuple[float, float, float] | None:
     if not (math.isfinite(h) and h >= 0.0):
         raise InputError(f"start height must be >= 0 m, got {height!r}")
     return None if h == 0.0 else (0.0, h, 0.0)
-
-
-def grid(min: float, max: float, step: float) -> np.ndarray:
-    """Values from ``min`` to ``max`` inclusive in steps of ``step`` (rounded to 1e-9)."""
-    lo, hi, st = float(min), float(max), float(step)
-    if not (math.isfinite(lo) and math.isfinite(hi) and math.isfinite(st) and st > 0 and hi >= lo):
-        raise InputError(f"grid needs min <= max and step > 0, got {min}, {max}, {step}")
-    n = int(math.floor((hi - lo) / st + 1e-9)) + 1
-    return np.round(lo + st * np.arange(n), 9)
 
 
 def _axis(values: Iterable[float], what: str) -> np.ndarray:

@@ -14,7 +14,7 @@ from ..critical import OMEGA_TOL, VELOCITY_TOL
 from ..library import InputError
 from ..solver import Numerics
 from . import resolve_numerics
-from .common import combine, grid
+from .common import combine
 from .fig07_trajectories import fig7
 from .fig08_vcr import fig8, vcr_study
 from .fig09_turning_angle import fig9
@@ -22,33 +22,11 @@ from .fig13_yaw import fig13
 from .fig15_vci import vci_study
 from .fig16_spin import fig16, start_height_study
 from .fig18_omega_c import omega_c_study
+from .parts import SPLIT_STUDIES, STUDIES, parts_of
+from .parts import values as _values
 from .trajectories import trajectory_set
 
 __all__ = ["STUDIES", "SPLIT_STUDIES", "parts_of", "from_config", "gather"]
-
-
-#: Studies that :func:`from_config` runs; those in :data:`SPLIT_STUDIES` run per job
-#: part (a projectile, or a projectile and an obliquity) and are joined by :func:`gather`.
-STUDIES = (
-    "fig7",
-    "fig8",
-    "fig9",
-    "fig11",
-    "fig12",
-    "fig13",
-    "fig15",
-    "fig16",
-    "start_height",
-    "fig18",
-)
-
-
-SPLIT_STUDIES = {
-    "fig8": ("projectile",),
-    "fig12": ("projectile", "obliquity"),
-    "fig15": ("projectile",),
-    "fig18": ("projectile",),
-}
 
 
 def _range(d: Mapping[str, Any]) -> tuple[float, float]:
@@ -56,26 +34,6 @@ def _range(d: Mapping[str, Any]) -> tuple[float, float]:
     if not lo < hi:
         raise InputError(f"range needs min < max, got {dict(d)}")
     return lo, hi
-
-
-def _values(v: Any) -> list[float]:
-    """A list of numbers, or a ``{min, max, step}`` grid."""
-    if isinstance(v, Mapping):
-        return [float(x) for x in grid(v["min"], v["max"], v["step"])]
-    return [float(x) for x in v]
-
-
-def parts_of(study: str, cfg: Mapping[str, Any]) -> list[dict[str, Any]]:
-    """Job parts of a split study: ``[{"projectile": "p1"}, ...]`` or with
-    ``"obliquity"`` too (deg), from the study's configuration ``cfg``."""
-    if study not in SPLIT_STUDIES:
-        raise InputError(f"{study!r} is not split into parts")
-    projs = list(cfg["projectiles"])
-    if study == "fig12":
-        return [
-            {"projectile": p, "obliquity": o} for p in projs for o in _values(cfg["obliquity_deg"])
-        ]
-    return [{"projectile": p} for p in projs]
 
 
 def from_config(

@@ -1,0 +1,71 @@
+"""Which Section 4 studies the workflow runs and how a split study's configuration
+becomes job parts (:func:`parts_of`), with the ``{min, max, step}`` grids of the
+configuration (:func:`grid`).
+
+Apart from :mod:`pencore.studies.config` (numpy and :mod:`pencore.validate` only): the
+workflow asks for the parts at every Snakemake start, before any study runs.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from ..validate import InputError
+
+__all__ = ["STUDIES", "SPLIT_STUDIES", "grid", "values", "parts_of"]
+
+#: Studies that :func:`pencore.studies.config.from_config` runs; those in
+#: :data:`SPLIT_STUDIES` run per job part (a projectile, or a projectile and an
+#: obliquity) and are joined by :func:`pencore.studies.config.gather`.
+STUDIES = (
+    "fig7",
+    "fig8",
+    "fig9",
+    "fig11",
+    "fig12",
+    "fig13",
+    "fig15",
+    "fig16",
+    "start_height",
+    "fig18",
+)
+
+SPLIT_STUDIES = {
+    "fig8": ("projectile",),
+    "fig12": ("projectile", "obliquity"),
+    "fig15": ("projectile",),
+    "fig18": ("projectile",),
+}
+
+
+def grid(min: float, max: float, step: float) -> np.ndarray:
+    """Values from ``min`` to ``max`` inclusive in steps of ``step`` (rounded to 1e-9)."""
+    lo, hi, st = float(min), float(max), float(step)
+    if not (math.isfinite(lo) and math.isfinite(hi) and math.isfinite(st) and st > 0 and hi >= lo):
+        raise InputError(f"grid needs min <= max and step > 0, got {min}, {max}, {step}")
+    n = int(math.floor((hi - lo) / st + 1e-9)) + 1
+    return np.round(lo + st * np.arange(n), 9)
+
+
+def values(v: Any) -> list[float]:
+    """A list of numbers, or a ``{min, max, step}`` grid (:func:`grid`)."""
+    if isinstance(v, Mapping):
+        return [float(x) for x in grid(v["min"], v["max"], v["step"])]
+    return [float(x) for x in v]
+
+
+def parts_of(study: str, cfg: Mapping[str, Any]) -> list[dict[str, Any]]:
+    """Job parts of a split study: ``[{"projectile": "p1"}, ...]`` or with
+    ``"obliquity"`` too (deg), from the study's configuration ``cfg``."""
+    if study not in SPLIT_STUDIES:
+        raise InputError(f"{study!r} is not split into parts")
+    projs = list(cfg["projectiles"])
+    if study == "fig12":
+        return [
+            {"projectile": p, "obliquity": o} for p in projs for o in values(cfg["obliquity_deg"])
+        ]
+    return [{"projectile": p} for p in projs]
