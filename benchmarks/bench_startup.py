@@ -11,7 +11,11 @@ empty directory, so the runs are:
 * ``warm``: a fresh process after the warm-up (what a clone that ran the set-up
   commands, a CI run after ``.ci/run``'s install, and every workflow job pay);
 * ``import``: a fresh process that only imports the solver (``pencore.solver``; the
-  package itself imports its names on first use).
+  package itself imports its names on first use);
+* ``snakemake_dry_run``: ``python -m snakemake -n`` of the whole workflow in this
+  repository (parse, configuration check, DAG): what every Snakemake start costs before
+  its first job, and each job of a cluster run, which starts Snakemake again on its
+  node (left out, with a note, where Snakemake is not installed).
 
 Writes benchmarks/results/startup.csv (with the machine and its load).
 Run: python benchmarks/bench_startup.py [--repeats 3]
@@ -20,6 +24,7 @@ Run: python benchmarks/bench_startup.py [--repeats 3]
 from __future__ import annotations
 
 import argparse
+import importlib.util
 import os
 import statistics
 import subprocess
@@ -63,6 +68,14 @@ def main() -> None:
         rows.append(("warm", statistics.median(warm)))
         imp = [timed(["-c", "import pencore.solver"], env) for _ in range(args.repeats)]
         rows.append(("import", statistics.median(imp)))
+    if importlib.util.find_spec("snakemake") is None:
+        print("bench_startup: Snakemake is not installed; no snakemake_dry_run figure")
+    else:
+        repo = Path(__file__).resolve().parents[1]
+        dry = ["-m", "snakemake", "-n", "--quiet", "--directory", str(repo), "--snakefile"]
+        dry.append(str(repo / "Snakefile"))
+        dry_runs = [timed(dry, dict(os.environ)) for _ in range(args.repeats)]
+        rows.append(("snakemake_dry_run", statistics.median(dry_runs)))
     m = machine()
     df = pd.DataFrame([{"case": c, "wall_s": s, **m} for c, s in rows])
     out = Path(__file__).parent / "results"

@@ -2,8 +2,9 @@
 
 Case from the core issue: projectile p2 into soil at 45 deg obliquity and 1000 m/s with
 the default (converged) numerics, on one core. Prints wall time per trajectory (median
-of repeats, after the one-off numba compilation), right-hand-side evaluations, accepted
-and rejected steps, and the process's peak resident memory.
+of repeats, after the one-off numba compilation) and for the raw run without its
+Dataset (what a search's verdict costs), right-hand-side evaluations, accepted and
+rejected steps, and the process's peak resident memory.
 
 Run: python benchmarks/bench_trajectory.py [--repeats N]
 """
@@ -18,7 +19,7 @@ import statistics
 import time
 
 import pencore
-from pencore.solver import prepare
+from pencore.solver import prepare, run_impact
 
 
 def main() -> None:
@@ -38,12 +39,21 @@ def main() -> None:
         t = time.perf_counter()
         ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0, prepared=pr)
         walls.append(time.perf_counter() - t)
+    # the raw run without its Dataset: what each verdict of a search (Vcr, Vci, omega_c)
+    # and each attribution run costs (pencore.solver.run_impact, the same run to the bit)
+    raw = []
+    for _ in range(args.repeats):
+        t = time.perf_counter()
+        run_impact("p2", "soil", 1000.0, obliquity=45.0, prepared=pr)
+        raw.append(time.perf_counter() - t)
     peak_mib = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
 
     out = {
         "case": "p2, soil, obliquity 45 deg, 1000 m/s, default numerics",
         "wall_s_median": statistics.median(walls),
         "wall_s_min": min(walls),
+        "raw_run_s_median": statistics.median(raw),
+        "raw_run_s_min": min(raw),
         "first_call_s_including_compile_or_cache_load": first,
         "rhs_evaluations": ds.attrs["n_rhs"],
         "accepted_steps": ds.attrs["n_steps"],

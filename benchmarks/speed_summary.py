@@ -54,6 +54,11 @@ def main() -> None:
         ("trajectory_best", traj["wall_s_min"] * 1e3, "ms", float("nan"),
          f"{traj['case']}; fastest of the repeats")
     )  # fmt: skip
+    rows.append(
+        ("trajectory_raw_run", traj["raw_run_s_median"] * 1e3, "ms", float("nan"),
+         f"{traj['case']}; the same run without its Dataset (pencore.solver.run_impact), "
+         "as each verdict of a search takes it; median")
+    )  # fmt: skip
     # how far the same discretisation could go: every right-hand side at the arithmetic
     # floor of its kernel (bench_floor.py), all else as measured
     fl = _json_of("bench_floor.py")
@@ -76,6 +81,12 @@ def main() -> None:
             else ("fresh process after python -m pencore.warmup (the install step)")
         )
         rows.append((f"first_result_{case}_cache", float(startup[case]), "s", 2.0, note))
+    if "snakemake_dry_run" in startup:
+        rows.append(
+            ("snakemake_dry_run", float(startup["snakemake_dry_run"]), "s", float("nan"),
+             "python -m snakemake -n of the whole workflow: every Snakemake start before "
+             "its first job (and each cluster job, which starts Snakemake on its node)")
+        )  # fmt: skip
     rep = json.loads((HERE / "results" / "reproduction.json").read_text())
     load = rep["machine_before"], rep["machine_after"]
     rows.append(
