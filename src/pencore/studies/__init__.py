@@ -21,6 +21,7 @@ module                     contents
 ``fig18_omega_c``          Fig. 18: omega_c on (projectile, impact velocity)
 ``trends``                 trend verdicts within search brackets
 ``comparison_rows``        row helpers of the comparison table
+``comparison_spin``        its rows for the spin claims (Figs 16-18)
 ``comparison``             :func:`paper_comparison`: the paper's numbers beside pencore's
 ``parts``                  which studies exist and their job parts (light: the Snakefile's)
 ``config``                 workflow config -> study parts, :func:`from_config`, :func:`gather`

@@ -180,3 +180,8 @@ def _nose_rows(ds: xr.Dataset) -> list[dict[str, Any]]:
         )
     )
     return rows
+
+
+def _close(values: Any, v: float) -> bool:
+    """Whether any of ``values`` is ``v`` (to numpy's ``isclose``)."""
+    return bool(np.any(np.isclose(np.asarray(values, float), v)))
