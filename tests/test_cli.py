@@ -442,3 +442,19 @@ def test_output_into_a_closed_pipe_is_quiet():
         os.close(write_end)
     assert proc.returncode == 141
     assert proc.stderr.decode() == ""
+
+
+@pytest.mark.parametrize("argv", [["--help"], ["list"], ["simulate", "--help"]])
+def test_commands_that_run_no_solver_do_not_load_it(argv):
+    """``--help`` and ``list`` answer without importing the solver (numba, xarray: ~0.6 s
+    of a start); the exit codes of solver failures are tested above."""
+    code = (
+        "import sys, contextlib, io\n"
+        "from pencore.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        f"    status = main({argv!r})\n"
+        "heavy = ('numba', 'xarray', 'scipy', 'pencore.solver')\n"
+        "print(status, sorted(m for m in heavy if m in sys.modules))\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "0 []", out.stdout + out.stderr

@@ -484,8 +484,6 @@ def main(argv: Sequence[str] | None = None) -> int:
         Exit status: 0 success, 1 solver or write failure, 2 bad input, 130 interrupted,
         141 output pipe closed early.
     """
-    from .solver import SolverError
-
     parser = build_parser()
     try:
         args = parser.parse_args(argv)
@@ -505,10 +503,15 @@ def main(argv: Sequence[str] | None = None) -> int:
         msg, status = str(exc), exc.status
     except InputError as exc:
         msg, status = str(exc), 2
-    except SolverError as exc:
-        msg, status = f"solver failed: {exc}", 1
     except KeyboardInterrupt:
         msg, status = "interrupted (Ctrl-C); nothing was written", 130
+    except Exception as exc:
+        # a SolverError can only come from an imported solver: commands that do not run
+        # it (--help, list, fit-table3) then start without numba and xarray (~0.6 s)
+        solver = sys.modules.get(f"{__package__}.solver")
+        if solver is None or not isinstance(exc, solver.SolverError):
+            raise
+        msg, status = f"solver failed: {exc}", 1
     print(f"{PROG}: error: {_one_line(msg)}", file=sys.stderr)
     return status
 
