@@ -414,46 +414,15 @@ def _cmd_simulate(args: argparse.Namespace) -> int:
 
 
 def _cmd_fit_table3(args: argparse.Namespace) -> int:
-    from .library import shipped_table3_geometry, table3_fit, write_table3_geometry
+    from .cli_library import fit_table3
 
-    fit = table3_fit()
-    print(fit.report())
-    d, ls = shipped_table3_geometry()
-    print(
-        f"shipped geometry: diameter {d!r} m, shank length {ls!r} m; fit minus shipped: "
-        f"{fit.diameter - d:.3g} m, {fit.shank_length - ls:.3g} m"
-    )
-    if args.write:
-        from .atomic import WriteError
-
-        try:
-            write_table3_geometry(fit, args.write)
-        except WriteError as exc:
-            raise _Failure(str(exc), 1) from None
-        print(f"wrote {args.write}")
-    return 0
+    return fit_table3(args)
 
 
 def _cmd_list(args: argparse.Namespace) -> int:
-    from .library import MEDIA, get_projectile, projectile_names
+    from .cli_library import list_library
 
-    print("projectiles:")
-    print(f"  {'name':<18} {'mass_kg':>9} {'Lc/L':>6} {'diameter_mm':>11}  source")
-    for name in projectile_names():
-        p = get_projectile(name)
-        mp = p.mass_properties()
-        print(
-            f"  {name:<18} {mp.mass:9.3f} {mp.lc_over_l:6.3f} {p.diameter * 1e3:11.2f}  {p.source}"
-        )
-    print()
-    print("targets (normal stress = a0 + a1 Vn + a2 Vn^2; a0 Pa, a1 Pa s/m, a2 Pa s^2/m^2):")
-    for name in sorted(MEDIA):
-        m = MEDIA[name]
-        coef = ", ".join(f"a{i}={c:.4g}" for i, c in enumerate(m.coefficients))
-        fric = "frictionless" if m.frictionless else f"friction mu={m.friction_mu}"
-        print(f"  {name:<10} {coef}; density {m.density:g} kg/m^3; {fric}")
-        print(f"  {'':<10} source: {m.source}")
-    return 0
+    return list_library(args)
 
 
 def _cmd_ballistic_limit(args: argparse.Namespace) -> int:
