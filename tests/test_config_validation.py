@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from helpers import heavy_modules_after
 
 from pencore.config_check import ConfigError, check_config, schema_error_message
 
@@ -143,13 +144,10 @@ def test_snakemake_stops_at_parse_time_with_a_short_message(tmp_path, text, need
     assert len(out.strip().splitlines()) <= 5, out  # no schema dump, no traceback
 
 
-# Modules that take ~1.3 s to import (the solver's kernels, scipy.stats, xarray) and that
-# the Snakefile has no use for: it only checks the configuration, hashes sources and
-# lists job parts, at every Snakemake start (each dry run, targeted rerun, cluster job).
-HEAVY = ("numba", "scipy", "xarray", "pandas", "matplotlib", "pencore.solver")
-
-
 def test_snakefile_imports_stay_light():
+    """At every Snakemake start (each dry run, targeted rerun, cluster job) the Snakefile
+    only checks the configuration, hashes sources and lists job parts: none of that may
+    load the solver's kernels, scipy, xarray or matplotlib (~1.3 s, helpers.HEAVY_MODULES)."""
     # the pencore imports of the Snakefile and of every rule file, as written there
     sources = [REPO / "Snakefile", *sorted((REPO / "workflow" / "rules").glob("*.smk"))]
     imports = [
@@ -161,7 +159,7 @@ def test_snakefile_imports_stay_light():
     assert imports, "found no pencore import in the workflow (the test reads nothing)"
     code = "\n".join(
         [
-            "import sys, yaml",
+            "import yaml",
             *imports,
             "from pencore.config_check import check_config",
             "from pencore.studies.sources import physics_source_hash, plotting_source_hash",
@@ -170,10 +168,7 @@ def test_snakefile_imports_stay_light():
             f"check_config(cfg, {str(REPO)!r})",
             "physics_source_hash(); plotting_source_hash()",
             "[parts_of(s, cfg['section4'][s]) for s in SPLIT_STUDIES]",
-            f"print(sorted(m for m in {HEAVY!r} if m in sys.modules))",
         ]
     )
-    out = subprocess.run(
-        [sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=REPO
-    )
-    assert out.stdout.strip() == "[]", f"the Snakefile's start loads {out.stdout.strip()}"
+    loaded = heavy_modules_after(code, cwd=REPO)
+    assert loaded == [], f"the Snakefile's start loads {loaded}"
