@@ -8,7 +8,8 @@ import yaml
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
-from pencore.config_check import ConfigError, check_config, schema_error_message
+from pencore.errors import ConfigError
+from pencore.studies.config_check import check_config, schema_error_message
 from pencore.studies.sources import physics_source_hash, plotting_source_hash
 
 min_version("9.0")
@@ -18,7 +19,7 @@ configfile: "config/config.yaml"
 
 
 # A bad config stops here with one line naming the key path (Snakemake's own message
-# would print the whole schema; pencore.config_check adds what a schema cannot say).
+# would print the whole schema; pencore.studies.config_check adds what a schema cannot say).
 try:
     validate(config, "workflow/schemas/config.schema.yaml")
     check_config(config, workflow.basedir)

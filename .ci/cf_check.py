@@ -2,7 +2,7 @@
 
 Checks (a) a file pencore writes now (``pencore simulate --out``), (b) every file under
 ``results/archive/``, and (c) any files given on the command line, against the CF version
-the files declare (``pencore.io.CF_CONVENTIONS``). Prints the error count per file and
+the files declare (``pencore.io.netcdf.CF_CONVENTIONS``). Prints the error count per file and
 exits 1 if any file has an error. Run ``bash .ci/install-cf-checker.sh`` first.
 
 Usage: python .ci/cf_check.py [FILE.nc ...]
@@ -37,7 +37,7 @@ def errors(path: Path, version: str) -> tuple[int, list[str]]:
 
 
 def main() -> int:
-    from pencore.io import CF_CONVENTIONS
+    from pencore.io.netcdf import CF_CONVENTIONS
 
     version = CF_CONVENTIONS.removeprefix("CF-")
     with tempfile.TemporaryDirectory() as tmp:

@@ -1,5 +1,5 @@
 """The attribution table of the README: the paper's disputed quantities, setting by
-setting (pencore.attribution.disputed_quantities), run one at a time.
+setting (pencore.paper.attribution.disputed_quantities), run one at a time.
 
 Writes benchmarks/results/attribution.csv (one row per setting: the quantities, their
 differences from the paper, wall times) and prints a markdown table.
@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from pencore.attribution import disputed_quantities, paper_comparison
+from pencore.paper.attribution import disputed_quantities, paper_comparison
 
 OUT = Path(__file__).parent / "results" / "attribution.csv"
 FE_COARSE = {"n_nose": 16, "n_shank": 16}

@@ -40,18 +40,18 @@ import numba as nb
 import numpy as np
 
 import pencore
-from pencore.arcs import _MAXD, _poly_centred_arc_integrals, ring_height_terms
-from pencore.bands import band_eps, band_half_height
-from pencore.dynamics import (
+from pencore.kernels.arcs import _MAXD, _poly_centred_arc_integrals, ring_height_terms, side_poly
+from pencore.kernels.bands import band_eps, band_half_height
+from pencore.kernels.dynamics import (
     body_velocity,
     contact_loads,
     quat_to_matrix,
     ring_velocity_terms,
-    side_poly,
 )
-from pencore.forces import default_model, rhs_model
-from pencore.jacobian import model_load_jacobian
-from pencore.solver import _run, initial_state, prepare
+from pencore.kernels.forces import default_model, rhs_model
+from pencore.kernels.jacobian import model_load_jacobian
+from pencore.run.impact import _run, prepare
+from pencore.run.initial import initial_state
 
 CASE = "p2, soil, obliquity 45 deg, 1000 m/s, default numerics"
 

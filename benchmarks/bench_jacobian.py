@@ -20,8 +20,9 @@ from pathlib import Path
 import pandas as pd
 
 import pencore
-from pencore import analysis, critical
-from pencore.solver import prepare
+from pencore import analysis
+from pencore.run.impact import prepare
+from pencore.search import critical
 
 AGES = [1, 2, 4, 6, 8, 12, 16]
 

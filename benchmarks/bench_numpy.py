@@ -1,8 +1,8 @@
 """pencore against the numpy form of the same force law, in one run (reported, never asserted).
 
-The numpy form: the DAFL traction of :mod:`pencore.dynamics` (smoothed Heaviside
+The numpy form: the DAFL traction of :mod:`pencore.kernels.dynamics` (smoothed Heaviside
 ``clip((Vn + eps) / (2 eps), 0, 1)``, on the shank widened as
-:func:`pencore.bands.band_eps` does, frictionless, one half-space layer) evaluated on
+:func:`pencore.kernels.bands.band_eps` does, frictionless, one half-space layer) evaluated on
 ``n_phi`` points around every ring by vectorised numpy, and integrated with scipy's
 ``solve_ivp`` (BDF, a stiff method as the law needs); pencore evaluates each ring in
 closed form in compiled code and integrates with its compiled Rosenbrock pair.
@@ -27,8 +27,9 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 import pencore
-from pencore.dynamics import contact_loads, quat_to_matrix
-from pencore.solver import initial_state, prepare
+from pencore.kernels.dynamics import contact_loads, quat_to_matrix
+from pencore.run.impact import prepare
+from pencore.run.initial import initial_state
 
 CASE = dict(velocity=1000.0, obliquity=45.0)
 
@@ -48,7 +49,7 @@ def numpy_loads(y: np.ndarray, rings: np.ndarray, a: np.ndarray, eps: float, n_p
     vn = np.einsum("ijk,ijk->ij", u, n)
     height = y[1] + p @ rot[1]
     sigma = a[0] + a[1] * vn + a[2] * vn * vn
-    # the shank bands' step widened by the spread of Vn along them (pencore.bands.band_eps)
+    # the shank bands' step widened by the spread of Vn along them (pencore.kernels.bands.band_eps)
     spread = np.where(na == 0.0, 0.5 * wt / r * math.hypot(w[1], w[2]), 0.0)
     e = np.sqrt(eps * eps + spread * spread)
     h = np.clip((vn + e) / (2.0 * e), 0.0, 1.0) * (height <= 0.0)

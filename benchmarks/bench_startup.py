@@ -10,7 +10,7 @@ empty directory, so the runs are:
 * ``warmup``: the install step itself on that empty cache;
 * ``warm``: a fresh process after the warm-up (what a clone that ran the set-up
   commands, a CI run after ``.ci/run``'s install, and every workflow job pay);
-* ``import``: a fresh process that only imports the solver (``pencore.solver``; the
+* ``import``: a fresh process that only imports the solver (``pencore.run.impact``; the
   package itself imports its names on first use);
 * ``snakemake_dry_run``: ``python -m snakemake -n`` of the whole workflow in this
   repository (parse, configuration check, DAG): what every Snakemake start costs before
@@ -66,7 +66,7 @@ def main() -> None:
             rows.append(("warmup", timed(["-m", "pencore.warmup"], env2)))
             warm = [timed(["-c", FIRST], env2) for _ in range(args.repeats)]
         rows.append(("warm", statistics.median(warm)))
-        imp = [timed(["-c", "import pencore.solver"], env) for _ in range(args.repeats)]
+        imp = [timed(["-c", "import pencore.run.impact"], env) for _ in range(args.repeats)]
         rows.append(("import", statistics.median(imp)))
     if importlib.util.find_spec("snakemake") is None:
         print("bench_startup: Snakemake is not installed; no snakemake_dry_run figure")

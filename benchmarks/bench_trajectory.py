@@ -19,7 +19,7 @@ import statistics
 import time
 
 import pencore
-from pencore.solver import prepare, run_impact
+from pencore.run.impact import prepare, run_impact
 
 
 def main() -> None:
@@ -40,7 +40,7 @@ def main() -> None:
         ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0, prepared=pr)
         walls.append(time.perf_counter() - t)
     # the raw run without its Dataset: what each verdict of a search (Vcr, Vci, omega_c)
-    # and each attribution run costs (pencore.solver.run_impact, the same run to the bit)
+    # and each attribution run costs (pencore.run.impact.run_impact, the same run to the bit)
     raw = []
     for _ in range(args.repeats):
         t = time.perf_counter()

@@ -24,9 +24,10 @@ from pathlib import Path
 import pandas as pd
 
 import pencore
-from pencore import analysis, closedform, critical
-from pencore.library import MEDIA, get_projectile
-from pencore.solver import prepare
+from pencore import analysis, closedform
+from pencore.inputs.library import MEDIA, get_projectile
+from pencore.run.impact import prepare
+from pencore.search import critical
 
 DEFAULT = pencore.Numerics()
 SWEEPS: dict[str, list] = {

@@ -1,6 +1,6 @@
 """Convergence of the paper-emulation numerics and of the cavity shank model's limit.
 
-pencore.models.Emulation emulates an explicit FE code (faceted panels with a point load
+pencore.inputs.models.Emulation emulates an explicit FE code (faceted panels with a point load
 each, fixed-step central difference with the pure Heaviside). Refined, each must tend to
 pencore's default solution of the same model; the cavity shank model must tend to the
 DAFL as its wall stiffens (delta_ref -> 0). For projectile #2 in soil:

@@ -56,7 +56,7 @@ def main() -> None:
     )  # fmt: skip
     rows.append(
         ("trajectory_raw_run", traj["raw_run_s_median"] * 1e3, "ms", float("nan"),
-         f"{traj['case']}; the same run without its Dataset (pencore.solver.run_impact), "
+         f"{traj['case']}; the same run without its Dataset (pencore.run.impact.run_impact), "
          "as each verdict of a search takes it; median")
     )  # fmt: skip
     # how far the same discretisation could go: every right-hand side at the arithmetic

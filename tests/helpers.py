@@ -9,7 +9,7 @@ from pathlib import Path
 
 #: Modules that cost a start ~1 s together (the solver's kernels, scipy, xarray with
 #: pandas, matplotlib) and that light entry points must not load.
-HEAVY_MODULES = ("numba", "scipy", "xarray", "pandas", "matplotlib", "pencore.solver")
+HEAVY_MODULES = ("numba", "scipy", "xarray", "pandas", "matplotlib", "pencore.run.impact")
 
 
 def assert_one_line_error(err: str, *needles: str) -> None:

@@ -1,4 +1,4 @@
-"""The closed-form arc integrals of pencore.arcs against each other and quadrature."""
+"""The closed-form arc integrals of pencore.kernels.arcs against each other and quadrature."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from pencore.arcs import (
+from pencore.kernels.arcs import (
     TWO_PI,
     _level_arc,
     _poly_arc_cubic_moments,

@@ -1,5 +1,5 @@
 """Writes either complete or leave nothing: real disk-full, file-size-limit, SIGKILL and
-SIGTERM failures of ``pencore.io.write_netcdf`` and ``pencore simulate --out``."""
+SIGTERM failures of ``pencore.io.netcdf.write_netcdf`` and ``pencore simulate --out``."""
 
 from __future__ import annotations
 
@@ -17,8 +17,9 @@ import pytest
 import xarray as xr
 from helpers import assert_one_line_error
 
-from pencore.atomic import TEMP_MARK, WriteError, atomic_path
-from pencore.io import read_netcdf, write_netcdf
+from pencore.errors import WriteError
+from pencore.io.atomic import TEMP_MARK, atomic_path
+from pencore.io.netcdf import read_netcdf, write_netcdf
 
 # a dataset of ~1.6 MB that compresses poorly (random numbers)
 BIG = """
@@ -52,8 +53,8 @@ def test_disk_full_is_one_line_and_leaves_nothing(tiny_disk):
     r = _python(
         BIG
         + f"""
-from pencore.io import write_netcdf
-from pencore.atomic import WriteError
+from pencore.io.netcdf import write_netcdf
+from pencore.errors import WriteError
 try:
     write_netcdf(ds, {str(tiny_disk / "out.nc")!r}, config_slice={{}}, study="t")
 except WriteError as exc:
@@ -88,8 +89,8 @@ def test_file_size_limit_mid_write(tmp_path):
 import resource, signal
 signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
 resource.setrlimit(resource.RLIMIT_FSIZE, (65536, 65536))
-from pencore.io import write_netcdf
-from pencore.atomic import WriteError
+from pencore.io.netcdf import write_netcdf
+from pencore.errors import WriteError
 try:
     write_netcdf(ds, {str(out)!r}, config_slice={{}}, study="t")
 except WriteError as exc:
@@ -108,7 +109,7 @@ def _start_slow_write(out: Path) -> subprocess.Popen:
         BIG
         + f"""
 import time
-from pencore.atomic import atomic_path
+from pencore.io.atomic import atomic_path
 with atomic_path({str(out)!r}) as tmp:
     ds.to_netcdf(tmp)
     print("writing", flush=True)

@@ -1,4 +1,4 @@
-"""The attribution driver (pencore.attribution): one setting, every disputed quantity."""
+"""The attribution driver (pencore.paper.attribution): one setting, every disputed quantity."""
 
 import math
 
@@ -6,7 +6,7 @@ import pytest
 
 import pencore
 from pencore import analysis
-from pencore.attribution import PAPER, disputed_quantities, paper_comparison
+from pencore.paper.attribution import PAPER, disputed_quantities, paper_comparison
 
 
 @pytest.fixture(scope="module")

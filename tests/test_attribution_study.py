@@ -6,17 +6,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pencore.attribution import PAPER, disputed_quantities
-from pencore.config_check import ConfigError, check_config
-from pencore.studies.attribution import (
-    NUMBERS,
-    _miss,
-    attribution_table,
-    check_settings,
-    gather,
-    run_setting,
-)
-from pencore.validate import InputError
+from pencore.errors import ConfigError, InputError
+from pencore.paper.attribution import PAPER, disputed_quantities
+from pencore.paper.choices import check_settings
+from pencore.studies.attribution import NUMBERS, _miss, attribution_table, gather, run_setting
+from pencore.studies.config_check import check_config
 
 
 @pytest.mark.parametrize(

@@ -21,7 +21,9 @@ import pytest
 from helpers import assert_one_line_error
 
 import pencore
-from pencore.cli import main
+from pencore.cli.main import main
+from pencore.inputs import geometry, library, target
+from pencore.inputs.numerics import resolve_numerics
 
 HANG_GUARD_S = 20.0  # refused before integrating: measured < 0.1 s each
 
@@ -119,46 +121,46 @@ API_OBJECT_CASES = [
     (lambda: pencore.simulate("p2", "soil", 300.0, prepared="x"), "prepared", "'x'"),
     (lambda: pencore.Numerics(rtol=-1.0), "rtol", "-1.0"),
     (lambda: pencore.Numerics(method="fast"), "method", "'fast'"),
-    (lambda: pencore.Numerics.from_mapping([1, 2]), "numerics", "[1, 2]"),
-    (lambda: pencore.target.Medium("m", (1e6, 0.0, -10.0)), "a2", "-10.0"),
-    (lambda: pencore.target.Medium("m", (0.0, 0.0, 0.0)), "every resistance", "zero"),
-    (lambda: pencore.target.Medium("m", (1e6,), (0.0,), (-0.1,)), "friction", "-0.1"),
-    (lambda: pencore.target.Medium("m", (1e6,), (0.0, 0.0), (0.1, 0.2)), "increase", "0.0"),
-    (lambda: pencore.target.Medium("m", "1e6"), "coefficients", "list"),
+    (lambda: resolve_numerics([1, 2]), "numerics", "[1, 2]"),
+    (lambda: target.Medium("m", (1e6, 0.0, -10.0)), "a2", "-10.0"),
+    (lambda: target.Medium("m", (0.0, 0.0, 0.0)), "every resistance", "zero"),
+    (lambda: target.Medium("m", (1e6,), (0.0,), (-0.1,)), "friction", "-0.1"),
+    (lambda: target.Medium("m", (1e6,), (0.0, 0.0), (0.1, 0.2)), "increase", "0.0"),
+    (lambda: target.Medium("m", "1e6"), "coefficients", "list"),
     (
-        lambda: pencore.target.Target(
+        lambda: target.Target(
             "slab",
             (
-                pencore.target.Layer(pencore.library.MEDIA["soil"], 1.0),
-                pencore.target.Layer.gap(0.5),
+                target.Layer(library.MEDIA["soil"], 1.0),
+                target.Layer.gap(0.5),
             ),
         ),
         "gap must lie between",
         "layer 1",
     ),
     (
-        lambda: pencore.target.Target(
+        lambda: target.Target(
             "t",
             (
-                pencore.target.Layer(pencore.library.MEDIA["soil"]),
-                pencore.target.Layer(pencore.library.MEDIA["soil"]),
+                target.Layer(library.MEDIA["soil"]),
+                target.Layer(library.MEDIA["soil"]),
             ),
         ),
         "only the last layer",
         "layer 0",
     ),
-    (lambda: pencore.geometry.OgiveNose(0.4, 7850.0), "CRH", "0.4"),
-    (lambda: pencore.geometry.OgiveNose(1e12, 7850.0), "CRH", "1000000000000.0"),
-    (lambda: pencore.geometry.OgiveNose(3.0, 1e6), "density", "1000000.0"),
-    (lambda: pencore.geometry.ConeNose(math.pi, 7850.0), "half-angle", "180"),
-    (lambda: pencore.geometry.Cylinder(-0.5, 7850.0), "segment length", "-0.5"),
+    (lambda: geometry.OgiveNose(0.4, 7850.0), "CRH", "0.4"),
+    (lambda: geometry.OgiveNose(1e12, 7850.0), "CRH", "1000000000000.0"),
+    (lambda: geometry.OgiveNose(3.0, 1e6), "density", "1000000.0"),
+    (lambda: geometry.ConeNose(math.pi, 7850.0), "half-angle", "180"),
+    (lambda: geometry.Cylinder(-0.5, 7850.0), "segment length", "-0.5"),
     (
-        lambda: pencore.geometry.Projectile("x", 1e200, pencore.geometry.OgiveNose(3.0, 7850.0)),
+        lambda: geometry.Projectile("x", 1e200, geometry.OgiveNose(3.0, 7850.0)),
         "diameter",
         "1e+200",
     ),
     (
-        lambda: pencore.geometry.Projectile("x", True, pencore.geometry.OgiveNose(3.0, 7850.0)),
+        lambda: geometry.Projectile("x", True, geometry.OgiveNose(3.0, 7850.0)),
         "diameter",
         "True",
     ),
@@ -384,8 +386,8 @@ def test_results_grow_instead_of_being_preallocated():
 
 
 def test_readme_states_the_ranges_the_code_checks():
-    """The README's table of valid ranges is the one pencore.validate enforces."""
-    from pencore.validate import limits_markdown
+    """The README's table of valid ranges is the one pencore.inputs.limits enforces."""
+    from pencore.inputs.limits import limits_markdown
 
     readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
     assert limits_markdown() in readme

@@ -1,4 +1,4 @@
-"""The shank band's widened contact step (pencore.bands.band_eps): its closed form,
+"""The shank band's widened contact step (pencore.kernels.bands.band_eps): its closed form,
 where it applies, and the continuity it gives the shank's load."""
 
 from __future__ import annotations
@@ -8,9 +8,9 @@ import math
 import numpy as np
 import pytest
 
-from pencore.bands import band_eps
-from pencore.dynamics import contact_loads
-from pencore.solver import prepare
+from pencore.kernels.bands import band_eps
+from pencore.kernels.dynamics import contact_loads
+from pencore.run.impact import prepare
 
 EPS = 1e-3
 

@@ -1,4 +1,4 @@
-"""The band immersion ramp of the ring quadrature (pencore.arcs.band_regions).
+"""The band immersion ramp of the ring quadrature (pencore.kernels.arcs.band_regions).
 
 Each ring stands for a band of the surface; the share of the band below a level is a
 linear ramp over the band's height range instead of a step at the ring's line. Tests:
@@ -15,10 +15,11 @@ import numpy as np
 import pytest
 
 from pencore import get_target
-from pencore.dynamics import band_half_height, contact_loads
-from pencore.initial import initial_state
-from pencore.solver import prepare
-from pencore.target import Layer, Target
+from pencore.inputs.target import Layer, Target
+from pencore.kernels.bands import band_half_height
+from pencore.kernels.dynamics import contact_loads
+from pencore.run.impact import prepare
+from pencore.run.initial import initial_state
 
 SOIL = get_target("soil").medium
 

@@ -1,6 +1,6 @@
 """The arithmetic-floor kernel of ``benchmarks/bench_floor.py`` computes the loads it
 claims to: on a wholly immersed state (every ring a whole ring of one layer) it is the
-same arithmetic as :func:`pencore.dynamics.contact_loads`, so the floor the README
+same arithmetic as :func:`pencore.kernels.dynamics.contact_loads`, so the floor the README
 quotes is a floor of *this* kernel's work and not of a cheaper, different sum."""
 
 from __future__ import annotations
@@ -10,8 +10,9 @@ import math
 import numpy as np
 import pytest
 
-from pencore.dynamics import contact_loads
-from pencore.solver import _run, initial_state, prepare
+from pencore.kernels.dynamics import contact_loads
+from pencore.run.impact import _run, prepare
+from pencore.run.initial import initial_state
 
 
 @pytest.fixture(scope="module")

@@ -6,11 +6,11 @@ from __future__ import annotations
 import pandas as pd
 import pytest
 
-from pencore.attribution import PAPER as ATTRIBUTION_PAPER
-from pencore.io import read_netcdf
-from pencore.studies.claims import CLAIMS_FILE, at, load_claims, paper_values
+from pencore.errors import InputError
+from pencore.io.netcdf import read_netcdf
+from pencore.paper.attribution import PAPER as ATTRIBUTION_PAPER
+from pencore.paper.claims import CLAIMS_FILE, at, load_claims, paper_values
 from pencore.studies.comparison import HANDLERS, paper_comparison
-from pencore.validate import InputError
 
 ARCHIVE = CLAIMS_FILE.parents[1] / "results" / "archive"
 

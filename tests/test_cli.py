@@ -14,7 +14,7 @@ import xarray as xr
 from helpers import assert_one_line_error, heavy_modules_after
 
 import pencore
-from pencore.cli import main
+from pencore.cli.main import main
 
 BASE = ["simulate", "--projectile", "p2", "--target", "soil"]
 DEPTH_RE = re.compile(r"^penetration depth:\s+(\S+) m$", re.MULTILINE)
@@ -207,7 +207,7 @@ def test_unwritable_output_dir_checked_before_running(tmp_path, capsys, monkeypa
     """The writability probe runs before the simulation (even for root)."""
     import tempfile
 
-    import pencore.solver
+    import pencore.run.impact
 
     def deny(*args, **kwargs):
         raise PermissionError(13, "Permission denied")
@@ -216,7 +216,7 @@ def test_unwritable_output_dir_checked_before_running(tmp_path, capsys, monkeypa
         raise AssertionError("simulate() ran before the output path was checked")
 
     monkeypatch.setattr(tempfile, "mkstemp", deny)
-    monkeypatch.setattr(pencore.solver, "simulate", must_not_run)
+    monkeypatch.setattr(pencore.run.impact, "simulate", must_not_run)
     out = tmp_path / "x.nc"
     assert main([*BASE, "--velocity", "280", "--out", str(out)]) == 2
     assert_one_line_error(capsys.readouterr().err, "not writable", "Permission denied")
@@ -242,12 +242,12 @@ def test_argparse_errors_are_one_line(capsys):
 
 
 def test_solver_error_exit_1(tmp_path, capsys, monkeypatch):
-    import pencore.solver
+    import pencore.run.impact
 
     def fail(*args, **kwargs):
         raise pencore.SolverError("step limit of 10 steps reached at t = 0.001 s")
 
-    monkeypatch.setattr(pencore.solver, "simulate", fail)
+    monkeypatch.setattr(pencore.run.impact, "simulate", fail)
     out = tmp_path / "x.nc"
     assert main([*BASE, "--velocity", "280", "--out", str(out)]) == 1
     assert_one_line_error(capsys.readouterr().err, "step limit")
@@ -389,7 +389,7 @@ def test_bad_velocity_subprocess(tmp_path):
 def test_list(capsys):
     assert main(["list"]) == 0
     text = capsys.readouterr().out
-    for name in pencore.library.projectile_names() + pencore.library.target_names():
+    for name in pencore.inputs.library.projectile_names() + pencore.inputs.library.target_names():
         assert name in text
     assert "mass_kg" in text and "diameter_mm" in text and "source" in text
 
@@ -397,7 +397,7 @@ def test_list(capsys):
 def test_fit_table3(capsys):
     assert main(["fit-table3"]) == 0
     out = capsys.readouterr().out
-    assert out.startswith(pencore.library.table3_fit().report())
+    assert out.startswith(pencore.inputs.library.table3_fit().report())
     assert "shipped geometry: diameter" in out
 
 
@@ -413,14 +413,14 @@ def test_fit_table3_write_round_trips_the_shipped_file(tmp_path, capsys):
     out = tmp_path / "geometry.yaml"
     assert main(["fit-table3", "--write", str(out)]) == 0
     written = out.read_text().splitlines()
-    shipped = pencore.library.TABLE3_GEOMETRY_FILE.read_text().splitlines()
+    shipped = pencore.inputs.library.TABLE3_GEOMETRY_FILE.read_text().splitlines()
     assert [ln if ln.startswith("#") else ln.split(":")[0] for ln in written] == [
         ln if ln.startswith("#") else ln.split(":")[0] for ln in shipped
     ]
-    fit = pencore.library.table3_fit()
-    new = pencore.library.shipped_table3_geometry(out)
+    fit = pencore.inputs.library.table3_fit()
+    new = pencore.inputs.library.shipped_table3_geometry(out)
     assert new == (fit.diameter, fit.shank_length)  # written to the last digit
-    assert np.allclose(new, pencore.library.shipped_table3_geometry(), rtol=0, atol=1e-10)
+    assert np.allclose(new, pencore.inputs.library.shipped_table3_geometry(), rtol=0, atol=1e-10)
     capsys.readouterr()
     assert main(["fit-table3", "--write", str(tmp_path / "no" / "g.yaml")]) == 1
     err = capsys.readouterr().err

@@ -1,5 +1,5 @@
 """The workflow configuration is checked when the Snakefile is parsed: every bad entry
-stops with one line naming the key path and the value (pencore.config_check)."""
+stops with one line naming the key path and the value (pencore.studies.config_check)."""
 
 from __future__ import annotations
 
@@ -13,7 +13,8 @@ import pytest
 import yaml
 from helpers import heavy_modules_after
 
-from pencore.config_check import ConfigError, check_config, schema_error_message
+from pencore.errors import ConfigError
+from pencore.studies.config_check import check_config, schema_error_message
 
 REPO = Path(__file__).resolve().parents[1]
 SHIPPED = yaml.safe_load((REPO / "config" / "config.yaml").read_text())
@@ -161,7 +162,7 @@ def test_snakefile_imports_stay_light():
         [
             "import yaml",
             *imports,
-            "from pencore.config_check import check_config",
+            "from pencore.studies.config_check import check_config",
             "from pencore.studies.sources import physics_source_hash, plotting_source_hash",
             "from pencore.studies.parts import SPLIT_STUDIES, parts_of",
             f"cfg = yaml.safe_load(open({str(REPO / 'config' / 'config.yaml')!r}))",

@@ -1,4 +1,4 @@
-"""pencore.critical: threshold search on synthetic verdicts, plus one cheap solver check."""
+"""pencore.search.critical: threshold search on synthetic verdicts, plus one cheap solver check."""
 
 from __future__ import annotations
 
@@ -8,8 +8,10 @@ import numpy as np
 import pytest
 
 import pencore
-from pencore import critical as C
-from pencore.library import InputError
+from pencore.errors import InputError
+from pencore.inputs import conventions
+from pencore.search import critical as C
+from pencore.search import threshold as T
 
 
 class Counter:
@@ -28,7 +30,7 @@ class Counter:
 def test_step_verdict_found_within_tol(tol):
     thr = 1234.567
     v = Counter(lambda x: x >= thr)
-    r = C.find_threshold(v, 100.0, 4000.0, tol)
+    r = T.find_threshold(v, 100.0, 4000.0, tol)
     assert r.status == "ok" and r.monotone and r.converged
     assert r.hi - r.lo <= tol
     assert r.lo < thr <= r.hi
@@ -43,7 +45,7 @@ def test_step_verdict_found_within_tol(tol):
 
 
 def test_scan_on_monotone_verdict():
-    r = C.find_threshold(lambda x: x > 7.3, 0.0, 10.0, 0.01, scan=5)
+    r = T.find_threshold(lambda x: x > 7.3, 0.0, 10.0, 0.01, scan=5)
     assert r.status == "ok" and r.monotone and "monotone" in r.message
     assert 7.5 >= r.hi >= r.lo >= 5.0 and r.lo < 7.3 <= r.hi
     # each value evaluated once even when scan and bisection meet
@@ -53,7 +55,7 @@ def test_scan_on_monotone_verdict():
 
 def test_below_range():
     v = Counter(lambda x: x > 50.0)
-    r = C.find_threshold(v, 100.0, 200.0, 1.0, scan=5)
+    r = T.find_threshold(v, 100.0, 200.0, 1.0, scan=5)
     assert r.status == "below_range" and math.isnan(r.value)
     assert r.hi == 100.0 and math.isnan(r.lo)
     assert r.n_evals == 1 and v.calls == [100.0]
@@ -61,7 +63,7 @@ def test_below_range():
 
 
 def test_above_range():
-    r = C.find_threshold(lambda x: x > 500.0, 100.0, 200.0, 1.0)
+    r = T.find_threshold(lambda x: x > 500.0, 100.0, 200.0, 1.0)
     assert r.status == "above_range" and math.isnan(r.value)
     assert r.lo == 200.0 and math.isnan(r.hi)
     assert r.n_evals == 2 and r.history == ((100.0, False), (200.0, False))
@@ -74,7 +76,7 @@ def _wavy(x: float) -> bool:
 
 
 def test_non_monotone_flagged_and_lowest_threshold_found():
-    r = C.find_threshold(_wavy, 0.0, 10.0, 0.05, scan=11)
+    r = T.find_threshold(_wavy, 0.0, 10.0, 0.05, scan=11)
     assert r.status == "non_monotone" and not r.monotone and r.converged
     assert r.lo < 3.0 <= r.hi and r.hi - r.lo <= 0.05  # the FIRST transition
     # the message names where the verdict flips: up near 3, down near 5, up near 7
@@ -86,24 +88,24 @@ def test_non_monotone_flagged_and_lowest_threshold_found():
 
 def test_non_monotone_missed_without_scan():
     # documented limitation: without a scan, bisection may land on any transition
-    r = C.find_threshold(_wavy, 0.0, 10.0, 0.05)
+    r = T.find_threshold(_wavy, 0.0, 10.0, 0.05)
     assert r.monotone and r.status == "ok" and "not checked" in r.message
     assert any(abs(r.value - c) < 0.05 for c in (3.0, 5.0, 7.0))
 
 
 def test_max_iter():
-    r = C.find_threshold(lambda x: x > 0.123, 0.0, 1.0, 1e-9, max_iter=5)
+    r = T.find_threshold(lambda x: x > 0.123, 0.0, 1.0, 1e-9, max_iter=5)
     assert r.status == "max_iter" and not r.converged
     assert r.hi - r.lo == pytest.approx(1.0 / 32) and r.lo < 0.123 <= r.hi
 
 
 def test_bad_arguments():
     with pytest.raises(InputError):
-        C.find_threshold(lambda x: True, 2.0, 1.0, 0.1)
+        T.find_threshold(lambda x: True, 2.0, 1.0, 0.1)
     with pytest.raises(InputError):
-        C.find_threshold(lambda x: True, 1.0, 2.0, 0.0)
+        T.find_threshold(lambda x: True, 1.0, 2.0, 0.0)
     with pytest.raises(InputError):
-        C.find_threshold(lambda x: True, 1.0, 2.0, 0.1, scan=1)
+        T.find_threshold(lambda x: True, 1.0, 2.0, 0.1, scan=1)
     with pytest.raises(InputError, match="set by the search"):
         C.vcr("p2", "soil", 60.0, velocity=100.0)
     with pytest.raises(InputError, match="unknown"):
@@ -113,8 +115,8 @@ def test_bad_arguments():
 
 
 def test_constants_and_to_dict():
-    assert C.VELOCITY_TOL == 5.0 and C.OMEGA_TOL == 0.5
-    d = C.find_threshold(lambda x: x > 1.0, 0.0, 2.0, 0.1).to_dict()
+    assert T.VELOCITY_TOL == 5.0 and T.OMEGA_TOL == 0.5
+    d = T.find_threshold(lambda x: x > 1.0, 0.0, 2.0, 0.1).to_dict()
     assert d["status"] == "ok" and isinstance(d["history"], list)
     assert d["history"][0] == [0.0, False]
 
@@ -134,14 +136,14 @@ def test_vcr_bracket_is_real():
 
 
 def test_normal_impact_angles():
-    assert C.YAW_CONVENTIONS == ("axis_tilted", "velocity_tilted")
-    assert C.normal_impact_angles(0.1, "axis_tilted") == (0.1, -0.1)
-    assert C.normal_impact_angles(0.1, "velocity_tilted") == (0.0, 0.1)
+    assert conventions.YAW_CONVENTIONS == ("axis_tilted", "velocity_tilted")
+    assert conventions.normal_impact_angles(0.1, "axis_tilted") == (0.1, -0.1)
+    assert conventions.normal_impact_angles(0.1, "velocity_tilted") == (0.0, 0.1)
     # axis_tilted: velocity angle obliquity + yaw is exactly normal
-    obl, yaw = C.normal_impact_angles(0.7)
+    obl, yaw = conventions.normal_impact_angles(0.7)
     assert obl + yaw == 0.0 and obl == 0.7
     with pytest.raises(InputError, match="convention"):
-        C.normal_impact_angles(0.1, "sideways")
+        conventions.normal_impact_angles(0.1, "sideways")
     with pytest.raises(InputError, match="convention"):
         C.vci("p4", "soil", 0.1, 200.0, 3000.0, threshold_deg=5.0, convention="x")
 
@@ -166,7 +168,7 @@ def test_vci_shared_runs_identical_to_separate_searches():
 
 def test_run_impact_is_simulate_without_the_dataset():
     # the searches judge the raw run: it must be the very run simulate() stores
-    from pencore.solver import run_impact
+    from pencore.run.impact import run_impact
 
     kw = dict(obliquity=45.0, start=(-1.0, 1.0, 0.0), stop_at_reversal=True)
     ds = pencore.simulate("p2", "soil", 1700.0, **kw)

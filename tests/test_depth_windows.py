@@ -17,10 +17,11 @@ import numpy as np
 import pytest
 
 from pencore import closedform, get_projectile, get_target, simulate
-from pencore.dynamics import contact_loads
-from pencore.initial import initial_state
-from pencore.library import target_from_dict
-from pencore.target import Layer, Target, TargetError
+from pencore.errors import TargetError
+from pencore.inputs.library import target_from_dict
+from pencore.inputs.target import Layer, Target
+from pencore.kernels.dynamics import contact_loads
+from pencore.run.initial import initial_state
 
 CONCRETE = get_target("concrete").medium
 P2 = get_projectile("p2")
@@ -114,7 +115,7 @@ def test_windows_need_the_diameter():
 
 
 def test_yaml_keys_and_their_limits():
-    from pencore.validate import InputError
+    from pencore.errors import InputError
 
     medium = {"name": "c", "coefficients": [283.5e6, 0.0, 1960.0], "crater_depth": 2.0}
     t = target_from_dict({"name": "t", "layers": [{"medium": medium}]})

@@ -1,4 +1,4 @@
-"""Paper-emulation numerics (pencore.models.Emulation): the faceted panel surface and
+"""Paper-emulation numerics (pencore.inputs.models.Emulation): the faceted panel surface and
 the fixed-step explicit integrator converge to pencore's default solution as refined."""
 
 import math
@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 
 import pencore
-from pencore.geometry import Cylinder, OgiveNose, Projectile
-from pencore.panels import panel_points
-from pencore.target import Medium, Target
+from pencore.inputs.geometry import Cylinder, OgiveNose, Projectile
+from pencore.inputs.target import Medium, Target
+from pencore.kernels.panels import panel_points
 
 CASE = dict(velocity=1000.0, obliquity=45.0)  # the oblique benchmark of the README
 
@@ -42,8 +42,9 @@ def test_panel_axial_force_is_a0_times_the_polygon_area():
     """Embedded nose moving along its axis with sigma = a0 only: every nose panel is
     loaded, so the axial force is a0 times the projected (polygon) area, and the
     lateral force and moment vanish."""
-    from pencore.forces import model_loads
-    from pencore.solver import _axis_quaternion, prepare
+    from pencore.kernels.forces import model_loads
+    from pencore.run.impact import prepare
+    from pencore.run.initial import _axis_quaternion
 
     a0 = 17.18e6
     t = Target.half_space(Medium("a0-only", (a0,)))
@@ -124,7 +125,7 @@ def test_explicit_energy_balance_and_stops():
 
 def test_explicit_normal_impact_matches_the_closed_form():
     from pencore import closedform
-    from pencore.library import MEDIA, get_projectile
+    from pencore.inputs.library import MEDIA, get_projectile
 
     ds = pencore.simulate("p2", "soil", 280.0, emulation={"integrator": "explicit", "dt": 2e-6})
     ref = closedform.depth(get_projectile("p2"), MEDIA["soil"], 280.0)
@@ -178,7 +179,7 @@ def test_explicit_needs_no_adaptive_method():
 def test_readme_states_the_model_ranges():
     from pathlib import Path
 
-    from pencore.validate import limits_markdown
+    from pencore.inputs.limits import limits_markdown
 
     readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
     assert limits_markdown("models") in readme

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from pencore import simulate
+from pencore.errors import InputError
 from pencore.studies.ensemble import (
-    check_case,
     chunk_indices,
     gather,
     quantile_interval,
@@ -19,7 +19,7 @@ from pencore.studies.ensemble import (
     sample_conditions,
     wilson_interval,
 )
-from pencore.validate import InputError
+from pencore.studies.ensemble_cases import check_case
 
 CASE = {
     "name": "t",

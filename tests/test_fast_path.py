@@ -1,4 +1,4 @@
-"""The whole-ring fast path of :func:`pencore.dynamics.contact_loads` (one layer, no
+"""The whole-ring fast path of :func:`pencore.kernels.dynamics.contact_loads` (one layer, no
 depth windows, no friction: a band clear of the layer's levels is loaded as a whole ring
 without building its region sets) gives exactly the loads of the general path.
 
@@ -17,9 +17,10 @@ import math
 import numpy as np
 import pytest
 
-from pencore.dynamics import contact_loads
-from pencore.solver import _run, initial_state, prepare
-from pencore.target import Layer, Medium, Target
+from pencore.inputs.target import Layer, Medium, Target
+from pencore.kernels.dynamics import contact_loads
+from pencore.run.impact import _run, prepare
+from pencore.run.initial import initial_state
 
 SOIL = (1.718e7, 0.0, 4119.9)
 
@@ -79,11 +80,11 @@ def test_fast_path_equals_general_path(target, velocity, obliquity):
     ],
 )
 def test_jacobian_fast_path_equals_general_path(target, velocity, obliquity):
-    """The same for the velocity Jacobian (:func:`pencore.jacobian.load_jacobian`, whose
-    whole rings go through :func:`pencore.wholering.whole_ring_moments`). The general
+    """The same for the velocity Jacobian (:func:`pencore.kernels.jacobian.load_jacobian`, whose
+    whole rings go through :func:`pencore.kernels.wholering.whole_ring_moments`). The general
     path is forced by depth-window columns that are all off (lengths 0: a factor of
     exactly 1), which the fast path does not take."""
-    from pencore.jacobian import load_jacobian
+    from pencore.kernels.jacobian import load_jacobian
 
     pr, ys = _states(target, velocity, obliquity, yaw_deg=1.0)
     assert pr.bounds.shape[1] < 5
@@ -98,13 +99,13 @@ def test_jacobian_fast_path_equals_general_path(target, velocity, obliquity):
 @pytest.mark.parametrize("ncoef", [1, 3, 8])
 @pytest.mark.parametrize("eps", [1e-3, 0.0])
 def test_whole_ring_integrals_equal_one_ring_form(ncoef, eps):
-    """:func:`pencore.wholering.whole_ring_integrals` (rings innermost, vectorised) gives
-    bit for bit what :func:`pencore.arcs._poly_centred_arc_integrals` gives ring by ring
+    """:func:`pencore.kernels.wholering.whole_ring_integrals` (rings innermost, vectorised) gives
+    bit for bit what :func:`pencore.kernels.arcs._poly_centred_arc_integrals` gives ring by ring
     and side by side, for laws of 1 to 8 terms, the smoothed and the sharp step, and
     rings unloaded (empty arc), wholly loaded, partly loaded and without lateral
     velocity (``kv = 0``, above and below the level), with mixed step widths."""
-    from pencore.arcs import _MAXD, _poly_centred_arc_integrals, side_poly
-    from pencore.wholering import whole_ring_integrals
+    from pencore.kernels.arcs import _MAXD, _poly_centred_arc_integrals, side_poly
+    from pencore.kernels.wholering import whole_ring_integrals
 
     rng = np.random.default_rng(ncoef)
     coef = rng.uniform(0.5, 2.0, (1, ncoef)) * 10.0 ** np.arange(ncoef)[::-1]

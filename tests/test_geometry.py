@@ -6,15 +6,15 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from pencore.geometry import ConeNose, Cylinder, FlatNose, GeometryError, OgiveNose, Projectile
-from pencore.library import (
+from pencore.errors import GeometryError, InputError
+from pencore.inputs.geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
+from pencore.inputs.library import (
     TABLE3,
     get_projectile,
     shipped_table3_geometry,
     table3_fit,
     table3_mass_bound,
 )
-from pencore.validate import InputError
 
 RHO = 7850.0
 A = 0.05
@@ -156,7 +156,7 @@ def test_bad_shipped_geometry_file_is_named(tmp_path, text, match):
 def test_mass_properties_are_kept_per_projectile_and_follow_a_replaced_one():
     import dataclasses
 
-    from pencore.library import get_projectile
+    from pencore.inputs.library import get_projectile
 
     p = get_projectile("p2")
     assert p.mass_properties() is p.mass_properties()

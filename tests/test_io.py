@@ -9,7 +9,7 @@ import pytest
 import xarray as xr
 
 import pencore
-from pencore.io import config_hash, downsample, read_netcdf, write_netcdf
+from pencore.io.netcdf import config_hash, downsample, read_netcdf, write_netcdf
 
 
 def _trajectory(n: int = 1000) -> xr.Dataset:
@@ -118,13 +118,13 @@ def test_reading_and_plotting_results_does_not_load_the_solver():
 
     code = (
         "import sys, pencore.io, pencore.plotting; "
-        "print(sorted(m for m in ('numba', 'scipy', 'pencore.solver') if m in sys.modules)); "
+        "print(sorted(m for m in ('numba', 'scipy', 'pencore.run.impact') if m in sys.modules)); "
         "import pencore; "
         "[getattr(pencore, n) for n in pencore.__all__]; "
-        "print(pencore.library.__name__, 'numba' in sys.modules)"
+        "print(pencore.inputs.library.__name__, 'numba' in sys.modules)"
     )
     out = subprocess.run(
         [sys.executable, "-c", code], capture_output=True, text=True, check=True
     ).stdout.split("\n")
     assert out[0] == "[]"
-    assert out[1] == "pencore.library True"
+    assert out[1] == "pencore.inputs.library True"

@@ -1,4 +1,4 @@
-"""The closed-form velocity Jacobian (pencore.jacobian) against finite differences, its
+"""The closed-form velocity Jacobian (pencore.kernels.jacobian) against finite differences, its
 symmetry, and the trajectories it gives against the finite-difference Jacobian's."""
 
 from __future__ import annotations
@@ -9,9 +9,10 @@ import numpy as np
 import pytest
 
 import pencore
-from pencore.forces import default_model, rhs_model
-from pencore.jacobian import load_jacobian, model_load_jacobian, velocity_jacobian
-from pencore.solver import _run, initial_state, prepare
+from pencore.kernels.forces import default_model, rhs_model
+from pencore.kernels.jacobian import load_jacobian, model_load_jacobian, velocity_jacobian
+from pencore.run.impact import _run, prepare
+from pencore.run.initial import initial_state
 
 EPS = 1e-3
 G0 = np.zeros(3)
@@ -94,9 +95,9 @@ def test_velocity_jacobian_matches_central_differences(case):
 
 def test_load_jacobian_is_symmetric_and_dissipative():
     # the frictionless DAFL is -grad of a dissipation function of the body velocities:
-    # d(loads)/du = -sum w B^T S B with S a Gram matrix of G' >= 0 (pencore.jacobian).
+    # d(loads)/du = -sum w B^T S B with S a Gram matrix of G' >= 0 (pencore.kernels.jacobian).
     # The shank bands' step width depends on the lateral spin w2, w3
-    # (pencore.dynamics.band_eps), which adds terms to those two columns only: the
+    # (pencore.kernels.bands.band_eps), which adds terms to those two columns only: the
     # block of (v1, v2, v3, w1) is the dissipation function's at every state, and with
     # w2 = w3 = 0 (no widening) the whole matrix is
     pr, states = _states(CASES[1])

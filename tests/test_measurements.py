@@ -9,14 +9,10 @@ import numpy as np
 import pytest
 
 from pencore import simulate
-from pencore.library import get_target
-from pencore.studies.measurements import (
-    error_statistics,
-    load_measurements,
-    measured_vs_predicted,
-)
-from pencore.target import Layer, Target
-from pencore.validate import InputError
+from pencore.errors import InputError
+from pencore.inputs.library import get_target
+from pencore.inputs.target import Layer, Target
+from pencore.studies.measurements import error_statistics, load_measurements, measured_vs_predicted
 
 HEADER = "test,velocity_m_s,obliquity_deg,yaw_deg,measured_depth_m,source\n"
 

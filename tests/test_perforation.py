@@ -17,10 +17,15 @@ import numpy as np
 import pytest
 
 from pencore import closedform, get_projectile, get_target, simulate
-from pencore.critical import ballistic_limit
-from pencore.library import target_from_dict
-from pencore.perforation import fit_recht_ipson, recht_ipson, residual_velocity
-from pencore.target import Layer, Target, TargetError
+from pencore.errors import TargetError
+from pencore.inputs.library import target_from_dict
+from pencore.inputs.target import Layer, Target
+from pencore.search.perforation import (
+    ballistic_limit,
+    fit_recht_ipson,
+    recht_ipson,
+    residual_velocity,
+)
 
 CONCRETE = get_target("concrete").medium
 P2 = get_projectile("p2")
@@ -139,7 +144,7 @@ def test_ballistic_limit_brackets_the_switch():
 
 
 def test_ballistic_limit_refuses_a_half_space():
-    from pencore.validate import InputError
+    from pencore.errors import InputError
 
     with pytest.raises(InputError, match="semi-infinite"):
         ballistic_limit("p2", "concrete")
@@ -159,7 +164,7 @@ SLAB_YAML = "name: slab\nlayers:\n  - {medium: concrete, thickness: 0.8}\n"
 
 
 def test_cli_ballistic_limit(tmp_path, capsys):
-    from pencore.cli import main
+    from pencore.cli.main import main
 
     f = tmp_path / "slab.yaml"
     f.write_text(SLAB_YAML)
@@ -182,7 +187,7 @@ def test_cli_ballistic_limit(tmp_path, capsys):
     ],
 )
 def test_cli_ballistic_limit_bad_input(tmp_path, capsys, extra, needle):
-    from pencore.cli import main
+    from pencore.cli.main import main
 
     f = tmp_path / "slab.yaml"
     f.write_text(SLAB_YAML)
@@ -192,14 +197,14 @@ def test_cli_ballistic_limit_bad_input(tmp_path, capsys, extra, needle):
 
 
 def test_cli_half_space_is_refused(capsys):
-    from pencore.cli import main
+    from pencore.cli.main import main
 
     assert main(["ballistic-limit", "--projectile", "p2", "--target", "concrete"]) == 2
     assert "semi-infinite" in capsys.readouterr().err
 
 
 def test_cli_simulate_reports_the_residual_velocity(tmp_path, capsys):
-    from pencore.cli import main
+    from pencore.cli.main import main
 
     f = tmp_path / "slab.yaml"
     f.write_text(SLAB_YAML)

@@ -9,11 +9,12 @@ from scipy.interpolate import CubicHermiteSpline
 
 import pencore
 from pencore import closedform
-from pencore.dynamics import contact_loads
-from pencore.geometry import ConeNose, Cylinder, OgiveNose, Projectile
-from pencore.library import MEDIA
-from pencore.solver import _axis_quaternion, prepare
-from pencore.target import Layer, Medium, Target
+from pencore.inputs.geometry import ConeNose, Cylinder, OgiveNose, Projectile
+from pencore.inputs.library import MEDIA
+from pencore.inputs.target import Layer, Medium, Target
+from pencore.kernels.dynamics import contact_loads
+from pencore.run.impact import prepare
+from pencore.run.initial import _axis_quaternion
 
 SOIL = MEDIA["soil"]
 # Symmetries hold exactly for the equations, but two runs of mirrored or rotated cases
@@ -289,7 +290,7 @@ def test_held_jacobian_keeps_the_solution():
 def test_path_below_surface_clips_entry_and_skips_flight_above():
     # a tip path that enters at 45 deg, leaves, and re-enters: the length below y = 0
     # is the straight-line geometry, each entry clipped at the surface
-    from pencore.trajectory import _axes, _path_below
+    from pencore.run.dataset import _axes, _path_below
 
     tip = np.array(
         [[0.0, 1.0, 0.0], [2.0, -1.0, 0.0], [3.0, -2.0, 0.0], [5.0, 1.0, 0.0], [6.0, -3.0, 0.0]]
@@ -311,8 +312,9 @@ def test_most_coefficients_the_kernels_hold_and_a_clear_error_beyond():
     # zero-padding the soil law to MAX_COEFFICIENTS terms is the same law: the run must
     # not change (an oblique entry exercises the ramps and the Jacobian's cubic moments,
     # whose scratch is the tightest); one coefficient more is refused by name
-    from pencore.arcs import _MAXD
-    from pencore.target import MAX_COEFFICIENTS, TargetError
+    from pencore.errors import TargetError
+    from pencore.inputs.target import MAX_COEFFICIENTS
+    from pencore.kernels.arcs import _MAXD
 
     assert MAX_COEFFICIENTS + 4 <= _MAXD + 2
     soil = MEDIA["soil"]

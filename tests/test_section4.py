@@ -24,14 +24,15 @@ import xarray as xr
 import yaml
 
 import pencore
-from pencore.critical import CriticalResult
-from pencore.io import read_netcdf
-from pencore.library import InputError
-from pencore.studies.common import grid, projectile_coords, start_from_height
+from pencore.errors import InputError
+from pencore.io.netcdf import read_netcdf
+from pencore.search.threshold import CriticalResult
+from pencore.studies.common import projectile_coords, start_from_height
 from pencore.studies.comparison import paper_comparison
 from pencore.studies.comparison_rows import _nose_rows
-from pencore.studies.config import from_config, gather, parts_of
+from pencore.studies.config import from_config, gather
 from pencore.studies.fig08_vcr import _search_vars
+from pencore.studies.parts import grid, parts_of
 from pencore.studies.trajectories import stack_trajectories
 from pencore.studies.trends import trend
 
@@ -509,13 +510,13 @@ def test_archived_section4_datasets_and_comparison():
 
 
 def test_find_threshold_logs_progress(caplog):
-    """Long searches report bracket, evaluations and verdicts on pencore.critical."""
-    from pencore.critical import find_threshold
+    """Long searches report bracket, evaluations and verdicts on the pencore.search logger."""
+    from pencore.search.threshold import find_threshold
 
-    with caplog.at_level(logging.INFO, logger="pencore.critical"):
+    with caplog.at_level(logging.INFO, logger="pencore.search"):
         r = find_threshold(lambda v: v > 3.3, 0.0, 10.0, 0.5, scan=3, name="Vtest")
     assert r.status == "ok"
-    msgs = [rec.getMessage() for rec in caplog.records if rec.name == "pencore.critical"]
+    msgs = [rec.getMessage() for rec in caplog.records if rec.name == "pencore.search"]
     assert msgs[0] == "Vtest: search in [0, 10], tol 0.5"
     assert any(m.startswith("Vtest: evaluation 1 at 0 -> False") for m in msgs)
     assert len([m for m in msgs if ": evaluation " in m]) == r.n_evals

@@ -1,4 +1,4 @@
-"""Shank contact models (pencore.models.ShankModel): limits, symmetries, energy, the path.
+"""Shank contact models (pencore.inputs.models.ShankModel): limits, symmetries, energy, the path.
 
 The models only change how the shank is loaded, so every test here is a physical
 statement that must hold whatever the model: an axisymmetric impact loads no shank,
@@ -13,12 +13,13 @@ import pytest
 
 import pencore
 from pencore import analysis, closedform
-from pencore.contact_points import path_distance, push_path, tip_position
-from pencore.forces import model_loads
-from pencore.integrate import start_path
-from pencore.library import MEDIA, get_projectile
-from pencore.models import ShankModel
-from pencore.solver import _axis_quaternion, _run, initial_state, prepare
+from pencore.inputs.library import MEDIA, get_projectile
+from pencore.inputs.models import ShankModel
+from pencore.integrators.driver import start_path
+from pencore.kernels.contact_points import path_distance, push_path, tip_position
+from pencore.kernels.forces import model_loads
+from pencore.run.impact import _run, prepare
+from pencore.run.initial import _axis_quaternion, initial_state
 
 SOIL = MEDIA["soil"]
 OBLIQUE = dict(velocity=1000.0, obliquity=45.0)
@@ -239,7 +240,7 @@ def test_spin_about_the_tip_keeps_the_tip_velocity():
     at v + w x (cm - tip)."""
     pr = prepare("p2", "soil")
     y = initial_state(pr.projectile, pr.rings, 1000.0, 0.0, 0.0, 20.0, None, 0.0, "tip")
-    from pencore.contact_points import tip_velocity
+    from pencore.kernels.contact_points import tip_velocity
 
     assert np.allclose(tip_velocity(y, pr.lc), [0.0, -1000.0, 0.0], atol=1e-9)
     assert y[7] == pytest.approx(-20.0 * pr.lc, rel=1e-12)  # w z x (lc, 0, 0) along -y axis
@@ -252,7 +253,7 @@ def test_searches_take_the_shank_model():
     bracket), and a halved shank load lowers Vcr of #2 at 45 deg well below the default
     (1067 against 1575 m/s in benchmarks/results/attribution.csv), so the two brackets
     of width 100 m/s are disjoint."""
-    from pencore import critical
+    from pencore.search import critical
 
     kw = dict(lo=600.0, hi=2600.0, tol=100.0, scan=None, start=(-1.0, 1.0, 0.0))
     base = critical.vcr("p2", "soil", 45.0, **kw)

@@ -6,9 +6,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from pencore.library import InputError
-from pencore.studies import resolve_numerics
-from pencore.studies.validation import fig5, table2, velocity_grid, verification
+from pencore.errors import InputError
+from pencore.inputs.numerics import resolve_numerics
+from pencore.studies.table2 import table2
+from pencore.studies.validation import fig5, velocity_grid, verification
 
 ROWS = pd.DataFrame(
     {
@@ -49,7 +50,7 @@ def test_table2_rejects_bad_input():
 def test_resolve_numerics():
     num = resolve_numerics({"rtol": None, "n_nose": 24})
     assert num.n_nose == 24 and num.rtol == resolve_numerics(None).rtol
-    with pytest.raises(InputError, match="unknown numerics option"):
+    with pytest.raises(InputError, match="unknown key 'rtoll'; did you mean 'rtol'"):
         resolve_numerics({"rtoll": 1e-6})
 
 

@@ -23,9 +23,9 @@ from snakemake.exceptions import WorkflowError
 from snakemake.utils import validate
 
 import pencore
-from pencore.io import read_netcdf
-from pencore.library import projectile_names, target_names
-from pencore.studies import resolve_numerics
+from pencore.inputs.library import projectile_names, target_names
+from pencore.inputs.numerics import resolve_numerics
+from pencore.io.netcdf import read_netcdf
 
 REPO = Path(__file__).resolve().parents[1]
 SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
@@ -456,7 +456,7 @@ def test_workflow_script_errors_are_one_line(tmp_path, raise_, one_line):
     code = (
         f"import sys; sys.path.insert(0, {str(scripts)!r})\n"
         "from _common import start_log\n"
-        "from pencore.solver import SolverError\n"
+        "from pencore.run.impact import SolverError\n"
         f"start_log({str(log)!r}, 'job')\n"
         f"raise {raise_}\n"
     )

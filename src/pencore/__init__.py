@@ -5,7 +5,7 @@ stability", Int. J. Impact Engineering 38 (2011) 815-823. SI units throughout; a
 degrees only at the user-facing edges (``simulate`` arguments, datasets, CLI, plots).
 
 The public names below are imported on first use (PEP 562), and so are submodules
-accessed as attributes (``pencore.library``): a process that only reads or plots results
+accessed as attributes (``pencore.search``): a process that only reads or plots results
 (``pencore.io``, ``pencore.plotting``, the workflow's figure jobs) then does not load
 numba and the solver, about 0.4 s of every such job.
 """
@@ -15,28 +15,28 @@ from __future__ import annotations
 import importlib
 from typing import TYPE_CHECKING, Any
 
-__version__ = "0.1.0"
+from pencore.version import __version__
 
 #: public name -> the submodule that defines it
 _EXPORTS = {
-    "ConeNose": "geometry",
-    "Cylinder": "geometry",
-    "FlatNose": "geometry",
-    "OgiveNose": "geometry",
-    "Projectile": "geometry",
-    "Medium": "target",
-    "Layer": "target",
-    "Target": "target",
-    "InputError": "library",
-    "SolverError": "solver",
-    "Numerics": "solver",
-    "ShankModel": "models",
-    "Emulation": "models",
-    "get_projectile": "library",
-    "get_target": "library",
-    "table3_fit": "library",
-    "prepare": "solver",
-    "simulate": "solver",
+    "ConeNose": "inputs.geometry",
+    "Cylinder": "inputs.geometry",
+    "FlatNose": "inputs.geometry",
+    "OgiveNose": "inputs.geometry",
+    "Projectile": "inputs.geometry",
+    "Medium": "inputs.target",
+    "Layer": "inputs.target",
+    "Target": "inputs.target",
+    "InputError": "errors",
+    "SolverError": "errors",
+    "Numerics": "inputs.numerics",
+    "ShankModel": "inputs.models",
+    "Emulation": "inputs.models",
+    "get_projectile": "inputs.library",
+    "get_target": "inputs.library",
+    "table3_fit": "inputs.library",
+    "prepare": "run.impact",
+    "simulate": "run.impact",
 }
 
 __all__ = [
@@ -81,8 +81,10 @@ def __dir__() -> list[str]:
 
 
 if TYPE_CHECKING:  # for type checkers and editors: the names as if imported eagerly
-    from .geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
-    from .library import InputError, get_projectile, get_target, table3_fit
-    from .models import Emulation, ShankModel
-    from .solver import Numerics, SolverError, prepare, simulate
-    from .target import Layer, Medium, Target
+    from pencore.errors import InputError, SolverError
+    from pencore.inputs.geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
+    from pencore.inputs.library import get_projectile, get_target, table3_fit
+    from pencore.inputs.models import Emulation, ShankModel
+    from pencore.inputs.numerics import Numerics
+    from pencore.inputs.target import Layer, Medium, Target
+    from pencore.run.impact import prepare, simulate

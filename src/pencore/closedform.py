@@ -26,8 +26,8 @@ import math
 
 import numpy as np
 
-from .geometry import Projectile
-from .target import Medium
+from pencore.inputs.geometry import Projectile
+from pencore.inputs.target import Medium
 
 __all__ = [
     "axial_force",
@@ -137,7 +137,7 @@ def crater_entry_speed(
     projectile: Projectile, medium: Medium, velocity: float, n: int = 2000
 ) -> tuple[float, float]:
     """Speed (m/s) and tip depth (m) at the end of the near-surface region, with the
-    crater ramp of :mod:`pencore.target` (``medium.crater_depth`` calibers, ``c = k d``):
+    crater ramp of :mod:`pencore.inputs.target` (``medium.crater_depth`` calibers, ``c = k d``):
     a band of the nose at depth ``zeta`` carries ``min(1, zeta / c)`` of its stress, so
 
         m d(V^2)/dz = -2 (a0 A_c(z) + a2 B_c(z) V^2),

@@ -35,7 +35,7 @@ def warmup(verbose: bool = True) -> float:
     kernel is compiled with the argument types the studies use, and cached.
     """
     start = time.perf_counter()
-    from . import simulate
+    from pencore.run.impact import simulate
 
     for label, kw in VARIANTS:
         t = time.perf_counter()

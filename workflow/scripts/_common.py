@@ -31,9 +31,7 @@ def start_log(path: str, name: str) -> logging.Logger:
         # a run that cannot finish) already name the value and cause, so the console
         # gets that one line, and a traceback only for what would be a bug
         log.critical("failed", exc_info=(exc_type, exc, tb))
-        from pencore.atomic import WriteError
-        from pencore.solver import SolverError
-        from pencore.validate import InputError
+        from pencore.errors import InputError, SolverError, WriteError
 
         if issubclass(exc_type, InputError | SolverError | WriteError):
             print(f"{name}: error: {exc} (details in {path})", file=sys.stderr)

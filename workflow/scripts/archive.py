@@ -4,7 +4,7 @@ import json
 
 from _common import start_log
 
-from pencore.io import downsample, read_netcdf, write_netcdf
+from pencore.io.netcdf import downsample, read_netcdf, write_netcdf
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], "archive")

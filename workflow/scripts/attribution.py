@@ -2,7 +2,7 @@
 
 from _common import start_log
 
-from pencore.io import write_netcdf
+from pencore.io.netcdf import write_netcdf
 from pencore.studies.attribution import NUMBERS, gather, run_setting
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive

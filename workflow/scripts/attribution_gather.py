@@ -3,7 +3,7 @@
 import pandas as pd
 from _common import start_log
 
-from pencore.io import read_netcdf, write_netcdf
+from pencore.io.netcdf import read_netcdf, write_netcdf
 from pencore.studies.attribution import attribution_table, gather
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive

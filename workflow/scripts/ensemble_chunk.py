@@ -4,8 +4,8 @@ import time
 
 from _common import start_log
 
-from pencore.io import write_netcdf
-from pencore.studies import resolve_numerics
+from pencore.inputs.numerics import resolve_numerics
+from pencore.io.netcdf import write_netcdf
 from pencore.studies.ensemble import run_chunk
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive

@@ -2,7 +2,7 @@
 
 from _common import start_log
 
-from pencore.io import read_netcdf, write_netcdf
+from pencore.io.netcdf import read_netcdf, write_netcdf
 from pencore.studies.ensemble import RESULTS, gather
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive

@@ -3,7 +3,7 @@
 import pandas as pd
 from _common import start_log
 
-from pencore.io import file_sha256, write_netcdf
+from pencore.io.netcdf import file_sha256, write_netcdf
 from pencore.studies.validation import fig5, velocity_grid
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive

@@ -2,7 +2,7 @@
 
 from _common import start_log
 
-from pencore.io import file_sha256, write_netcdf
+from pencore.io.netcdf import file_sha256, write_netcdf
 from pencore.studies.measurements import measured_vs_predicted
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive

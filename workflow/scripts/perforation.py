@@ -2,7 +2,7 @@
 
 from _common import start_log
 
-from pencore.io import write_netcdf
+from pencore.io.netcdf import write_netcdf
 from pencore.studies.perforation import ballistic_limit_map, residual_velocity_curve
 from pencore.studies.validation import velocity_grid
 

@@ -3,7 +3,7 @@
 from _common import start_log
 
 from pencore import plotting
-from pencore.io import read_netcdf
+from pencore.io.netcdf import read_netcdf
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], f"plot_{smk.params.kind}")

@@ -3,8 +3,8 @@
 import pandas as pd
 from _common import start_log
 
-from pencore.io import read_netcdf
-from pencore.studies.claims import load_claims
+from pencore.io.netcdf import read_netcdf
+from pencore.paper.claims import load_claims
 from pencore.studies.comparison import paper_comparison
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive

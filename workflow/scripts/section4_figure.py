@@ -2,8 +2,9 @@
 
 from _common import start_log
 
-from pencore.io import read_netcdf
-from pencore.plotting import PLOTS, save_figure
+from pencore.io.netcdf import read_netcdf
+from pencore.plotting import PLOTS
+from pencore.plotting.style import save_figure
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], f"plot_{smk.params.kind}")

@@ -9,7 +9,7 @@ import time
 
 from _common import start_log
 
-from pencore.io import write_netcdf
+from pencore.io.netcdf import write_netcdf
 from pencore.studies.config import from_config
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive

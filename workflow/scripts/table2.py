@@ -1,10 +1,10 @@
-"""Rule table2 (paper Table 2, soil): thin adapter to pencore.studies.validation.table2."""
+"""Rule table2 (paper Table 2, soil): thin adapter to pencore.studies.table2.table2."""
 
 import pandas as pd
 from _common import start_log
 
-from pencore.io import file_sha256, write_netcdf
-from pencore.studies.validation import table2
+from pencore.io.netcdf import file_sha256, write_netcdf
+from pencore.studies.table2 import table2
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], "table2")

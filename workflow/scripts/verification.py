@@ -4,7 +4,7 @@ from pathlib import Path
 
 from _common import start_log
 
-from pencore.io import write_netcdf
+from pencore.io.netcdf import write_netcdf
 from pencore.studies.validation import velocity_grid, verification, verification_summary
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive

@@ -24,14 +24,24 @@ from collections.abc import Callable
 
 from matplotlib.figure import Figure
 
-from .attribution import plot_attribution
-from .critical import plot_fig8, plot_fig12, plot_fig15, plot_fig18
-from .depth import plot_fig5, plot_table2, plot_verification
-from .ensemble import plot_ensemble
-from .perforation import plot_ballistic_limit, plot_measurements, plot_residual_velocity
-from .style import STYLE, new_figure, save_figure, styled
-from .trajectories import plot_fig7, plot_fig11, plot_fig13, plot_fig16, plot_start_height
-from .turning import plot_fig9
+from pencore.plotting.attribution import plot_attribution
+from pencore.plotting.critical import plot_fig8, plot_fig12, plot_fig15, plot_fig18
+from pencore.plotting.depth import plot_fig5, plot_table2, plot_verification
+from pencore.plotting.ensemble import plot_ensemble
+from pencore.plotting.perforation import (
+    plot_ballistic_limit,
+    plot_measurements,
+    plot_residual_velocity,
+)
+from pencore.plotting.style import STYLE, new_figure, save_figure, styled
+from pencore.plotting.trajectories import (
+    plot_fig7,
+    plot_fig11,
+    plot_fig13,
+    plot_fig16,
+    plot_start_height,
+)
+from pencore.plotting.turning import plot_fig9
 
 __all__ = [
     "STYLE",

@@ -8,7 +8,7 @@ import xarray as xr
 from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator, NullFormatter
 
-from .style import _c, new_figure, styled
+from pencore.plotting.style import _c, new_figure, styled
 
 __all__ = ["plot_attribution"]
 

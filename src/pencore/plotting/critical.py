@@ -8,7 +8,16 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from .style import _LCL, _MARKERS, _VI, _c, _pname, convention_label, new_figure, styled
+from pencore.plotting.style import (
+    _LCL,
+    _MARKERS,
+    _VI,
+    _c,
+    _pname,
+    convention_label,
+    new_figure,
+    styled,
+)
 
 __all__ = ["plot_fig8", "plot_fig12", "plot_fig15", "plot_fig18"]
 

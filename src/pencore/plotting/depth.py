@@ -11,7 +11,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from .style import _DEPTH, _VI, _c, new_figure, styled
+from pencore.plotting.style import _DEPTH, _VI, _c, new_figure, styled
 
 __all__ = ["plot_table2", "plot_fig5", "plot_verification"]
 

@@ -7,7 +7,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from .style import _c, _pname, new_figure, styled
+from pencore.plotting.style import _c, _pname, new_figure, styled
 
 __all__ = ["plot_ensemble"]
 

@@ -8,8 +8,8 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from .critical import _search_errorbars
-from .style import _MARKERS, _VI, _c, _pname, new_figure, styled
+from pencore.plotting.critical import _search_errorbars
+from pencore.plotting.style import _MARKERS, _VI, _c, _pname, new_figure, styled
 
 __all__ = ["plot_ballistic_limit", "plot_residual_velocity", "plot_measurements"]
 

@@ -13,7 +13,7 @@ import xarray as xr
 from matplotlib.figure import Figure
 from matplotlib.ticker import FuncFormatter
 
-from .style import _c, _finite, _pname, convention_label, new_figure, styled
+from pencore.plotting.style import _c, _finite, _pname, convention_label, new_figure, styled
 
 __all__ = ["plot_fig7", "plot_fig11", "plot_fig13", "plot_fig16", "plot_start_height"]
 

@@ -6,8 +6,8 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from .style import _LCL, _LINESTYLES, _MARKERS, _c, _pname, new_figure, styled
-from .trajectories import _path, _surface
+from pencore.plotting.style import _LCL, _LINESTYLES, _MARKERS, _c, _pname, new_figure, styled
+from pencore.plotting.trajectories import _path, _surface
 
 __all__ = ["plot_fig9"]
 

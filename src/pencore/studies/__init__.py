@@ -23,6 +23,7 @@ module                     contents
 ``comparison_rows``        row helpers of the comparison table
 ``comparison_spin``        its rows for the spin claims (Figs 16-18)
 ``comparison``             :func:`paper_comparison`: the paper's numbers beside pencore's
+``config_check``           checks of the workflow configuration a schema cannot express
 ``parts``                  which studies exist and their job parts (light: the Snakefile's)
 ``config``                 workflow config -> study parts, :func:`from_config`, :func:`gather`
 ``perforation``            beyond the paper: ballistic limit map, residual velocity curve
@@ -34,43 +35,3 @@ angle minus the axis angle (paper Fig. 10).
 """
 
 from __future__ import annotations
-
-from collections.abc import Mapping
-from dataclasses import fields, replace
-from typing import TYPE_CHECKING, Any
-
-from ..validate import InputError
-
-if TYPE_CHECKING:
-    from ..solver import Numerics
-
-__all__ = ["resolve_numerics"]
-
-
-def resolve_numerics(numerics: Numerics | Mapping[str, Any] | None = None) -> Numerics:
-    """A :class:`pencore.Numerics` from an object, a mapping of overrides, or ``None``.
-
-    In a mapping, entries that are ``None`` mean "keep pencore's default" (the workflow's
-    config schema fills unset numerics keys with ``null``).
-    """
-    # imported here: the package itself stays light (the workflow imports
-    # pencore.studies.sources and .parts at every Snakemake start)
-    from ..solver import DEFAULT_NUMERICS, Numerics
-
-    if numerics is None:
-        return DEFAULT_NUMERICS
-    if isinstance(numerics, Numerics):
-        return numerics
-    if not isinstance(numerics, Mapping):
-        raise InputError(
-            f"numerics must be a pencore.Numerics or a mapping, got {type(numerics).__name__}"
-        )
-    known = {f.name for f in fields(Numerics)}
-    unknown = set(numerics) - known
-    if unknown:
-        raise InputError(
-            f"unknown numerics option(s): {', '.join(sorted(unknown))}; "
-            f"known: {', '.join(sorted(known))}"
-        )
-    overrides = {k: v for k, v in numerics.items() if v is not None}
-    return replace(DEFAULT_NUMERICS, **overrides)

@@ -3,7 +3,7 @@ one setting reproduces them all (issue 10).
 
 Each *setting* (configured in ``attribution.settings``: a name, a label, a group, whether
 it is a physically argued reading of the paper or an attribution-only knob, and the
-choices of :func:`pencore.attribution.disputed_quantities`) is one job
+choices of :func:`pencore.paper.attribution.disputed_quantities`) is one job
 (:func:`run_setting`); :func:`gather` joins them on a ``setting`` dimension, adds each
 quantity's relative difference from the paper, and :func:`attribution_table` gives, for
 each paper number, the best-supported explanation and whether ONE setting reproduces all
@@ -36,11 +36,11 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from ..attribution import disputed_quantities
-from ..attribution_choices import check_settings
-from ..validate import InputError
+from pencore.errors import InputError
+from pencore.paper.attribution import disputed_quantities
+from pencore.paper.choices import check_settings
 
-__all__ = ["NUMBERS", "TOLERANCE", "check_settings", "run_setting", "gather", "attribution_table"]
+__all__ = ["NUMBERS", "TOLERANCE", "run_setting", "gather", "attribution_table"]
 
 #: Paper numbers that are yes/no verdicts (1.0 / 0.0): reproduced only when equal.
 VERDICTS = ("turn_back_25", "fig12_falls")
@@ -62,7 +62,7 @@ NUMBERS: dict[str, tuple[str, str]] = {
 
 
 def run_setting(setting: Mapping[str, Any]) -> xr.Dataset:
-    """:func:`pencore.attribution.disputed_quantities` of one setting, on a ``setting``
+    """:func:`pencore.paper.attribution.disputed_quantities` of one setting, on a ``setting``
     dimension of length 1 with its label, group and ``argued`` flag."""
     st = check_settings([setting])[0]
     ds = disputed_quantities(st["choices"])
@@ -96,7 +96,7 @@ def _numbers(ds: xr.Dataset) -> dict[str, np.ndarray]:
 
 
 def _paper(ds: xr.Dataset) -> dict[str, float]:
-    from ..attribution import PAPER
+    from pencore.paper.attribution import PAPER
 
     return {
         "alpha_5": PAPER["alpha"][5.0],
@@ -111,7 +111,7 @@ def _paper(ds: xr.Dataset) -> dict[str, float]:
 
 
 def _bracket() -> tuple[float, float]:
-    from ..attribution import PAPER
+    from pencore.paper.attribution import PAPER
 
     return PAPER["vcr_bracket"]
 
@@ -122,7 +122,7 @@ def _miss(key: str, value: np.ndarray, paper: float) -> np.ndarray:
     if key in VERDICTS:
         return (value != paper).astype(float)
     if key == "vcr":
-        from ..attribution import PAPER
+        from pencore.paper.attribution import PAPER
 
         lo, hi = PAPER["vcr_bracket"]
         return np.maximum(np.maximum(lo - value, value - hi), 0.0) / paper

@@ -12,8 +12,8 @@ import numpy as np
 import xarray as xr
 from scipy import stats
 
-from ..library import InputError, get_projectile
-from .parts import grid  # noqa: F401 - re-exported (studies import it from here)
+from pencore.errors import InputError
+from pencore.inputs.library import get_projectile
 
 __all__ = [
     "PROJECTILES",
@@ -21,7 +21,6 @@ __all__ = [
     "TRAJECTORY_VARIABLES",
     "projectile_coords",
     "start_from_height",
-    "grid",
     "combine",
 ]
 
@@ -32,9 +31,9 @@ PROJECTILES = ("p1", "p2", "p3", "p4")
 
 def __getattr__(name: str) -> Any:
     """``PAPER``: the paper's Section 3-4 numbers, read from ``config/paper_claims.csv``
-    (:func:`pencore.studies.claims.paper_values`) when first asked for."""
+    (:func:`pencore.paper.claims.paper_values`) when first asked for."""
     if name == "PAPER":
-        from .claims import paper_values
+        from pencore.paper.claims import paper_values
 
         return paper_values()
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

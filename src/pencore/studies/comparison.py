@@ -16,11 +16,11 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from .. import analysis
-from ..library import get_projectile
-from ..validate import InputError
-from .claims import at, load_claims
-from .comparison_rows import (
+from pencore import analysis
+from pencore.errors import InputError
+from pencore.inputs.library import get_projectile
+from pencore.paper.claims import at, load_claims
+from pencore.studies.comparison_rows import (
     _COLUMNS,
     _close,
     _nose_rows,
@@ -29,8 +29,8 @@ from .comparison_rows import (
     _search_lines,
     _search_value,
 )
-from .comparison_spin import _fig16_alpha, _fig16_reverses, _omega_c_p2
-from .trends import trend
+from pencore.studies.comparison_spin import _fig16_alpha, _fig16_reverses, _omega_c_p2
+from pencore.studies.trends import trend
 
 __all__ = ["paper_comparison", "HANDLERS"]
 
@@ -85,9 +85,9 @@ def _table3(c: Claim, d: Mapping[str, Any], what: str) -> Rows:
             float(c["value"]),
             pen,
             c["units"],
-            "pencore geometry derived by pencore.library.table3_fit",
+            "pencore geometry derived by pencore.inputs.library.table3_fit",
             "value",
-            "pencore.library",
+            "pencore.inputs.library",
         )
     ]
 
@@ -397,7 +397,7 @@ def paper_comparison(
     Parameters
     ----------
     claims : pandas.DataFrame, optional
-        :func:`pencore.studies.claims.load_claims` (default: ``config/paper_claims.csv``).
+        :func:`pencore.paper.claims.load_claims` (default: ``config/paper_claims.csv``).
     fig7 ... fig18, start_height : xarray.Dataset, optional
         The study datasets; ``None`` skips the claims they compute.
     table2 : pandas.DataFrame, optional

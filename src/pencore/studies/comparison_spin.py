@@ -8,8 +8,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from .claims import at
-from .comparison_rows import _close, _pencore_rel, _row, _search_value
+from pencore.paper.claims import at
+from pencore.studies.comparison_rows import _close, _pencore_rel, _row, _search_value
 
 __all__: list[str] = []
 

@@ -9,24 +9,23 @@ from typing import Any
 
 import xarray as xr
 
-from .. import analysis
-from ..critical import OMEGA_TOL, VELOCITY_TOL
-from ..library import InputError
-from ..solver import Numerics
-from . import resolve_numerics
-from .common import combine
-from .fig07_trajectories import fig7
-from .fig08_vcr import fig8, vcr_study
-from .fig09_turning_angle import fig9
-from .fig13_yaw import fig13
-from .fig15_vci import vci_study
-from .fig16_spin import fig16, start_height_study
-from .fig18_omega_c import omega_c_study
-from .parts import SPLIT_STUDIES, STUDIES, parts_of
-from .parts import values as _values
-from .trajectories import trajectory_set
+from pencore import analysis
+from pencore.errors import InputError
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.search.threshold import OMEGA_TOL, VELOCITY_TOL
+from pencore.studies.common import combine
+from pencore.studies.fig07_trajectories import fig7
+from pencore.studies.fig08_vcr import fig8, vcr_study
+from pencore.studies.fig09_turning_angle import fig9
+from pencore.studies.fig13_yaw import fig13
+from pencore.studies.fig15_vci import vci_study
+from pencore.studies.fig16_spin import fig16, start_height_study
+from pencore.studies.fig18_omega_c import omega_c_study
+from pencore.studies.parts import SPLIT_STUDIES, STUDIES
+from pencore.studies.parts import values as _values
+from pencore.studies.trajectories import trajectory_set
 
-__all__ = ["STUDIES", "SPLIT_STUDIES", "parts_of", "from_config", "gather"]
+__all__ = ["from_config", "gather"]
 
 
 def _range(d: Mapping[str, Any]) -> tuple[float, float]:

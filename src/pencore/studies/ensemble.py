@@ -42,14 +42,12 @@ import numpy as np
 import xarray as xr
 from scipy import stats
 
-from ..solver import prepare, simulate
-from ..validate import InputError
-from .common import t_half_width
-from .ensemble_cases import CASE_KEYS, VARIABLES, check_case  # noqa: F401 - re-exported
+from pencore.errors import InputError
+from pencore.run.impact import prepare, simulate
+from pencore.studies.common import t_half_width
+from pencore.studies.ensemble_cases import VARIABLES, check_case
 
 __all__ = [
-    "VARIABLES",
-    "check_case",
     "sample_conditions",
     "chunk_indices",
     "run_chunk",

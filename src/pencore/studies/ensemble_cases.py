@@ -1,7 +1,7 @@
 """Checks of an ensemble case (:mod:`pencore.studies.ensemble`): its keys, sample counts,
 seed, and the distribution of each impact variable, spelt out.
 
-Apart from :mod:`pencore.studies.ensemble` (standard library and :mod:`pencore.validate`
+Apart from :mod:`pencore.studies.ensemble` (standard library and :mod:`pencore.inputs.limits`
 only) so that the workflow's configuration check, run at every Snakemake start, names a
 bad case without loading scipy and the solver.
 """
@@ -12,7 +12,8 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-from ..validate import InputError, _as_float, check_keys
+from pencore.errors import InputError
+from pencore.inputs.limits import as_float, check_keys
 
 __all__ = ["VARIABLES", "CASE_KEYS", "check_case"]
 
@@ -28,14 +29,14 @@ CASE_KEYS = ("name", "projectile", "target", "n_samples", "n_chunks", "seed", *V
 
 
 def _num(value: Any, where: str) -> float:
-    v = _as_float(value, allow_str=False)
+    v = as_float(value, allow_str=False)
     if v is None or not math.isfinite(v):
         raise InputError(f"{where} must be a finite number, got {value!r}")
     return v
 
 
 def _int(value: Any, where: str) -> int:
-    v = _as_float(value, allow_str=False)
+    v = as_float(value, allow_str=False)
     if v is None or not math.isfinite(v) or v != math.floor(v) or abs(v) > 2**62:
         raise InputError(f"{where} must be a whole number, got {value!r}")
     return int(v)

@@ -8,10 +8,10 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from .. import analysis
-from ..solver import Numerics
-from .common import _STR, _attrs
-from .trajectories import trajectory_set
+from pencore import analysis
+from pencore.inputs.numerics import Numerics
+from pencore.studies.common import _STR, _attrs
+from pencore.studies.trajectories import trajectory_set
 
 __all__ = ["fig7"]
 
@@ -31,7 +31,7 @@ def fig7(
 
     Dims ``(velocity, time)``. Besides :func:`stack_trajectories`' variables: ``x_linear``
     (x of the centre of mass where the curved part ends, Point 2 of Eq. 12 by
-    :func:`pencore.analysis.turning_angle`) and ``delta_theta``.
+    :func:`pencore.analysis.turning.turning_angle`) and ``delta_theta``.
     """
     runs: dict[tuple[int], xr.Dataset] = {}
     ds = trajectory_set(

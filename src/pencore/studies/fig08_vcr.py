@@ -12,13 +12,15 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from .. import analysis, critical
-from ..critical import VELOCITY_TOL
-from ..library import InputError
-from ..solver import Numerics, prepare, run_impact, simulate
-from . import resolve_numerics
-from .common import _STR, PROJECTILES, _attrs, _axis, _start, grid, projectile_coords
-from .trajectories import _PARAM_ATTRS
+from pencore import analysis
+from pencore.errors import InputError
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.run.impact import prepare, run_impact, simulate
+from pencore.search import critical
+from pencore.search.threshold import STATUSES, VELOCITY_TOL
+from pencore.studies.common import _STR, PROJECTILES, _attrs, _axis, _start, projectile_coords
+from pencore.studies.parts import grid
+from pencore.studies.trajectories import _PARAM_ATTRS
 
 __all__ = ["vcr_study", "fig8"]
 
@@ -58,7 +60,7 @@ def _search_vars(
         "status": (
             dims,
             arr(lambda r: r.status, _STR),
-            {"units": "1", "long_name": "search status: " + ", ".join(critical.STATUSES)},
+            {"units": "1", "long_name": "search status: " + ", ".join(STATUSES)},
         ),
         "n_evals": (
             dims,
@@ -100,7 +102,7 @@ def vcr_study(
 ) -> xr.Dataset:
     """Critical reverse velocity Vcr on ``(projectile, obliquity, yaw)`` (Figs 8, 12).
 
-    Each cell is :func:`pencore.critical.vcr` on ``[lo, hi]`` m/s to ``tol`` with a
+    Each cell is :func:`pencore.search.critical.vcr` on ``[lo, hi]`` m/s to ``tol`` with a
     ``scan``-point monotonicity check. With ``nose=True`` the run at the bracket's high
     end (the lowest speed seen to reverse) is simulated in full, and the side the nose
     points to at its end is recorded (``nose_direction``, ``final_theta``,

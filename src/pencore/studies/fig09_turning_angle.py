@@ -8,11 +8,11 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from .. import analysis
-from ..solver import Numerics, simulate
-from . import resolve_numerics
-from .common import _STR, PROJECTILES, _attrs, _axis, _start, projectile_coords
-from .trajectories import stack_trajectories
+from pencore import analysis
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.run.impact import simulate
+from pencore.studies.common import _STR, PROJECTILES, _attrs, _axis, _start, projectile_coords
+from pencore.studies.trajectories import stack_trajectories
 
 __all__ = ["fig9"]
 
@@ -30,7 +30,7 @@ def fig9(
 ) -> xr.Dataset:
     """Paper Fig. 9: total turning angle d(theta)_12 = theta_2 - theta_1 against Lc/L.
 
-    Points 1 and 2 by :func:`pencore.analysis.turning_angle` (``bracket`` method) for
+    Points 1 and 2 by :func:`pencore.analysis.turning.turning_angle` (``bracket`` method) for
     each fraction of the peak curvature in ``fractions`` (dimension
     ``bracket_fraction``), and by the ``sign_change`` method (``delta_theta_sign_change``),
     so the reader sees how much the definition moves the number. Trajectories on

@@ -1,7 +1,7 @@
 """Figs 13-14: normal impact with a small yaw, under both yaw conventions.
 
 For a *normal* impact with yaw the paper does not say whether the velocity or the axis
-is normal; :func:`pencore.critical.normal_impact_angles` maps both readings
+is normal; :func:`pencore.inputs.conventions.normal_impact_angles` maps both readings
 (``axis_tilted``: the velocity is normal, the axis tilted by the yaw;
 ``velocity_tilted``: the other way).
 """
@@ -14,12 +14,12 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from .. import analysis, critical
-from ..critical import YAW_CONVENTIONS
-from ..solver import Numerics, prepare, simulate
-from . import resolve_numerics
-from .common import _STR, _axis
-from .trajectories import _PARAM_ATTRS, stack_trajectories
+from pencore import analysis
+from pencore.inputs.conventions import YAW_CONVENTIONS, normal_impact_angles
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.run.impact import prepare, simulate
+from pencore.studies.common import _STR, _axis
+from pencore.studies.trajectories import _PARAM_ATTRS, stack_trajectories
 
 __all__ = ["fig13"]
 
@@ -43,12 +43,12 @@ def fig13(
     vals = _axis(velocities, "velocities")
     conv = list(conventions)
     for c in conv:
-        critical.normal_impact_angles(yaw, c)  # validates the name
+        normal_impact_angles(yaw, c)  # validates the name
     num = resolve_numerics(numerics)
     pr = prepare(projectile, target, num)
     runs = {}
     for ic, c in enumerate(conv):
-        obl, yw = critical.normal_impact_angles(yaw, c)
+        obl, yw = normal_impact_angles(yaw, c)
         for iv, v in enumerate(vals):
             runs[(ic, iv)] = simulate(pr.projectile, pr.target, float(v), obl, yw, prepared=pr)
     ds = stack_trajectories(

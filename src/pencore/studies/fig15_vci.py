@@ -9,14 +9,15 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from .. import analysis, critical
-from ..critical import VELOCITY_TOL
-from ..library import InputError
-from ..solver import Numerics
-from . import resolve_numerics
-from .common import _attrs, _axis, projectile_coords
-from .fig08_vcr import _numerics_dict, _search_vars
-from .trajectories import _PARAM_ATTRS
+from pencore import analysis
+from pencore.errors import InputError
+from pencore.inputs.conventions import normal_impact_angles
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.search import critical
+from pencore.search.threshold import VELOCITY_TOL
+from pencore.studies.common import _attrs, _axis, projectile_coords
+from pencore.studies.fig08_vcr import _numerics_dict, _search_vars
+from pencore.studies.trajectories import _PARAM_ATTRS
 
 __all__ = ["vci_study"]
 
@@ -38,12 +39,12 @@ def vci_study(
 ) -> xr.Dataset:
     """Critical impact velocity for instability Vci on ``(projectile, yaw, threshold)``.
 
-    Each cell is :func:`pencore.critical.vci`: the lowest normal-impact speed at which a
+    Each cell is :func:`pencore.search.critical.vci`: the lowest normal-impact speed at which a
     run with the given yaw turns back or ends with a deviation above ``threshold``
     (deg). The tip starts touching the surface. ``primary_threshold`` (deg; default the
     middle of ``thresholds``) is the one the figure and the comparison lead with; the
     others show how Vci moves with the choice. The searches of one (projectile, yaw)
-    share their runs across thresholds (``shared_runs`` of :func:`pencore.critical.vci`):
+    share their runs across thresholds (``shared_runs`` of :func:`pencore.search.critical.vci`):
     the results are those of separate searches, with fewer runs.
     """
     names = list(projectiles)
@@ -55,7 +56,7 @@ def vci_study(
         raise InputError(
             f"primary threshold {primary_threshold} is not one of the thresholds {list(th)}"
         )
-    critical.normal_impact_angles(0.0, convention)
+    normal_impact_angles(0.0, convention)
     num = resolve_numerics(numerics)
     res = np.empty((len(names), yw.size, th.size), dtype=object)
     for ip, p in enumerate(names):

@@ -11,12 +11,12 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from .. import analysis
-from ..solver import Numerics, prepare, simulate
-from . import resolve_numerics
-from .common import _STR, _attrs, _axis, start_from_height
-from .fig08_vcr import _numerics_dict
-from .trajectories import _PARAM_ATTRS, trajectory_set
+from pencore import analysis
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.run.impact import prepare, simulate
+from pencore.studies.common import _STR, _attrs, _axis, start_from_height
+from pencore.studies.fig08_vcr import _numerics_dict
+from pencore.studies.trajectories import _PARAM_ATTRS, trajectory_set
 
 __all__ = ["fig16", "start_height_study"]
 

@@ -9,13 +9,12 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from .. import critical
-from ..critical import OMEGA_TOL
-from ..solver import Numerics
-from . import resolve_numerics
-from .common import _axis, projectile_coords, start_from_height
-from .fig08_vcr import _numerics_dict, _search_vars
-from .trajectories import _PARAM_ATTRS
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.search import critical
+from pencore.search.threshold import OMEGA_TOL
+from pencore.studies.common import _axis, projectile_coords, start_from_height
+from pencore.studies.fig08_vcr import _numerics_dict, _search_vars
+from pencore.studies.trajectories import _PARAM_ATTRS
 
 __all__ = ["omega_c_study"]
 
@@ -34,7 +33,7 @@ def omega_c_study(
 ) -> xr.Dataset:
     """Critical angular velocity omega_c on ``(projectile, velocity)`` (paper Fig. 18).
 
-    Each cell is :func:`pencore.critical.omega_c` on ``[lo, hi]`` rad/s, normal impact,
+    Each cell is :func:`pencore.search.critical.omega_c` on ``[lo, hi]`` rad/s, normal impact,
     zero yaw, the tip starting ``start_height`` (m) above the surface. ``above_range``
     means no reversal up to ``hi``.
     """

@@ -40,13 +40,14 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from ..library import get_target
-from ..solver import Numerics, prepare, simulate
-from ..target import Target
-from ..validate import InputError, check_keys
-from . import resolve_numerics
-from .common import t_half_width
-from .perforation import slab_target
+from pencore.errors import InputError
+from pencore.inputs.library import get_target
+from pencore.inputs.limits import check_keys
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.inputs.target import Target
+from pencore.run.impact import prepare, simulate
+from pencore.studies.common import t_half_width
+from pencore.studies.perforation import slab_target
 
 __all__ = ["QUANTITIES", "load_measurements", "measured_vs_predicted", "error_statistics"]
 

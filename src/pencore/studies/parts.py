@@ -2,7 +2,7 @@
 becomes job parts (:func:`parts_of`), with the ``{min, max, step}`` grids of the
 configuration (:func:`grid`).
 
-Apart from :mod:`pencore.studies.config` (numpy and :mod:`pencore.validate` only): the
+Apart from :mod:`pencore.studies.config` (numpy and :mod:`pencore.inputs.limits` only): the
 workflow asks for the parts at every Snakemake start, before any study runs.
 """
 
@@ -14,7 +14,7 @@ from typing import Any
 
 import numpy as np
 
-from ..validate import InputError
+from pencore.errors import InputError
 
 __all__ = ["STUDIES", "SPLIT_STUDIES", "grid", "values", "parts_of"]
 

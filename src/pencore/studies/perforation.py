@@ -1,10 +1,10 @@
 """Beyond the paper (issue 11): perforation of finite slabs.
 
-* :func:`ballistic_limit_map`: the ballistic limit v_bl (:func:`pencore.critical.
+* :func:`ballistic_limit_map`: the ballistic limit v_bl (:func:`pencore.search.critical.
   ballistic_limit`) of one projectile against slab thickness and obliquity;
 * :func:`residual_velocity_curve`: residual speed against impact speed for one slab,
   with the Recht-Ipson curve ``v_r = a (v^p - v_bl^p)^(1/p)`` fitted to it
-  (:func:`pencore.perforation.fit_recht_ipson`, ``v_bl`` from the search).
+  (:func:`pencore.search.perforation.fit_recht_ipson`, ``v_bl`` from the search).
 
 These are model predictions (no measurement is compared here): the DAFL model with the
 paper's concrete law, no crater or free-surface reduction unless the study's ``crater_depth``
@@ -20,14 +20,14 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from ..critical import VELOCITY_TOL
-from ..library import get_target
-from ..perforation import ballistic_limit, fit_recht_ipson, recht_ipson
-from ..solver import Numerics, prepare, simulate
-from ..target import Layer, Target
-from . import resolve_numerics
-from .common import _STR, _attrs, _axis
-from .fig08_vcr import _search_vars
+from pencore.inputs.library import get_target
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.inputs.target import Layer, Target
+from pencore.run.impact import prepare, simulate
+from pencore.search.perforation import ballistic_limit, fit_recht_ipson, recht_ipson
+from pencore.search.threshold import VELOCITY_TOL
+from pencore.studies.common import _STR, _attrs, _axis
+from pencore.studies.fig08_vcr import _search_vars
 
 __all__ = ["slab_target", "ballistic_limit_map", "residual_velocity_curve"]
 

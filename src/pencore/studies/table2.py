@@ -17,10 +17,10 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from ..library import InputError
-from ..solver import Numerics, prepare, simulate
-from . import resolve_numerics
-from .common import _attrs
+from pencore.errors import InputError
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.run.impact import prepare, simulate
+from pencore.studies.common import _attrs
 
 __all__ = ["DEPTH_MEASURES", "TABLE2_INPUT_COLUMNS", "table2"]
 
@@ -70,7 +70,7 @@ def table2(
     numerics : Numerics or mapping, optional
         Numerical parameters, or overrides of pencore's defaults.
     projectiles : sequence of str
-        Candidate projectiles (named projectiles of :mod:`pencore.library`).
+        Candidate projectiles (named projectiles of :mod:`pencore.inputs.library`).
     target : str
         Target name.
     measures : sequence of str

@@ -16,11 +16,18 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from .. import analysis
-from ..library import InputError
-from ..solver import Numerics, prepare, simulate
-from . import resolve_numerics
-from .common import _STR, TRAJECTORY_VARIABLES, _attrs, _axis, _signed_deviation, _start
+from pencore import analysis
+from pencore.errors import InputError
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.run.impact import prepare, simulate
+from pencore.studies.common import (
+    _STR,
+    TRAJECTORY_VARIABLES,
+    _attrs,
+    _axis,
+    _signed_deviation,
+    _start,
+)
 
 __all__ = ["stack_trajectories", "trajectory_set"]
 
@@ -44,7 +51,7 @@ def stack_trajectories(
         About this many samples on the shared time axis (see the module docstring).
     speed_fraction : float
         Fraction of the impact speed that ends the analysed part of a run
-        (:func:`pencore.analysis.final_deviation`).
+        (:func:`pencore.analysis.deviation.final_deviation`).
 
     Returns
     -------

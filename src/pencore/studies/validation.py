@@ -25,19 +25,16 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from .. import closedform
-from ..geometry import OgiveNose
-from ..library import InputError, get_projectile, get_target
-from ..solver import Numerics, prepare, simulate
-from ..target import Medium
-from . import resolve_numerics
-from .common import _attrs
-from .table2 import DEPTH_MEASURES, TABLE2_INPUT_COLUMNS, table2
+from pencore import closedform
+from pencore.errors import InputError
+from pencore.inputs.geometry import OgiveNose
+from pencore.inputs.library import get_projectile, get_target
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.inputs.target import Medium
+from pencore.run.impact import prepare, simulate
+from pencore.studies.common import _attrs
 
 __all__ = [
-    "DEPTH_MEASURES",
-    "TABLE2_INPUT_COLUMNS",
-    "table2",
     "fig5",
     "verification",
     "verification_summary",

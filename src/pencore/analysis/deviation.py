@@ -1,0 +1,146 @@
+"""Deviation of a trajectory from the target normal, its final value, nose direction, reversal.
+
+Part of :mod:`pencore.analysis`; the final deviation is read at the last saved state whose
+speed is still a fraction of the impact speed (see :func:`final_deviation`). Degrees out.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from pencore.analysis.curvature import (
+    DEFAULT_SPEED_FRACTION,
+    _as_1d,
+    _check_same,
+    _impact_speed,
+    _window_end,
+)
+
+_NAN = float("nan")
+
+
+# ------------------------------------------------------------------ deviation, direction
+
+
+def deviation_from_normal(vx: Any, vy: Any, vz: Any = 0.0, *, signed: bool = False) -> Any:
+    """Angle (degree) between a velocity and the inward target normal ``-y``.
+
+    For motion towards ``+x`` and down (``vx > 0``, ``vy < 0``, ``vz = 0``) this is the
+    paper's ``phi = 90 deg + atan(dy/dx)`` with ``dy/dx = vy / vx``, written with
+    ``atan2`` so it stays defined for a vertical path (0) and for a path that turns back
+    up (> 90).
+
+    Parameters
+    ----------
+    vx, vy, vz : float or array_like
+        Velocity components (m/s).
+    signed : bool
+        If True, return ``atan2(vx, -vy)`` instead: the in-plane angle, positive towards
+        ``+x`` and negative towards ``-x`` (``vz`` ignored). Default: the unsigned 3-D
+        angle ``atan2(hypot(vx, vz), -vy)`` in [0, 180].
+
+    Returns
+    -------
+    float or ndarray
+        Degrees; a float for scalar input.
+    """
+    vx, vy, vz = np.asarray(vx, float), np.asarray(vy, float), np.asarray(vz, float)
+    if signed:
+        out = np.degrees(np.arctan2(vx, -vy))
+    else:
+        out = np.degrees(np.arctan2(np.hypot(vx, vz), -vy))
+    return float(out) if out.ndim == 0 else out
+
+
+def final_state_index(
+    speed: Any, impact_speed: float | None = None, fraction: float = DEFAULT_SPEED_FRACTION
+) -> int:
+    """Index of the last saved state whose speed is >= ``fraction`` x impact speed.
+
+    ``impact_speed`` (m/s) defaults to ``speed[0]``; -1 if no state qualifies.
+    """
+    sp = _as_1d("speed", speed)
+    v0 = float(sp[0]) if impact_speed is None else float(impact_speed)
+    return _window_end(sp, v0, fraction)
+
+
+def final_deviation_arrays(
+    vx: Any,
+    vy: Any,
+    vz: Any = None,
+    *,
+    fraction: float = DEFAULT_SPEED_FRACTION,
+    impact_speed: float | None = None,
+    signed: bool = False,
+) -> float:
+    """:func:`final_deviation` from velocity histories (m/s); ``impact_speed`` defaults to
+    the first speed. NaN if no state is fast enough."""
+    vx, vy = _as_1d("vx", vx), _as_1d("vy", vy)
+    vz = np.zeros_like(vx) if vz is None else _as_1d("vz", vz)
+    _check_same(vx=vx, vy=vy, vz=vz)
+    i = final_state_index(np.sqrt(vx**2 + vy**2 + vz**2), impact_speed, fraction)
+    if i < 0:
+        return _NAN
+    return float(deviation_from_normal(vx[i], vy[i], vz[i], signed=signed))
+
+
+def final_deviation(
+    ds: xr.Dataset, fraction: float = DEFAULT_SPEED_FRACTION, *, signed: bool = False
+) -> float:
+    """Deviation of the trajectory from the normal at the end of the curved part (degree).
+
+    Defined as :func:`deviation_from_normal` of the centre-of-mass velocity at the last
+    saved state whose speed is still >= ``fraction`` (default 0.1) x the impact speed
+    (attribute ``impact_velocity_m_s``, else the first saved speed). The direction right at
+    the stop is not used: as the speed goes to zero the velocity-independent part of the
+    resistance turns the projectile ever more sharply, which is not the trajectory's
+    direction. For a run cut at reversal or that exits, the last fast state is the last
+    state. This is the paper's phi (Figs 13-14) and alpha (Figs 16-17).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        Output of :func:`pencore.simulate`.
+    fraction : float
+        Speed fraction in [0, 1).
+    signed : bool
+        Signed in-plane angle (positive towards +x) instead of the unsigned one.
+    """
+    return final_deviation_arrays(
+        ds["vel_x"].values,
+        ds["vel_y"].values,
+        ds["vel_z"].values,
+        fraction=fraction,
+        impact_speed=_impact_speed(ds),
+        signed=signed,
+    )
+
+
+def nose_direction(data: xr.Dataset | Any) -> str:
+    """``'+x'`` or ``'-x'``: the side the nose points to at the end of the run.
+
+    The sign of the axis component ``axis_x`` at the last saved state (Figs 11-12);
+    ``axis_x == 0`` (a nose pointing straight down) counts as ``'+x'``. ``data`` is a
+    :func:`pencore.simulate` dataset or an ``axis_x`` history.
+    """
+    ax = data["axis_x"].values if isinstance(data, xr.Dataset) else np.asarray(data, float)
+    last = float(np.ravel(ax)[-1])
+    if math.isnan(last):
+        raise ValueError("axis_x at the end is NaN")
+    return "+x" if last >= 0.0 else "-x"
+
+
+def reversed_in_target(ds: xr.Dataset) -> bool:
+    """True if the run turned back towards the surface while in the target.
+
+    Reads the ``reversed`` attribute written by :func:`pencore.simulate` (set when the
+    centre-of-mass velocity gets ``vel_y >= 0`` while part of the body is below the
+    surface and the speed is >= ``v_stop``).
+    """
+    if "reversed" not in ds.attrs:
+        raise KeyError("dataset has no 'reversed' attribute; was it made by pencore.simulate?")
+    return bool(int(ds.attrs["reversed"]))

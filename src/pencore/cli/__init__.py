@@ -1,0 +1,5 @@
+"""The ``pencore`` command line (:func:`main.main`)."""
+
+from pencore.cli.main import build_parser, main
+
+__all__ = ["main", "build_parser"]

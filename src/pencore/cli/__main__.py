@@ -1,0 +1,7 @@
+"""``python -m pencore.cli``: the ``pencore`` command line."""
+
+import sys
+
+from pencore.cli.main import main
+
+sys.exit(main())

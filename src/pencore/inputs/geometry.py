@@ -1,0 +1,409 @@
+"""Projectile geometry: bodies of revolution, mass properties and surface quadrature.
+
+A projectile is a chain of axisymmetric segments along its axis, starting at the nose
+tip: a nose (tangent ogive, cone or flat face) followed by cylindrical segments. Each
+segment has its own density. Everything is SI: metres, kilograms, kg/m^3.
+
+Conventions
+-----------
+* ``s`` is the axial distance from the nose tip, growing towards the tail (m).
+* The body frame has its origin at the centre of mass and its first axis ``e1``
+  pointing from the tail to the nose, so a surface point at axial distance ``s`` from
+  the tip sits at ``x1 = Lc - s`` (``Lc`` is the tip-to-centre-of-mass distance).
+* The surface is described by :class:`Rings`: thin circular bands. On each band the
+  outward unit normal is ``n = (na, nr cos(phi), nr sin(phi))`` in the body frame, and
+  the area element is ``dA = w dphi`` with ``w = r dl`` (radius times slant width).
+  The force kernel integrates the stresses over ``phi`` in closed form, so the only
+  surface discretisation error is along the axis.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from pencore.errors import GeometryError, InputError
+from pencore.inputs.limits import number
+
+__all__ = [
+    "OgiveNose",
+    "ConeNose",
+    "FlatNose",
+    "Cylinder",
+    "Projectile",
+    "Rings",
+    "MassProperties",
+    "nose_factor",
+]
+
+_GL_X, _GL_W = np.polynomial.legendre.leggauss(96)
+
+
+def _check(key: str, value: float) -> float:
+    """``value`` within ``pencore.inputs.limits.LIMITS[key]``, else :class:`GeometryError`."""
+    try:
+        return number(value, key)
+    except InputError as exc:
+        raise GeometryError(str(exc)) from None
+
+
+@dataclass(frozen=True)
+class OgiveNose:
+    """Tangent-ogive nose of calibre-radius-head ``crh`` (CRH = ogive radius / diameter).
+
+    ``crh = 0.5`` is the hemisphere. Nose length is ``a sqrt(4 crh - 1)``.
+    """
+
+    crh: float
+    density: float
+
+    def __post_init__(self) -> None:
+        _check("crh", self.crh)
+        _check("density", self.density)
+
+    def length(self, a: float) -> float:
+        return a * math.sqrt(4.0 * self.crh - 1.0)
+
+    def radius(self, s: np.ndarray, a: float) -> np.ndarray:
+        ro = 2.0 * self.crh * a
+        ln = self.length(a)
+        return np.sqrt(np.maximum(ro * ro - (ln - s) ** 2, 0.0)) - (ro - a)
+
+    def rings(self, a: float, n: int) -> tuple[np.ndarray, ...]:
+        """Bands uniform in arc length: returns s, r, na, nr, dl."""
+        ro = 2.0 * self.crh * a
+        ln = self.length(a)
+        beta_tip = math.asin(min(ln / ro, 1.0))
+        edges = np.linspace(beta_tip, 0.0, n + 1)
+        beta = 0.5 * (edges[:-1] + edges[1:])
+        s = ln - ro * np.sin(beta)
+        r = ro * np.cos(beta) - (ro - a)
+        dl = ro * (edges[:-1] - edges[1:])
+        return s, r, np.sin(beta), np.cos(beta), dl
+
+    def nodes(self, a: float, n: int) -> tuple[np.ndarray, np.ndarray]:
+        """Band edges of :meth:`rings` on the meridian, tip first: ``s, r`` (m), n + 1 each."""
+        ro = 2.0 * self.crh * a
+        ln = self.length(a)
+        beta = np.linspace(math.asin(min(ln / ro, 1.0)), 0.0, n + 1)
+        r = np.maximum(ro * np.cos(beta) - (ro - a), 0.0)
+        r[0] = 0.0
+        return ln - ro * np.sin(beta), r
+
+    def exact_area(self, a: float) -> float:
+        ro = 2.0 * self.crh * a
+        beta_tip = math.asin(min(self.length(a) / ro, 1.0))
+        # integral of 2 pi r dl with r = ro cos b - (ro - a), dl = ro db
+        return 2.0 * math.pi * ro * (ro * math.sin(beta_tip) - (ro - a) * beta_tip)
+
+
+@dataclass(frozen=True)
+class ConeNose:
+    """Conical nose with half-angle ``half_angle`` (rad)."""
+
+    half_angle: float
+    density: float
+
+    def __post_init__(self) -> None:
+        if isinstance(self.half_angle, bool) or not isinstance(self.half_angle, int | float):
+            raise GeometryError(f"cone half-angle must be a number of rad, got {self.half_angle!r}")
+        _check("half_angle_deg", math.degrees(self.half_angle))
+        _check("density", self.density)
+
+    def length(self, a: float) -> float:
+        return a / math.tan(self.half_angle)
+
+    def radius(self, s: np.ndarray, a: float) -> np.ndarray:
+        return np.asarray(s) * math.tan(self.half_angle)
+
+    def rings(self, a: float, n: int) -> tuple[np.ndarray, ...]:
+        ln = self.length(a)
+        edges = np.linspace(0.0, ln, n + 1)
+        s = 0.5 * (edges[:-1] + edges[1:])
+        t = self.half_angle
+        return (
+            s,
+            s * math.tan(t),
+            np.full(n, math.sin(t)),
+            np.full(n, math.cos(t)),
+            np.diff(edges) / math.cos(t),
+        )
+
+    def nodes(self, a: float, n: int) -> tuple[np.ndarray, np.ndarray]:
+        """Band edges of :meth:`rings` on the meridian, tip first: ``s, r`` (m)."""
+        s = np.linspace(0.0, self.length(a), n + 1)
+        return s, s * math.tan(self.half_angle)
+
+    def exact_area(self, a: float) -> float:
+        return math.pi * a * a / math.sin(self.half_angle)
+
+
+@dataclass(frozen=True)
+class FlatNose:
+    """Blunt nose: a flat circular face at the tip (zero length)."""
+
+    density: float = 7850.0
+
+    def __post_init__(self) -> None:
+        _check("density", self.density)
+
+    def length(self, a: float) -> float:
+        return 0.0
+
+    def radius(self, s: np.ndarray, a: float) -> np.ndarray:
+        return np.zeros_like(np.asarray(s, dtype=float))
+
+    def rings(self, a: float, n: int) -> tuple[np.ndarray, ...]:
+        return _disc_rings(a, n, 0.0, +1.0)
+
+    def nodes(self, a: float, n: int) -> tuple[np.ndarray, np.ndarray]:
+        """Band edges of :meth:`rings` (the face, centre first): ``s, r`` (m)."""
+        return np.zeros(n + 1), np.linspace(0.0, a, n + 1)
+
+    def exact_area(self, a: float) -> float:
+        return math.pi * a * a
+
+
+def _disc_rings(a: float, n: int, s0: float, sign: float) -> tuple[np.ndarray, ...]:
+    edges = np.linspace(0.0, a, n + 1)
+    r = 0.5 * (edges[:-1] + edges[1:])
+    return np.full(n, s0), r, np.full(n, sign), np.zeros(n), np.diff(edges)
+
+
+@dataclass(frozen=True)
+class Cylinder:
+    """Cylindrical (shank) segment of given length (m) and density (kg/m^3)."""
+
+    length: float
+    density: float
+
+    def __post_init__(self) -> None:
+        _check("length", self.length)
+        _check("density", self.density)
+
+
+@dataclass(frozen=True)
+class MassProperties:
+    """Mass (kg), tip-to-centre-of-mass distance ``lc`` (m), total length (m), and the
+    axial ``i_axial`` and transverse ``i_transverse`` moments of inertia about the
+    centre of mass (kg m^2)."""
+
+    mass: float
+    lc: float
+    length: float
+    i_axial: float
+    i_transverse: float
+
+    @property
+    def lc_over_l(self) -> float:
+        return self.lc / self.length
+
+
+@dataclass(frozen=True)
+class Rings:
+    """Surface quadrature of a body of revolution (see the module docstring).
+
+    Arrays, one entry per band: ``x1`` axial body coordinate of the band (m, from the
+    centre of mass, + towards the nose), ``r`` radius (m), ``na``/``nr`` axial and radial
+    components of the outward normal, ``w`` area weight r*dl (m^2 per rad), ``part``
+    0 for nose, 1 for shank, 2 for flat faces.
+    """
+
+    x1: np.ndarray
+    r: np.ndarray
+    na: np.ndarray
+    nr: np.ndarray
+    w: np.ndarray
+    part: np.ndarray
+
+    @property
+    def area(self) -> float:
+        return float(2.0 * np.pi * self.w.sum())
+
+    def as_array(self) -> np.ndarray:
+        """(n, 5) float array x1, r, na, nr, w for the compiled kernel."""
+        return np.ascontiguousarray(np.stack([self.x1, self.r, self.na, self.nr, self.w], 1))
+
+
+Nose = OgiveNose | ConeNose | FlatNose
+
+
+@dataclass(frozen=True)
+class Projectile:
+    """A rigid body of revolution: a nose followed by cylindrical segments.
+
+    Parameters
+    ----------
+    name : str
+        Label used in results.
+    diameter : float
+        Body diameter ``d`` (m); every segment has this diameter.
+    nose : OgiveNose | ConeNose | FlatNose
+        The nose, with its density.
+    shank : tuple of Cylinder
+        Cylindrical segments from front to back.
+    source : str
+        Provenance of the numbers (``paper``, ``derived: ...``, ``assumed: ...``).
+    """
+
+    name: str
+    diameter: float
+    nose: Nose
+    shank: tuple[Cylinder, ...] = field(default_factory=tuple)
+    source: str = ""
+
+    def __post_init__(self) -> None:
+        _check("diameter", self.diameter)
+        object.__setattr__(self, "shank", tuple(self.shank))
+
+    @property
+    def radius(self) -> float:
+        return 0.5 * self.diameter
+
+    @property
+    def nose_length(self) -> float:
+        return self.nose.length(self.radius)
+
+    @property
+    def length(self) -> float:
+        return self.nose_length + sum(c.length for c in self.shank)
+
+    def mass_properties(self) -> MassProperties:
+        """Mass, centre of mass and inertia by Gauss-Legendre quadrature over thin discs.
+
+        Each disc of radius ``r`` and thickness ``ds`` contributes ``dm = rho pi r^2 ds``,
+        ``dI_axial = dm r^2 / 2`` and ``dI_transverse = dm (r^2/4 + (s - s_c)^2)``.
+        Computed once per (immutable) projectile and kept: every trajectory asks for it.
+        """
+        cached = self.__dict__.get("_mass_properties")
+        if cached is not None:
+            return cached
+        a = self.radius
+        parts: list[tuple[np.ndarray, np.ndarray, float]] = []  # s, r*ds-weights, rho
+        ln = self.nose_length
+        if ln > 0.0:
+            s = 0.5 * ln * (_GL_X + 1.0)
+            ds = 0.5 * ln * _GL_W
+            parts.append((s, np.stack([self.nose.radius(s, a), ds]), self.nose.density))
+        s0 = ln
+        for cyl in self.shank:
+            s = s0 + 0.5 * cyl.length * (_GL_X + 1.0)
+            ds = 0.5 * cyl.length * _GL_W
+            parts.append((s, np.stack([np.full_like(s, a), ds]), cyl.density))
+            s0 += cyl.length
+        m = m1 = i_ax = m2 = i_disc = 0.0
+        for s, (r, ds), rho in parts:
+            dm = rho * np.pi * r * r * ds
+            m += dm.sum()
+            m1 += (dm * s).sum()
+            m2 += (dm * s * s).sum()
+            i_ax += (0.5 * dm * r * r).sum()
+            i_disc += (0.25 * dm * r * r).sum()
+        if m <= 0.0:
+            raise GeometryError("the body has no volume (a flat nose needs a shank)")
+        lc = m1 / m
+        i_tr = i_disc + m2 - m * lc * lc
+        mp = MassProperties(float(m), float(lc), float(self.length), float(i_ax), float(i_tr))
+        object.__setattr__(self, "_mass_properties", mp)  # a cache, not a field
+        return mp
+
+    def rings(self, n_nose: int = 48, n_shank: int = 24, n_face: int = 4) -> Rings:
+        """Surface bands: ``n_nose`` on the nose, ``n_shank`` per metre-ish of shank
+        (at least ``n_shank`` per segment scaled by its length in calibres / 5),
+        ``n_face`` on each flat face (blunt nose face, rear face).
+
+        Returns
+        -------
+        Rings
+            Body-frame quadrature relative to the centre of mass.
+        """
+        if n_nose < 1 or n_shank < 1 or n_face < 1:
+            raise GeometryError("ring counts must be >= 1")
+        a = self.radius
+        lc = self.mass_properties().lc
+        blocks: list[tuple[np.ndarray, ...]] = []
+        parts: list[np.ndarray] = []
+        nose_rings = self.nose.rings(a, n_face if isinstance(self.nose, FlatNose) else n_nose)
+        blocks.append(nose_rings)
+        parts.append(np.full(len(nose_rings[0]), 2 if isinstance(self.nose, FlatNose) else 0))
+        s0 = self.nose_length
+        for cyl in self.shank:
+            edges = self._shank_edges(cyl, s0, n_shank)
+            n = edges.size - 1
+            s = 0.5 * (edges[:-1] + edges[1:])
+            blocks.append((s, np.full(n, a), np.zeros(n), np.ones(n), np.diff(edges)))
+            parts.append(np.ones(n, dtype=int))
+            s0 += cyl.length
+        blocks.append(_disc_rings(a, n_face, s0, -1.0))
+        parts.append(np.full(n_face, 2))
+        s, r, na, nr, dl = (np.concatenate(c) for c in zip(*blocks, strict=True))
+        return Rings(
+            x1=lc - s, r=r, na=na, nr=nr, w=r * dl, part=np.concatenate(parts).astype(np.int8)
+        )
+
+    def _shank_edges(self, cyl: Cylinder, s0: float, n_shank: int) -> np.ndarray:
+        """Band edges (m from the tip) of a cylindrical segment starting at ``s0``."""
+        n = max(1, int(round(n_shank * cyl.length / (5.0 * self.diameter))))
+        n = max(n, n_shank // 4)
+        return np.linspace(s0, s0 + cyl.length, n + 1)
+
+    def profile(
+        self, n_nose: int = 48, n_shank: int = 24, n_face: int = 4
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The meridian of the surface as a polyline through the band edges of
+        :meth:`rings` (same counts): from the tip (or the centre of a flat nose face)
+        along the side to the centre of the rear face.
+
+        Returns
+        -------
+        s, r : (k + 1,) float
+            Nodes: axial distance from the tip and radius (m).
+        part : (k,) int8
+            Per segment: 0 nose, 1 shank, 2 flat face (as :attr:`Rings.part`).
+        """
+        if n_nose < 1 or n_shank < 1 or n_face < 1:
+            raise GeometryError("ring counts must be >= 1")
+        a = self.radius
+        flat = isinstance(self.nose, FlatNose)
+        s_n, r_n = self.nose.nodes(a, n_face if flat else n_nose)
+        ss, rr = [s_n], [r_n]
+        parts = [np.full(s_n.size - 1, 2 if flat else 0)]
+        s0 = self.nose_length
+        for cyl in self.shank:
+            e = self._shank_edges(cyl, s0, n_shank)
+            ss.append(e[1:])
+            rr.append(np.full(e.size - 1, a))
+            parts.append(np.ones(e.size - 1, dtype=int))
+            s0 += cyl.length
+        face = np.linspace(a, 0.0, n_face + 1)
+        ss.append(np.full(n_face, s0))
+        rr.append(face[1:])
+        parts.append(np.full(n_face, 2))
+        return np.concatenate(ss), np.concatenate(rr), np.concatenate(parts).astype(np.int8)
+
+    def exact_area(self) -> float:
+        """Closed-form total surface area (m^2), for checking the quadrature."""
+        a = self.radius
+        side = sum(2.0 * math.pi * a * c.length for c in self.shank)
+        return self.nose.exact_area(a) + side + math.pi * a * a
+
+    def nose_factor(self) -> float:
+        """Nose factor N* of the frictionless DAFL axial force (see :func:`nose_factor`)."""
+        return nose_factor(self.nose)
+
+
+def nose_factor(nose: Nose) -> float:
+    """Dimensionless nose factor N* such that the frictionless axial force on a fully
+    embedded nose at zero yaw is ``pi a^2 (a0 + N* a2 V^2)``.
+
+    Tangent ogive: ``N* = (8 psi - 1) / (24 psi^2)`` (hemisphere 1/2);
+    cone: ``sin^2(half-angle)``; flat: 1.
+    """
+    if isinstance(nose, OgiveNose):
+        psi = nose.crh
+        return (8.0 * psi - 1.0) / (24.0 * psi * psi)
+    if isinstance(nose, ConeNose):
+        return math.sin(nose.half_angle) ** 2
+    return 1.0

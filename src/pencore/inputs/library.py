@@ -1,0 +1,491 @@
+"""Named projectiles and targets, YAML loading, and the Table-3 geometry fit.
+
+Provenance of every shipped number is recorded in its ``source`` string:
+``paper`` (Li & Flores-Johnson 2011), ``derived`` (how), or ``assumed`` (why; to be
+replaced when the published value is at hand).
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import yaml
+
+from pencore.errors import InputError
+from pencore.inputs.geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
+from pencore.inputs.limits import check_keys, number
+from pencore.inputs.target import Layer, Medium, Target
+
+__all__ = [
+    "MEDIA",
+    "TABLE3",
+    "Table3Fit",
+    "table3_fit",
+    "table3_mass_bound",
+    "shipped_table3_geometry",
+    "write_table3_geometry",
+    "get_projectile",
+    "get_target",
+    "projectile_from_dict",
+    "target_from_dict",
+    "projectile_names",
+    "target_names",
+]
+
+
+# ---------------------------------------------------------------- media (paper Table 1)
+
+MEDIA: dict[str, Medium] = {
+    "soil": Medium(
+        "soil",
+        (1.718 * 10e6, 0.0, 2.215 * 1860.0),
+        density=1860.0,
+        source="paper Table 1 (Forrestal & Luk 1992): A tau0 + B rho Vn^2, A=1.718, "
+        "tau0=10 MPa, B=2.215, rho=1860 kg/m3",
+    ),
+    "concrete": Medium(
+        "concrete",
+        (21.0 * 13.5e6, 0.0, 1960.0),
+        density=1960.0,
+        source="paper Table 1 (Forrestal et al. 1994): S fc + rho Vn^2, S=21, fc=13.5 MPa, "
+        "rho=1960 kg/m3",
+    ),
+    "aluminium": Medium(
+        "aluminium",
+        (5.04 * 276e6, 0.0, 0.983 * 2710.0),
+        density=2710.0,
+        source="paper Table 1 (Piekutowski et al. 1999; Forrestal & Piekutowski 2000): "
+        "A Y + B rho Vn^2, A=5.04, Y=276 MPa, B=0.983, rho=2710 kg/m3",
+    ),
+}
+
+# ---------------------------------------------------------------- Table 3 and its fit
+
+#: Paper Table 3: shank density (kg/m3), mass (kg), Lc/L; nose density 7850 kg/m3, CRH 3.
+TABLE3: dict[str, tuple[float, float, float]] = {
+    "p1": (4000.0, 19.1, 0.504),
+    "p2": (5150.0, 23.1, 0.525),
+    "p3": (7850.0, 32.8, 0.553),
+    "p4": (11340.0, 45.3, 0.571),
+}
+TABLE3_NOSE_DENSITY = 7850.0
+TABLE3_CRH = 3.0
+
+
+@dataclass(frozen=True)
+class Table3Fit:
+    """Least-squares fit of a solid CRH-3 ogive + solid cylinder to Table 3.
+
+    ``diameter`` and ``shank_length`` in m; ``residuals`` maps each projectile to
+    (model mass - table mass in kg, model Lc/L - table Lc/L).
+    """
+
+    diameter: float
+    shank_length: float
+    residuals: dict[str, tuple[float, float]]
+
+    def worst_scaled(self) -> float:
+        """Largest residual in units of the table's rounding (0.05 kg, 0.0005 in Lc/L);
+        <= 1 means every number is reproduced to its rounding."""
+        return max(max(abs(dm) / 0.05, abs(dl) / 0.0005) for dm, dl in self.residuals.values())
+
+    def within_rounding(self) -> bool:
+        return self.worst_scaled() <= 1.0
+
+    def report(self) -> str:
+        lines = [
+            f"Table 3 fit: diameter = {self.diameter * 1e3:.2f} mm, "
+            f"shank length = {self.shank_length * 1e3:.1f} mm, "
+            f"nose length = {_ogive_len(self.diameter) * 1e3:.1f} mm",
+            "projectile  mass_residual_kg  LcL_residual",
+        ]
+        for k, (dm, dl) in self.residuals.items():
+            lines.append(f"{k:10s}  {dm:+.4f}            {dl:+.5f}")
+        lines.append(
+            f"worst residual = {self.worst_scaled():.3f} x rounding; no fixed geometry can "
+            f"fit the four masses better than {table3_mass_bound():.4f} kg "
+            f"= {table3_mass_bound() / 0.05:.3f} x rounding (mass is affine in shank density)"
+        )
+        return "\n".join(lines)
+
+
+def _ogive_len(d: float) -> float:
+    return 0.5 * d * math.sqrt(4 * TABLE3_CRH - 1)
+
+
+def _table3_projectile(key: str, d: float, ls: float, source: str = "") -> Projectile:
+    rho_shank = TABLE3[key][0]
+    return Projectile(
+        key,
+        d,
+        OgiveNose(TABLE3_CRH, TABLE3_NOSE_DENSITY),
+        (Cylinder(ls, rho_shank),),
+        source=source,
+    )
+
+
+def table3_mass_bound() -> float:
+    """Smallest possible largest mass residual (kg) of ANY fixed geometry.
+
+    For a fixed body the mass is affine in the shank density, ``m = m_nose + rho V_shank``,
+    so the four Table-3 masses can be fitted no better than the minimax straight line
+    through (shank density, mass). That bound is 0.0525 kg, just above the table's
+    rounding (0.05 kg): the table is not exactly self-consistent.
+    """
+    from scipy.optimize import linprog
+
+    rows_ub: list[list[float]] = []
+    rhs_ub: list[float] = []
+    for rho, m, _ in TABLE3.values():
+        rows_ub += [[-1.0, -rho, -1.0], [1.0, rho, -1.0]]
+        rhs_ub += [-m, m]
+    sol = linprog([0, 0, 1], A_ub=rows_ub, b_ub=rhs_ub, bounds=[(None, None)] * 3)
+    return float(sol.x[2])
+
+
+@functools.cache
+def table3_fit() -> Table3Fit:
+    """Fit the diameter and shank length to the eight numbers of Table 3.
+
+    Minimax fit of the residuals scaled by the table's rounding (0.05 kg, 0.0005 in Lc/L):
+    the geometry whose worst number is closest to its stated value. Started from the
+    least-squares solution. See :func:`table3_mass_bound` for why no geometry reaches
+    the rounding exactly.
+    """
+    from scipy.optimize import least_squares, minimize
+
+    def resid(p: np.ndarray) -> np.ndarray:
+        d, ls = p
+        out = []
+        for key, (_, m, lcl) in TABLE3.items():
+            mp = _table3_projectile(key, d, ls).mass_properties()
+            out += [(mp.mass - m) / 0.05, (mp.lc_over_l - lcl) / 0.0005]
+        return np.asarray(out)
+
+    ls_sol = least_squares(resid, x0=[0.095, 0.5], x_scale=[0.01, 0.05], xtol=1e-14, ftol=1e-14)
+    mm = minimize(
+        lambda p: float(np.max(np.abs(resid(p)))),
+        ls_sol.x,
+        method="Nelder-Mead",
+        options={"xatol": 1e-10, "fatol": 1e-10, "maxiter": 4000},
+    )
+    d, ls = (float(x) for x in mm.x)
+    res = {}
+    for key, (_, m, lcl) in TABLE3.items():
+        mp = _table3_projectile(key, d, ls).mass_properties()
+        res[key] = (mp.mass - m, mp.lc_over_l - lcl)
+    return Table3Fit(d, ls, res)
+
+
+# ---------------------------------------------------------------- named projectiles
+
+
+def _validation_projectiles() -> dict[str, Projectile]:
+    out: dict[str, Projectile] = {}
+    # Concrete, Forrestal et al. (1994): 76.2 mm diameter, about 13 kg. Assumed: solid
+    # 4340 steel (7850 kg/m3), shank length chosen so that the mass is 13.0 kg.
+    d = 0.0762
+    for crh, tag in ((3.0, "3"), (4.25, "4p25")):
+        nose = OgiveNose(crh, 7850.0)
+        nose_mass = Projectile("n", d, nose).mass_properties().mass
+        ls = (13.0 - nose_mass) / (7850.0 * math.pi * (d / 2) ** 2)
+        out[f"concrete_crh{tag}"] = Projectile(
+            f"concrete_crh{tag}",
+            d,
+            nose,
+            (Cylinder(ls, 7850.0),),
+            source="assumed: 76.2 mm, 13.0 kg solid steel (Forrestal et al. 1994 class; "
+            "M/(rho d^3)=15.2 in Li & Chen 2003); replace with the published geometry",
+        )
+    # Aluminium, Piekutowski et al. (1999) / Forrestal & Piekutowski (2000): 7.1 mm
+    # diameter, 71 mm long VAR 4340 steel rods (recalled, unverified).
+    d = 0.0071
+    for crh, tag in ((3.0, "3"), (0.5, "0p5")):
+        nose = OgiveNose(crh, 7850.0)
+        ls = 0.071 - nose.length(d / 2)
+        out[f"aluminium_crh{tag}"] = Projectile(
+            f"aluminium_crh{tag}",
+            d,
+            nose,
+            (Cylinder(ls, 7850.0),),
+            source="assumed: 7.1 mm diameter, 71 mm long 4340 steel rod (recalled, "
+            "unverified); replace with the published geometry",
+        )
+    return out
+
+
+#: The fitted Table-3 geometry as shipped (derived data, provenance in the file).
+TABLE3_GEOMETRY_FILE = Path(__file__).parent / "data" / "table3_geometry.yaml"
+
+
+def shipped_table3_geometry(path: str | Path = TABLE3_GEOMETRY_FILE) -> tuple[float, float]:
+    """Diameter and shank length (m) of projectiles #1-#4 from the shipped file.
+
+    They are :func:`table3_fit`'s result written out by ``pencore fit-table3 --write``,
+    so that the named projectiles do not depend on an optimiser run in every process.
+    """
+    data = _load_yaml(Path(path), "Table-3 geometry")
+    check_keys(data, ["diameter_m", "shank_length_m"], str(path))
+    return (
+        _num(data, "diameter_m", str(path), "diameter", allow_str=False),
+        _num(data, "shank_length_m", str(path), "length", allow_str=False),
+    )
+
+
+def write_table3_geometry(fit: Table3Fit, path: str | Path = TABLE3_GEOMETRY_FILE) -> None:
+    """Write ``fit``'s diameter and shank length (m) to ``path`` atomically, with the
+    provenance header that :data:`TABLE3_GEOMETRY_FILE` carries."""
+    from pencore.io.atomic import atomic_path
+
+    header = [ln for ln in TABLE3_GEOMETRY_FILE.read_text().splitlines() if ln.startswith("#")]
+    text = "\n".join(
+        [*header, f"diameter_m: {fit.diameter!r}", f"shank_length_m: {fit.shank_length!r}", ""]
+    )
+    with atomic_path(path) as tmp:
+        Path(tmp).write_text(text)
+
+
+@functools.cache
+def _named_projectiles() -> dict[str, Projectile]:
+    d, ls = shipped_table3_geometry()
+    out = {
+        key: _table3_projectile(
+            key,
+            d,
+            ls,
+            source=f"paper Table 3 (mass, shank density, Lc/L); geometry derived by "
+            f"pencore.inputs.library.table3_fit: d={d:.5f} m, shank={ls:.5f} m",
+        )
+        for key in TABLE3
+    }
+    out.update(_validation_projectiles())
+    return out
+
+
+def projectile_names() -> list[str]:
+    return sorted(_named_projectiles())
+
+
+def target_names() -> list[str]:
+    return sorted(MEDIA)
+
+
+# ---------------------------------------------------------------- YAML
+
+
+def _num(
+    d: dict[str, Any], key: str, what: str, limit: str | None = None, allow_str: bool = True
+) -> float:
+    """``d[key]`` as a number within ``LIMITS[limit or key]`` (YAML's ``1e6`` string
+    form accepted unless ``allow_str`` is False)."""
+    if key not in d:
+        raise InputError(f"{what}: missing key {key!r}")
+    return number(d[key], limit or key, what, allow_str=allow_str)
+
+
+def _mapping(x: Any, what: str) -> dict[str, Any]:
+    if not isinstance(x, dict):
+        raise InputError(f"{what} must be a mapping, got {x!r}")
+    return x
+
+
+_NOSE_KEYS = {
+    "ogive": ("kind", "crh", "density"),
+    "cone": ("kind", "half_angle_deg", "density"),
+    "flat": ("kind", "density"),
+}
+
+
+def projectile_from_dict(d: dict[str, Any]) -> Projectile:
+    """Build a projectile from a mapping (the YAML format in the README).
+
+    Unknown keys, booleans or text where numbers belong, and values outside
+    :data:`pencore.inputs.limits.LIMITS` raise :class:`InputError` naming the key and value.
+    """
+    if not isinstance(d, dict):
+        raise InputError(f"projectile definition must be a mapping, got {type(d).__name__}")
+    name = str(d.get("name", "projectile"))
+    what = f"projectile {name!r}"
+    check_keys(d, ("name", "diameter", "nose", "shank", "source"), what)
+    diameter = _num(d, "diameter", what)
+    nd = d.get("nose")
+    if not isinstance(nd, dict):
+        raise InputError(f"{what}: 'nose' must be a mapping with a 'kind', got {nd!r}")
+    kind = nd.get("kind", "ogive")
+    kind = kind.lower() if isinstance(kind, str) else kind
+    if kind not in _NOSE_KEYS:
+        raise InputError(f"{what}: nose kind must be ogive, cone or flat, got {kind!r}")
+    check_keys(nd, _NOSE_KEYS[kind], f"{what} nose")
+    rho = _num(nd, "density", what + " nose")
+    if kind == "ogive":
+        nose: OgiveNose | ConeNose | FlatNose = OgiveNose(_num(nd, "crh", what + " nose"), rho)
+    elif kind == "cone":
+        nose = ConeNose(math.radians(_num(nd, "half_angle_deg", what + " nose")), rho)
+    else:
+        nose = FlatNose(rho)
+    shank = d.get("shank", [])
+    if isinstance(shank, dict):
+        shank = [shank]
+    if not isinstance(shank, list) or not all(isinstance(c, dict) for c in shank):
+        raise InputError(
+            f"{what}: 'shank' must be a list of mappings with length and density, got {shank!r}"
+        )
+    cyl = []
+    for k, c in enumerate(shank):
+        w = f"{what} shank segment {k}"
+        check_keys(c, ("length", "density"), w)
+        cyl.append(Cylinder(_num(c, "length", w), _num(c, "density", w)))
+    p = Projectile(name, diameter, nose, tuple(cyl), source=str(d.get("source", "user file")))
+    p.mass_properties()  # a body with no volume fails here, not later in a run
+    return p
+
+
+_MEDIUM_KEYS = (
+    "name",
+    "coefficients",
+    "friction",
+    "density",
+    "source",
+    "crater_depth",
+    "free_surface_depth",
+)
+#: Depth-window keys (calibers) a layer may set on a named medium.
+_WINDOW_KEYS = ("crater_depth", "free_surface_depth")
+
+
+def _medium_from(x: Any, what: str) -> Medium:
+    if isinstance(x, str):
+        if x not in MEDIA:
+            raise InputError(f"{what}: unknown medium {x!r}; known: {', '.join(MEDIA)}")
+        return MEDIA[x]
+    if not isinstance(x, dict):
+        raise InputError(f"{what}: medium must be a name or a mapping, got {x!r}")
+    name = str(x.get("name", "medium"))
+    w = f"{what} medium {name!r}"
+    check_keys(x, _MEDIUM_KEYS, w)
+    coef = x.get("coefficients")
+    if not isinstance(coef, list | tuple) or not coef:
+        raise InputError(f"{w}: needs a list 'coefficients' [a0, a1, a2, ...], got {coef!r}")
+    coef_f = tuple(
+        number(c, "coefficient", f"{w} a{i}", allow_str=True) for i, c in enumerate(coef)
+    )
+    fr = x.get("friction", 0.0)
+    if isinstance(fr, list | tuple):
+        if not fr or not all(isinstance(r, list | tuple) and len(r) == 2 for r in fr):
+            raise InputError(f"{w}: friction table must be [[speed_m_s, mu], ...], got {fr!r}")
+        sp = tuple(number(r[0], "friction_speed", w, allow_str=True) for r in fr)
+        mu = tuple(number(r[1], "friction", w, allow_str=True) for r in fr)
+    else:
+        sp, mu = (0.0,), (number(fr, "friction", w, allow_str=True),)
+    rho = _num(x, "density", w, "medium_density") if "density" in x else math.nan
+    windows = {k: _num(x, k, w) for k in _WINDOW_KEYS if k in x}
+    return Medium(name, coef_f, sp, mu, rho, str(x.get("source", "user file")), **windows)
+
+
+def target_from_dict(d: dict[str, Any]) -> Target:
+    """Build a target from a mapping: either a single medium or ``layers``.
+
+    A layer is ``{medium: ..., thickness: ...}`` (no ``thickness``: semi-infinite, last
+    layer only) or an air gap ``{gap: thickness}`` between two layers of a medium. A
+    finite last layer makes a plate that can be perforated. Unknown keys and values
+    outside :data:`pencore.inputs.limits.LIMITS` raise :class:`InputError`.
+    """
+    if not isinstance(d, dict):
+        raise InputError(f"target definition must be a mapping, got {type(d).__name__}")
+    name = str(d.get("name", "target"))
+    what = f"target {name!r}"
+    if "layers" not in d:
+        return Target(name, (Layer(_medium_from(d, what)),))
+    check_keys(d, ("name", "layers", "source"), what)
+    if not isinstance(d["layers"], list) or not d["layers"]:
+        raise InputError(f"{what}: 'layers' must be a non-empty list, got {d['layers']!r}")
+    layers = []
+    for k, lay in enumerate(d["layers"]):
+        w = f"{what} layer {k}"
+        lay = _mapping(lay, w)
+        if "gap" in lay:
+            check_keys(lay, ("gap",), w)
+            layers.append(Layer.gap(_num(lay, "gap", w, "thickness")))
+            continue
+        check_keys(lay, ("thickness", "medium", "gap", *_WINDOW_KEYS), w)
+        if "medium" not in lay:
+            raise InputError(f"{w}: needs a 'medium' (a name or a mapping)")
+        th = _num(lay, "thickness", w) if "thickness" in lay else math.inf
+        medium = _medium_from(lay["medium"], w)
+        windows = {k: _num(lay, k, w) for k in _WINDOW_KEYS if k in lay}
+        layers.append(Layer(replace(medium, **windows) if windows else medium, th))
+    return Target(name, tuple(layers))
+
+
+def _load_yaml(path: Path, what: str) -> dict[str, Any]:
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise InputError(f"cannot read {what} file {str(path)!r}: {exc.strerror}") from None
+    except UnicodeDecodeError:
+        raise InputError(f"{what} file {str(path)!r} is not a UTF-8 text (YAML) file") from None
+    try:
+        data = yaml.safe_load(text)
+    except yaml.YAMLError as exc:
+        msg = str(exc).splitlines()[0]
+        raise InputError(f"{what} file {str(path)!r} is not valid YAML: {msg}") from None
+    if not isinstance(data, dict):
+        raise InputError(f"{what} file {str(path)!r} must contain a mapping")
+    return data
+
+
+def _from_yaml_file(spec: str, what: str, build: Any) -> Any:
+    """Load a YAML file and build from it; errors name the file."""
+    data = _load_yaml(Path(spec), what)
+    try:
+        return build(data)
+    except InputError as exc:
+        raise InputError(f"{what} file {spec!r}: {exc}") from None
+
+
+def _looks_like_path(s: str) -> bool:
+    return s.endswith((".yaml", ".yml")) or "/" in s
+
+
+def get_projectile(spec: str | Projectile | dict[str, Any]) -> Projectile:
+    """A projectile by name (``p1``..``p4``, validation projectiles), YAML path, mapping,
+    or object."""
+    if isinstance(spec, Projectile):
+        return spec
+    if isinstance(spec, dict):
+        return projectile_from_dict(spec)
+    if not isinstance(spec, str):
+        raise InputError(
+            f"projectile must be a name, a YAML file, a mapping or a Projectile, got {spec!r}"
+        )
+    named = _named_projectiles()
+    if spec in named:
+        return named[spec]
+    if _looks_like_path(spec) or Path(spec).is_file():
+        return _from_yaml_file(spec, "projectile", projectile_from_dict)
+    raise InputError(
+        f"unknown projectile {spec!r}; use one of {', '.join(sorted(named))} or a YAML file"
+    )
+
+
+def get_target(spec: str | Target | Medium | dict[str, Any]) -> Target:
+    """A target by name (``soil``, ``concrete``, ``aluminium``), YAML path, mapping, or
+    object."""
+    if isinstance(spec, Target):
+        return spec
+    if isinstance(spec, Medium):
+        return Target.half_space(spec)
+    if isinstance(spec, dict):
+        return target_from_dict(spec)
+    if not isinstance(spec, str):
+        raise InputError(f"target must be a name, a YAML file, a mapping or a Target, got {spec!r}")
+    if spec in MEDIA:
+        return Target.half_space(MEDIA[spec])
+    if _looks_like_path(spec) or Path(spec).is_file():
+        return _from_yaml_file(spec, "target", target_from_dict)
+    raise InputError(f"unknown target {spec!r}; use one of {', '.join(MEDIA)} or a YAML file")

@@ -1,0 +1,160 @@
+"""Numerical parameters of a run, and the one way to build them from user input.
+
+:class:`Numerics` holds the integrator's settings (defaults chosen by the convergence
+study ``benchmarks/convergence.py``); :func:`resolve_numerics` turns what a user gives
+(``None``, a :class:`Numerics`, a mapping of options, keyword overrides) into one, with
+every value checked against :data:`pencore.inputs.limits.LIMITS`.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, fields, replace
+from typing import Any
+
+from pencore.errors import InputError
+from pencore.inputs.limits import check_keys, integer, number
+
+__all__ = ["Numerics", "DEFAULT_NUMERICS", "METHODS", "JACOBIANS", "resolve_numerics"]
+
+#: Integration methods: the compiled Rosenbrock pair (default) and scipy's implicit
+#: ``solve_ivp`` methods on the same right-hand side (reference; much slower).
+METHODS = ("rosenbrock", "Radau", "BDF")
+
+#: Jacobians of the Rosenbrock integrator: closed form where the model allows it
+#: (:func:`pencore.kernels.jacobian.analytic_jacobian_applies`), or finite differences.
+JACOBIANS = ("analytic", "finite_difference")
+
+_INT_FIELDS = ("n_nose", "n_shank", "n_face", "max_steps", "n_gauss", "jacobian_age")
+
+
+@dataclass(frozen=True)
+class Numerics:
+    """Numerical parameters (defaults chosen by ``benchmarks/convergence.py``).
+
+    Every field is checked against :data:`pencore.inputs.limits.LIMITS` on construction;
+    booleans are not numbers and integer fields must be whole numbers.
+
+    Attributes
+    ----------
+    n_nose, n_shank, n_face : int
+        Surface bands on the nose, on each 5 calibres of shank, and on each flat face.
+    eps : float
+        Half-width of the smoothed contact step in normal velocity (m/s). 0 is the
+        discontinuous law, which usually fails as chatter (``step_underflow``).
+    rtol : float
+        Relative tolerance of the adaptive step control.
+    max_travel : float
+        Largest distance (m) the centre of mass may move in one step.
+    v_stop : float
+        Speed (m/s) below which the projectile is taken as stopped.
+    t_max : float
+        Time limit (s) of the simulated motion.
+    max_steps : int
+        Step budget: accepted steps before the run fails with ``step_limit``.
+    max_wall : float
+        Wall-time budget (s) of one run, ``inf`` (default) for none: results then do
+        not depend on the machine's speed.
+    h_min : float
+        Smallest time step (s): a step the error control would make shorter fails the
+        run as stiff or chattering (``step_underflow``).
+    n_gauss : int
+        Gauss points per 45-degree arc piece in the friction integral.
+    jacobian_age : int
+        Accepted steps the Rosenbrock integrator holds one Jacobian for (1: a fresh one
+        every step); rebuilt after a rejected step and when the body enters or leaves
+        the target. The second-order step is a W-method, so holding it keeps the order
+        (:mod:`pencore.integrators.rosenbrock`); the default is chosen by
+        ``benchmarks/bench_jacobian.py``.
+    jacobian : str
+        ``"analytic"`` (default): the velocity derivatives of the DAFL loads (rings,
+        panels, cavity points) in closed form (:mod:`pencore.kernels.jacobian`) wherever they
+        cover the model (frictionless targets, ``eps > 0``), finite differences
+        elsewhere;
+        ``"finite_difference"``: finite differences everywhere (six extra right-hand-side
+        calls per Jacobian).
+    gravity : float
+        Gravitational acceleration (m/s^2) along ``-y``; 0 by default (as in the paper).
+    method : str
+        ``"rosenbrock"`` (compiled, default) or scipy's ``"Radau"`` / ``"BDF"`` through
+        :func:`scipy.integrate.solve_ivp` on the same right-hand side
+        (:mod:`pencore.integrators.scipy_ivp`).
+    """
+
+    n_nose: int = 48
+    n_shank: int = 24
+    n_face: int = 4
+    eps: float = 1e-3
+    rtol: float = 1e-5
+    max_travel: float = 0.1
+    v_stop: float = 1.0
+    t_max: float = 1.0
+    max_steps: int = 400_000
+    max_wall: float = math.inf
+    h_min: float = 1e-12
+    n_gauss: int = 4
+    jacobian_age: int = 6
+    jacobian: str = "analytic"
+    gravity: float = 0.0
+    method: str = "rosenbrock"
+
+    def __post_init__(self) -> None:
+        for f in fields(self):
+            if f.name in ("method", "jacobian"):
+                continue
+            value = getattr(self, f.name)
+            if f.name in _INT_FIELDS:
+                checked: float = integer(value, f.name, "numerics")
+            else:
+                checked = number(value, f.name, "numerics")
+            object.__setattr__(self, f.name, checked)
+        if self.method not in METHODS:
+            hint = difflib.get_close_matches(str(self.method), METHODS, n=1)
+            tip = f"; did you mean {hint[0]!r}?" if hint else ""
+            raise InputError(
+                f"numerics method must be one of {', '.join(METHODS)}, got {self.method!r}{tip}"
+            )
+        if self.jacobian not in JACOBIANS:
+            hint = difflib.get_close_matches(str(self.jacobian), JACOBIANS, n=1)
+            tip = f"; did you mean {hint[0]!r}?" if hint else ""
+            raise InputError(
+                f"numerics jacobian must be one of {', '.join(JACOBIANS)}, "
+                f"got {self.jacobian!r}{tip}"
+            )
+
+
+DEFAULT_NUMERICS = Numerics()
+
+
+def resolve_numerics(
+    numerics: Numerics | Mapping[str, Any] | None = None,
+    overrides: Mapping[str, Any] | None = None,
+) -> Numerics:
+    """A :class:`Numerics` from what a user gives: ``None`` (the defaults), a
+    :class:`Numerics`, or a mapping of options, with ``overrides`` (a mapping of options)
+    on top.
+
+    In a mapping, entries that are ``None`` mean "keep the default" (the workflow's
+    config schema fills unset numerics keys with ``null``). Unknown keys raise
+    :class:`~pencore.errors.InputError` with a "did you mean" hint; values are checked
+    against :data:`pencore.inputs.limits.LIMITS`.
+    """
+    if numerics is None:
+        base = DEFAULT_NUMERICS
+    elif isinstance(numerics, Numerics):
+        base = numerics
+    elif isinstance(numerics, Mapping):
+        base = _apply(DEFAULT_NUMERICS, numerics)
+    else:
+        raise InputError(
+            f"numerics must be a pencore.Numerics or a mapping of options, got {numerics!r:.80}"
+        )
+    return _apply(base, overrides) if overrides else base
+
+
+def _apply(base: Numerics, mapping: Mapping[str, Any]) -> Numerics:
+    check_keys(mapping, [f.name for f in fields(Numerics)], "numerics")
+    given = {k: v for k, v in mapping.items() if v is not None}
+    return replace(base, **given) if given else base

@@ -1,0 +1,337 @@
+"""Targets: media with a polynomial normal-resistance law and a friction law, in layers.
+
+The target occupies the half-space ``y <= 0``; the free surface is ``y = 0``. Layers are
+planar and stacked downwards. The last layer is semi-infinite (the paper's targets) or
+finite: then the target is a plate (or a stack of plates) with nothing behind it, and a
+projectile that clears its rear face has perforated it. Air gaps between plates are
+layers without a medium (:meth:`Layer.gap`); surface elements in a gap, or below the
+rear face of the last plate, carry no load.
+
+Resistance law (paper Eq. 11), normal stress on a surface element in contact::
+
+    sigma_n = a0 + a1 Vn + a2 Vn^2 + ...      (Pa; Vn in m/s)
+
+Friction law: Coulomb friction ``mu(V_tau) sigma_n`` opposing sliding, with ``mu`` a
+piecewise-linear function of the sliding speed ``V_tau`` (m/s), given as a table
+(a single row is a constant coefficient). Zero by default.
+
+Depth windows (both off by default; the paper's model has neither). The stress of an
+element at depth ``zeta`` (m) below the top face of its layer, and at distance ``delta``
+(m) from the nearest *free* face of the layer (the target's front face, a face next to
+an air gap, the rear face of the last plate), is multiplied by::
+
+    g(zeta, delta) = min(1, zeta / (k_c d)) * min(1, delta / (k_f d))
+
+with ``d`` the projectile diameter, ``k_c = crater_depth`` and ``k_f =
+free_surface_depth`` (calibers; a factor is 1 when its ``k`` is 0).
+
+* ``crater_depth``: the near-surface (crater) region of Forrestal et al., "An empirical
+  equation for penetration depth of ogive-nose projectiles into concrete targets",
+  IJIE 15 (1994) 395-405, and Frew et al., "A spherical cavity-expansion penetration
+  model for concrete targets", Int. J. Solids Struct. 35 (1998) 4235-4250: there the
+  axial force on the nose rises linearly with tip depth, ``F = c z``, over a crater of
+  ``k`` calibers (k = 2), and takes the cavity-expansion value below; Li & Chen, IJIE 28
+  (2003) 93-116, give ``k = 0.707 + H/d`` (H: nose length). pencore's reading applies the
+  linear ramp to each surface element's stress instead of to the total force: it has the
+  two features of those models (no resistance at the surface, the full law from ``k d``
+  on) but the total force is ``c z`` only approximately (exactly for a flat nose). It
+  is an approximation, not those models' formula; :func:`pencore.closedform.depth`
+  gives the exact 1-D depth of pencore's form.
+* ``free_surface_depth``: cavity-expansion trajectory codes reduce the stress on
+  elements near a free surface (Warren & Poormon, IJIE 25 (2001) 993-1022; Warren,
+  Hanchak & Poormon, IJIE 30 (2004) 1307-1331; Longcope's PENCRV3D). pencore's form is
+  the linear ramp above in the distance to the free face, its own simple choice (the
+  functions of those codes could not be read for this implementation): off by default,
+  and a limit test checks that it changes nothing away from free faces.
+
+The ring kernel evaluates ``g`` at the centre of each surface ring (exact for a ring
+parallel to the surface, i.e. normal incidence); the load-point kernels at each point.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from pencore.errors import InputError, TargetError
+from pencore.inputs.limits import number
+
+__all__ = [
+    "Medium",
+    "Layer",
+    "Target",
+]
+
+
+#: Most resistance coefficients a medium may have: the compiled kernels hold the stress
+#: polynomial, its smoothed step (one degree more) and the Jacobian's moments (three
+#: more) in arrays of ``pencore.kernels.arcs._MAXD + 2`` entries (tests/test_physics.py checks).
+MAX_COEFFICIENTS = 8
+
+
+def _check(key: str, value: float, what: str) -> float:
+    try:
+        return number(value, key, what)
+    except InputError as exc:
+        raise TargetError(str(exc)) from None
+
+
+@dataclass(frozen=True)
+class Medium:
+    """A target material.
+
+    Parameters
+    ----------
+    name : str
+        Label.
+    coefficients : sequence of float
+        ``(a0, a1, a2, ...)`` of the resistance law, in Pa, Pa s/m, Pa s^2/m^2 ... .
+    friction_speeds, friction_mu : sequence of float
+        Table of the friction coefficient against sliding speed (m/s); linear
+        interpolation, constant beyond the ends. Default: frictionless.
+    density : float
+        Mass density (kg/m^3), for reference only (it enters through the coefficients).
+    source : str
+        Provenance.
+    crater_depth : float
+        Near-surface (crater) region in projectile calibers (0: off); see the module
+        docstring.
+    free_surface_depth : float
+        Free-surface reduction zone in calibers (0: off); see the module docstring.
+    """
+
+    name: str
+    coefficients: tuple[float, ...]
+    friction_speeds: tuple[float, ...] = (0.0,)
+    friction_mu: tuple[float, ...] = (0.0,)
+    density: float = float("nan")
+    source: str = ""
+    crater_depth: float = 0.0
+    free_surface_depth: float = 0.0
+
+    def __post_init__(self) -> None:
+        what = f"medium {self.name!r}"
+        for key in ("crater_depth", "free_surface_depth"):
+            object.__setattr__(self, key, _check(key, getattr(self, key), what))
+        if isinstance(self.coefficients, str) or not hasattr(self.coefficients, "__iter__"):
+            raise TargetError(f"{what}: coefficients must be a list [a0, a1, a2, ...]")
+        c = tuple(_check("coefficient", x, f"{what} a{i}") for i, x in enumerate(self.coefficients))
+        if not c:
+            raise TargetError(f"{what}: coefficients must be a non-empty list [a0, a1, a2, ...]")
+        if len(c) > MAX_COEFFICIENTS:
+            raise TargetError(
+                f"{what}: {len(c)} resistance coefficients given; the solver supports at "
+                f"most {MAX_COEFFICIENTS} (a0 .. a{MAX_COEFFICIENTS - 1}: a polynomial of "
+                f"degree {MAX_COEFFICIENTS - 1} in the normal velocity)"
+            )
+        if not any(x > 0.0 for x in c):
+            raise TargetError(
+                f"{what}: every resistance coefficient is zero, so nothing resists the "
+                f"projectile; give a0 (Pa) or a2 (kg/m^3) > 0"
+            )
+        object.__setattr__(self, "coefficients", c)
+        sp = tuple(_check("friction_speed", x, what) for x in self.friction_speeds)
+        mu = tuple(_check("friction", m, what) for m in self.friction_mu)
+        if len(sp) != len(mu) or not sp:
+            raise TargetError(f"{what}: friction table needs equal, non-empty speed and mu lists")
+        if any(b <= a for a, b in zip(sp, sp[1:], strict=False)):
+            raise TargetError(f"{what}: friction speeds must increase, got {sp!r}")
+        if not math.isnan(self.density):
+            _check("medium_density", self.density, what)
+        object.__setattr__(self, "friction_speeds", sp)
+        object.__setattr__(self, "friction_mu", mu)
+
+    @property
+    def frictionless(self) -> bool:
+        return all(m == 0.0 for m in self.friction_mu)
+
+    def sigma_n(self, vn: np.ndarray | float) -> np.ndarray:
+        """Normal stress (Pa) at normal velocity ``vn`` (m/s), ignoring the contact test."""
+        vn = np.asarray(vn, dtype=float)
+        return np.polynomial.polynomial.polyval(vn, self.coefficients)
+
+    def mu(self, v_tau: np.ndarray | float) -> np.ndarray:
+        """Friction coefficient at sliding speed ``v_tau`` (m/s)."""
+        return np.interp(v_tau, self.friction_speeds, self.friction_mu)
+
+    def with_friction(self, mu: float | Sequence[tuple[float, float]]) -> Medium:
+        """A copy with constant friction ``mu`` or a table of (speed m/s, mu) pairs."""
+        if isinstance(mu, int | float):
+            return replace(self, friction_speeds=(0.0,), friction_mu=(float(mu),))
+        sp, m = zip(*mu, strict=True)
+        return replace(self, friction_speeds=tuple(sp), friction_mu=tuple(m))
+
+    @property
+    def windowed(self) -> bool:
+        """True when a crater or free-surface depth window is on."""
+        return self.crater_depth > 0.0 or self.free_surface_depth > 0.0
+
+
+@dataclass(frozen=True)
+class Layer:
+    """A medium and its thickness (m); ``inf`` for a semi-infinite last layer.
+
+    ``medium=None`` is an air gap (no load): see :meth:`gap`.
+    """
+
+    medium: Medium | None
+    thickness: float = math.inf
+
+    @classmethod
+    def gap(cls, thickness: float) -> Layer:
+        """An air gap of ``thickness`` (m) between two plates."""
+        return cls(None, thickness)
+
+    @property
+    def is_gap(self) -> bool:
+        return self.medium is None
+
+
+@dataclass(frozen=True)
+class Target:
+    """A layered half-space, or a stack of plates, below ``y = 0``."""
+
+    name: str
+    layers: tuple[Layer, ...] = field(default_factory=tuple)
+
+    def __post_init__(self) -> None:
+        layers = tuple(self.layers)
+        if not layers:
+            raise TargetError(f"target {self.name!r} has no layers")
+        what = f"target {self.name!r}"
+        for k, lay in enumerate(layers):
+            if not isinstance(lay, Layer):
+                raise TargetError(f"{what}: layer {k} must be a Layer, got {lay!r}")
+            last = k == len(layers) - 1
+            if lay.is_gap and (k == 0 or last):
+                raise TargetError(
+                    f"{what}: layer {k} is a gap; a gap must lie between two layers of a "
+                    "medium (the first layer starts at the surface y = 0)"
+                )
+            if not lay.is_gap and not isinstance(lay.medium, Medium):
+                raise TargetError(f"{what}: layer {k} medium must be a Medium or None (gap)")
+            if last and math.isinf(lay.thickness) and lay.thickness > 0:
+                continue
+            if math.isinf(lay.thickness):
+                raise TargetError(f"{what}: only the last layer may be infinite (layer {k})")
+            _check("thickness", lay.thickness, f"{what} layer {k}")
+        object.__setattr__(self, "layers", layers)
+
+    @classmethod
+    def half_space(cls, medium: Medium) -> Target:
+        return cls(medium.name, (Layer(medium),))
+
+    @property
+    def medium(self) -> Medium:
+        """The top medium."""
+        return self.layers[0].medium
+
+    @property
+    def solid_layers(self) -> tuple[Layer, ...]:
+        """The layers that are not gaps."""
+        return tuple(lay for lay in self.layers if not lay.is_gap)
+
+    @property
+    def frictionless(self) -> bool:
+        return all(lay.medium.frictionless for lay in self.solid_layers)
+
+    @property
+    def thickness(self) -> float:
+        """Total thickness (m), gaps included; ``inf`` for a semi-infinite target."""
+        return math.fsum(lay.thickness for lay in self.layers)
+
+    @property
+    def thinnest(self) -> float:
+        """Smallest layer or gap thickness (m); ``inf`` for a half-space."""
+        return min(lay.thickness for lay in self.layers)
+
+    @property
+    def finite(self) -> bool:
+        """True when the last layer is finite (the target can be perforated)."""
+        return math.isfinite(self.layers[-1].thickness)
+
+    @property
+    def rear_face(self) -> float:
+        """Height ``y`` (m) of the rear face of the last plate; ``-inf`` if semi-infinite."""
+        return -self.thickness
+
+    def with_windows(
+        self, crater_depth: float | None = None, free_surface_depth: float | None = None
+    ) -> Target:
+        """A copy whose media all have the given ``crater_depth`` / ``free_surface_depth``
+        (calibers; None keeps each medium's own)."""
+        kw = {}
+        if crater_depth is not None:
+            kw["crater_depth"] = crater_depth
+        if free_surface_depth is not None:
+            kw["free_surface_depth"] = free_surface_depth
+        layers = tuple(
+            lay if lay.is_gap else Layer(replace(lay.medium, **kw), lay.thickness)
+            for lay in self.layers
+        )
+        return Target(self.name, layers)
+
+    def kernel_arrays(self, diameter: float | None = None) -> tuple[np.ndarray, ...]:
+        """Arrays for the compiled kernel.
+
+        ``diameter`` (m) of the projectile scales the depth windows (needed only when a
+        medium has ``crater_depth`` or ``free_surface_depth``).
+
+        Gaps are left out (their elements carry no load), so consecutive rows need not
+        touch.
+
+        Returns
+        -------
+        bounds : (n, 2) or (n, 5) float
+            ``y_top, y_bottom`` of each layer of a medium (m); the last bottom is
+            ``-inf`` for a semi-infinite target, the rear face otherwise. With a depth
+            window on, three more columns (m): crater depth ``k_c d``, free-surface zone
+            ``k_f d`` at the top face if it is free (else 0), and at the bottom face if it
+            is free (else 0); see :func:`pencore.kernels.windows.depth_factor`.
+        coef : (n, p) float
+            Resistance coefficients, zero-padded.
+        fric : (n, k, 2) float
+            Friction tables (speed, mu), padded by repeating the last row.
+        """
+        solid = self.solid_layers
+        n = len(solid)
+        p = max(len(lay.medium.coefficients) for lay in solid)
+        k = max(len(lay.medium.friction_speeds) for lay in solid)
+        windowed = any(lay.medium.windowed for lay in solid)
+        if windowed and not (diameter is not None and diameter > 0.0):
+            raise TargetError(
+                f"target {self.name!r}: crater_depth/free_surface_depth need the projectile "
+                "diameter (pass diameter= to kernel_arrays)"
+            )
+        bounds = np.zeros((n, 5 if windowed else 2))
+        coef = np.zeros((n, p))
+        fric = np.empty((n, k, 2))
+        top = 0.0
+        j = 0
+        layers = self.layers
+        for i, lay in enumerate(layers):
+            bottom = top - lay.thickness
+            if lay.is_gap:
+                top = bottom
+                continue
+            bounds[j, :2] = top, bottom
+            if windowed:
+                # free faces: the front face, faces next to a gap, the rear face
+                free_top = i == 0 or layers[i - 1].is_gap
+                free_bottom = i == len(layers) - 1 or layers[i + 1].is_gap
+                zone = lay.medium.free_surface_depth * diameter
+                bounds[j, 2] = lay.medium.crater_depth * diameter
+                bounds[j, 3] = zone if free_top else 0.0
+                bounds[j, 4] = zone if free_bottom and math.isfinite(bottom) else 0.0
+            c = lay.medium.coefficients
+            coef[j, : len(c)] = c
+            sp, mu = lay.medium.friction_speeds, lay.medium.friction_mu
+            for m in range(k):
+                mm = min(m, len(sp) - 1)
+                fric[j, m] = (sp[mm] + (m - mm) * 1.0, mu[mm])
+            top = bottom
+            j += 1
+        return bounds, coef, fric

@@ -1,0 +1,134 @@
+"""The prepared problem: everything an integrator needs that does not change from one
+impact to the next.
+
+:func:`pencore.prepare` builds a :class:`Problem` once from a projectile, a target,
+numerics and the model choices; every integrator (:mod:`~pencore.integrators.rosenbrock`,
+:mod:`~pencore.integrators.explicit`, :mod:`~pencore.integrators.scipy_ivp`) takes it with
+the initial state of one impact, so a search of hundreds of runs resolves names and
+builds the kernel arrays once. SI units throughout.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from pencore.inputs.geometry import Projectile
+from pencore.inputs.models import Emulation, ShankModel
+from pencore.inputs.numerics import Numerics
+from pencore.inputs.target import Target
+from pencore.kernels.forces import default_model
+from pencore.kernels.state import body_reach
+
+__all__ = ["Problem"]
+
+
+@dataclass
+class Problem:
+    """A projectile, a target and numerics, resolved into the compiled kernels' arrays.
+
+    Attributes
+    ----------
+    projectile, target, numerics
+        The resolved inputs.
+    rings : ndarray, shape (n, 6)
+        The projectile's surface rings (body axes, m): the geometry the initial state,
+        the reach and the Dataset use.
+    bounds, coef, fric : ndarray
+        The target's layer bounds (m), resistance coefficients (SI, per layer) and
+        friction tables, as :meth:`pencore.inputs.target.Target.kernel_arrays` builds them.
+    mass : float
+        Mass (kg).
+    inertia : ndarray, shape (3,)
+        Principal moments of inertia about the centre of mass (kg m^2): axial,
+        transverse, transverse.
+    lc : float
+        Distance (m) from the nose tip to the centre of mass.
+    shank, emulation
+        The shank contact model and the paper-emulation numerics.
+    kernel_rings : ndarray or None
+        The rings the ring kernel loads under a non-default model (None: ``rings``).
+    model : tuple of ndarray or None
+        The kernel tuple of :mod:`pencore.kernels.forces` (None: the DAFL on rings).
+    """
+
+    projectile: Projectile
+    target: Target
+    numerics: Numerics
+    rings: np.ndarray
+    bounds: np.ndarray
+    coef: np.ndarray
+    fric: np.ndarray
+    mass: float
+    inertia: np.ndarray
+    lc: float
+    shank: ShankModel = ShankModel()
+    emulation: Emulation = Emulation()
+    kernel_rings: np.ndarray | None = None
+    model: tuple[np.ndarray, ...] | None = None
+
+    @property
+    def loaded_rings(self) -> np.ndarray:
+        """The rings the ring kernel loads (``kernel_rings`` under a model, else ``rings``)."""
+        return self.rings if self.model is None else self.kernel_rings
+
+    @property
+    def kernel_model(self) -> tuple[np.ndarray, ...]:
+        """The kernel tuple of :mod:`pencore.kernels.forces` (default: DAFL on rings)."""
+        return default_model() if self.model is None else self.model
+
+    @property
+    def gravity(self) -> np.ndarray:
+        """Gravitational acceleration vector (m/s^2), along ``-y``."""
+        return np.array([0.0, -self.numerics.gravity, 0.0])
+
+    @property
+    def n_gauss(self) -> int:
+        """Gauss points of the friction integral; 0 (no friction pass) when frictionless."""
+        return self.numerics.n_gauss if not self.target.frictionless else 0
+
+    @property
+    def max_travel(self) -> float:
+        """Largest centre-of-mass travel (m) of one step: ``numerics.max_travel``, and at
+        most half the thinnest layer, so that no step jumps over a thin plate or gap (no
+        change for half-spaces or layers thicker than twice ``max_travel``)."""
+        return min(self.numerics.max_travel, 0.5 * self.target.thinnest)
+
+    @property
+    def reach(self) -> float:
+        """Largest distance (m) from the centre of mass to a surface ring."""
+        return body_reach(self.rings)
+
+    def load_args(self) -> tuple:
+        """The arguments after the state of the compiled right-hand side
+        (:func:`pencore.kernels.forces.rhs_model`): mass, inertia, gravity, rings,
+        bounds, coef, fric, eps, n_gauss, model."""
+        return (
+            self.mass,
+            self.inertia,
+            self.gravity,
+            self.loaded_rings,
+            self.bounds,
+            self.coef,
+            self.fric,
+            self.numerics.eps,
+            self.n_gauss,
+            self.kernel_model,
+        )
+
+    def atol(self, velocity: float) -> np.ndarray:
+        """Absolute tolerances of the 13 state components for an impact at ``velocity``
+        (m/s): 1 % of ``rtol`` times the scale of each (body length, 1, impact speed,
+        impact speed / length)."""
+        length = self.projectile.length
+        return (
+            self.numerics.rtol
+            * np.array([length] * 3 + [1.0] * 4 + [velocity] * 3 + [velocity / length] * 3)
+            * 1e-2
+        )
+
+    def stall_distance(self, chunk_steps: int) -> float:
+        """Distance (m) under which ``chunk_steps`` accepted steps count as stalled: 1 % of
+        the body length, unless the user asked for steps that short."""
+        return min(1e-2 * self.projectile.length, 0.1 * chunk_steps * self.numerics.max_travel)

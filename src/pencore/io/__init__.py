@@ -1,0 +1,1 @@
+"""Files: netCDF with provenance (:mod:`netcdf`) and atomic, durable writes (:mod:`atomic`)."""

@@ -1,0 +1,315 @@
+"""netCDF input/output: provenance, compression, atomic writes, archiving.
+
+Every dataset that leaves pencore for disk goes through :func:`write_netcdf`, which
+records where it came from (pencore version, git commit, the exact inputs that made it
+and their hash, creation time, study name), compresses the floating-point variables,
+and writes atomically so an interrupted run never leaves a truncated file behind.
+
+:func:`downsample` thins the ``time`` axis of trajectories before they are archived
+(``results/archive/``): the first and last samples, and the extremes of the listed
+variables (by default the deepest point of the nose tip), are always kept, so the
+penetration depth read from an archived trajectory equals the one computed.
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+import functools
+import hashlib
+import json
+import os
+import subprocess
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from pencore.io.atomic import atomic_path
+from pencore.version import __version__
+
+__all__ = [
+    "config_hash",
+    "file_sha256",
+    "git_commit",
+    "provenance_attrs",
+    "write_netcdf",
+    "read_netcdf",
+    "downsample",
+]
+
+#: zlib level used for every floating-point variable (4: most of the gain, little cost).
+COMPLEVEL = 4
+
+#: ``src/pencore``: the sources the provenance's commit and dirty flag refer to.
+_PACKAGE_DIR = Path(__file__).resolve().parents[1]
+
+
+def _canonical_json(obj: Any) -> str:
+    """JSON with sorted keys and no whitespace (stable input for hashing)."""
+    return json.dumps(obj, sort_keys=True, separators=(",", ":"), default=_json_default)
+
+
+def _json_default(x: Any) -> Any:
+    if isinstance(x, np.generic):
+        return x.item()
+    if isinstance(x, np.ndarray):
+        return x.tolist()
+    if isinstance(x, Path):
+        return str(x)
+    if isinstance(x, Mapping):
+        return dict(x)
+    if isinstance(x, Sequence) and not isinstance(x, str | bytes):
+        return list(x)
+    return str(x)
+
+
+def config_hash(config_slice: Mapping[str, Any]) -> str:
+    """sha256 (hex) of the canonical JSON of ``config_slice``."""
+    return hashlib.sha256(_canonical_json(config_slice).encode()).hexdigest()
+
+
+def file_sha256(path: str | os.PathLike[str]) -> str:
+    """sha256 (hex) of a file's bytes (to record input files in a config slice)."""
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+@functools.cache
+def git_commit() -> tuple[str, str]:
+    """(commit, dirty) of the repository holding the pencore sources.
+
+    ``commit`` is ``git rev-parse HEAD`` run in the package directory, or ``'unknown'``
+    (not a git checkout, git missing). ``dirty`` is ``'true'`` when the pencore sources
+    differ from that commit, ``'false'`` when they do not, ``'unknown'`` otherwise.
+    """
+
+    def run(*args: str) -> subprocess.CompletedProcess[str]:
+        return subprocess.run(
+            ["git", *args], cwd=_PACKAGE_DIR, capture_output=True, text=True, timeout=10
+        )
+
+    try:
+        head = run("rev-parse", "HEAD")
+    except (OSError, subprocess.SubprocessError):
+        return "unknown", "unknown"
+    if head.returncode != 0:
+        return "unknown", "unknown"
+    commit = head.stdout.strip()
+    try:
+        diff = run("diff", "--quiet", "HEAD", "--", ".")
+        dirty = {0: "false", 1: "true"}.get(diff.returncode, "unknown")
+    except (OSError, subprocess.SubprocessError):
+        dirty = "unknown"
+    return commit, dirty
+
+
+def provenance_attrs(config_slice: Mapping[str, Any], study: str) -> dict[str, str]:
+    """The provenance attributes :func:`write_netcdf` adds to a dataset."""
+    commit, dirty = git_commit()
+    return {
+        "study": str(study),
+        "pencore_version": __version__,
+        "git_commit": commit,
+        "git_dirty": dirty,
+        "config_json": _canonical_json(config_slice),
+        "config_sha256": config_hash(config_slice),
+        "created_utc": _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%dT%H:%M:%SZ"),
+    }
+
+
+def _netcdf_safe_attrs(attrs: Mapping[str, Any]) -> dict[str, Any]:
+    """netCDF attributes must be strings, numbers or 1-D numeric arrays."""
+    out: dict[str, Any] = {}
+    for k, v in attrs.items():
+        if v is None:
+            out[k] = ""
+        elif isinstance(v, bool | np.bool_):
+            out[k] = int(v)
+        elif isinstance(v, str | int | float | np.number):
+            out[k] = v
+        elif isinstance(v, np.ndarray) and v.dtype.kind in "iuf":
+            out[k] = v
+        elif isinstance(v, list | tuple) and all(
+            isinstance(e, int | float) and not isinstance(e, bool) for e in v
+        ):
+            out[k] = np.asarray(v)
+        else:
+            out[k] = _canonical_json(v)
+    return out
+
+
+def write_netcdf(
+    ds: xr.Dataset,
+    path: str | os.PathLike[str],
+    *,
+    config_slice: Mapping[str, Any],
+    study: str,
+) -> Path:
+    """Write ``ds`` to ``path`` with provenance, compression and an atomic replace.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        Dataset to write; it is not modified.
+    path : path-like
+        Destination (``.nc``). Parent directories are created.
+    config_slice : mapping
+        The exact inputs (configuration entries) that produced ``ds``; stored as
+        canonical JSON in the ``config_json`` attribute with its sha256 in
+        ``config_sha256``.
+    study : str
+        Name of the study (for example ``'validation/table2'``).
+
+    Returns
+    -------
+    pathlib.Path
+        The written path.
+
+    Notes
+    -----
+    Attributes added: ``study``, ``pencore_version``, ``git_commit`` (``'unknown'`` when
+    git cannot tell), ``git_dirty``, ``config_json``, ``config_sha256``, ``created_utc``.
+    Every floating-point variable and coordinate is zlib-compressed (level 4). The file is
+    written through :func:`pencore.io.atomic.atomic_path`: to a temporary file in the same
+    directory, flushed to the disk, then renamed into place, so a failed or killed write
+    leaves no file behind; any failure raises :class:`pencore.errors.WriteError` (an
+    ``OSError``) with a one-line message naming the path and the cause.
+    """
+    if not isinstance(ds, xr.Dataset):
+        raise TypeError(f"write_netcdf needs an xarray.Dataset, got {type(ds).__name__}")
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    out = ds.copy(deep=False)
+    out.attrs = _netcdf_safe_attrs({**ds.attrs, **provenance_attrs(config_slice, study)})
+    for name in out.variables:
+        out[name].attrs = _netcdf_safe_attrs(out[name].attrs)
+    out, encoding = cf_encoding(out)
+    with atomic_path(path) as tmp:
+        out.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
+    return path
+
+
+#: The CF version the files declare: the newest one the official CF checker
+#: (``cfchecker``, run by ``.ci/cf_check.py``) verifies. The files use nothing newer.
+CF_CONVENTIONS = "CF-1.8"
+
+
+def cf_encoding(ds: xr.Dataset) -> tuple[xr.Dataset, dict[str, dict[str, Any]]]:
+    """A copy of ``ds`` and its netCDF encoding, such that the file is CF-compliant.
+
+    * ``Conventions`` is :data:`CF_CONVENTIONS`; ``history`` records when and by which
+      pencore version (and study) the file was written;
+    * text variables are written as character arrays (CF-1.8 has no variable-length
+      strings), read back as text by xarray;
+    * 64-bit integers become 32-bit where the values fit, booleans 8-bit integers;
+    * coordinate variables carry no ``_FillValue``;
+    * floating-point variables are zlib-compressed (level :data:`COMPLEVEL`).
+    """
+    out = ds.copy(deep=False)
+    stamp = out.attrs.get("created_utc", "")
+    study = out.attrs.get("study", "")
+    line = f"{stamp} written by pencore {__version__}" + (f" (study {study})" if study else "")
+    out.attrs["Conventions"] = CF_CONVENTIONS
+    out.attrs["history"] = line.strip()
+    encoding: dict[str, dict[str, Any]] = {}
+    for name, var in out.variables.items():
+        enc: dict[str, Any] = {}
+        kind = var.dtype.kind
+        if kind == "f" and var.ndim > 0:
+            enc.update(zlib=True, complevel=COMPLEVEL)
+        elif kind in "OUS":
+            enc["dtype"] = "S1"
+        elif kind == "b":
+            out[name] = var.astype("int8")
+            out[name].attrs = var.attrs
+        elif kind in "iu" and var.dtype.itemsize == 8:
+            info = np.iinfo(np.int32)
+            values = var.values
+            if values.size == 0 or (values.min() >= info.min and values.max() <= info.max):
+                enc["dtype"] = "int32"
+        if name in out.coords or name in out.dims:
+            enc["_FillValue"] = None
+        if enc:
+            encoding[str(name)] = enc
+    return out, encoding
+
+
+def read_netcdf(path: str | os.PathLike[str]) -> xr.Dataset:
+    """Read a netCDF file fully into memory (the file is closed on return)."""
+    path = Path(path)
+    if not path.is_file():
+        raise FileNotFoundError(f"no netCDF file at {str(path)!r}")
+    with xr.open_dataset(path, engine="netcdf4") as ds:
+        return ds.load()
+
+
+def downsample(
+    ds: xr.Dataset,
+    n: int = 400,
+    *,
+    dim: str = "time",
+    keep_extrema: Sequence[str] = ("tip_y",),
+) -> xr.Dataset:
+    """Thin the ``dim`` axis of a trajectory to about ``n`` samples for archiving.
+
+    Keeps the first and last samples, ``n`` samples evenly spaced in index between them,
+    and the index of the minimum and maximum of each variable in ``keep_extrema`` that is
+    present (by default ``tip_y``, so the deepest point of the nose tip survives). Scalar
+    variables and attributes are untouched. Datasets without ``dim``, or no longer than
+    ``n``, are returned unchanged.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+    n : int
+        Target number of samples (>= 2). A few more may be kept for the extrema.
+    dim : str
+        Dimension to thin.
+    keep_extrema : sequence of str
+        Variables whose minimum and maximum along ``dim`` must be kept. For variables
+        with other dimensions too, the extremes over every other index are kept.
+
+    Returns
+    -------
+    xarray.Dataset
+        With attribute ``downsampled_from`` (original length) when thinned.
+    """
+    n = int(n)
+    if n < 2:
+        raise ValueError(f"downsample needs n >= 2, got {n}")
+    if dim not in ds.dims or ds.sizes[dim] <= n:
+        return ds
+    size = ds.sizes[dim]
+    keep = set(np.unique(np.round(np.linspace(0, size - 1, n)).astype(int)).tolist())
+    for name in keep_extrema:
+        if name in ds.variables and dim in ds[name].dims:
+            arr = ds[name].transpose(dim, ...).values.reshape(size, -1)
+            finite = np.where(np.isfinite(arr), arr, np.nan)
+            for col in range(finite.shape[1]):
+                c = finite[:, col]
+                if np.isfinite(c).any():
+                    keep.add(int(np.nanargmin(c)))
+                    keep.add(int(np.nanargmax(c)))
+    idx = np.array(sorted(keep))
+    out = ds.isel({dim: idx})
+    out.attrs = {**ds.attrs, "downsampled_from": int(size), "downsampled_dim": dim}
+    return out
+
+
+def package_source_hash() -> str:
+    """SHA-256 (hex) of the pencore package's Python source files, names included.
+
+    The workflow passes it to every solver rule so that a change in the physics reruns
+    the studies (Snakemake's own ``code`` trigger sees only a rule's script).
+    """
+    digest = hashlib.sha256()
+    root = _PACKAGE_DIR
+    for path in sorted(root.rglob("*.py")):
+        digest.update(path.relative_to(root).as_posix().encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()

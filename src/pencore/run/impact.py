@@ -1,0 +1,309 @@
+"""``simulate``: one penetration trajectory as an :class:`xarray.Dataset`.
+
+Geometry of the impact (angles in degrees at this interface, radians inside):
+
+* the target is ``y <= 0``, the projectile moves towards ``+x`` and ``-y``;
+* ``obliquity`` (phi1) is the angle between the projectile axis and the target normal
+  (``-y``), measured towards ``+x``;
+* ``yaw`` (phi2) is the velocity angle minus the axis angle (paper Fig. 10), so the
+  velocity makes ``alpha = phi1 + phi2`` with the normal;
+* ``omega`` is the initial angular velocity about ``+z`` (rad/s), about the centre of
+  mass (``spin_about="cm"``, default) or about the nose tip (``"tip"``: the tip keeps
+  the impact velocity and the centre of mass moves with it); positive turns the nose
+  towards ``+x``;
+* ``start`` is the initial nose-tip position (m); by default the tip is at ``x = z = 0``
+  and the body is lowered until its lowest surface point just touches ``y = 0``;
+* ``azimuth`` turns the whole impact (position, velocity, attitude, spin) about the
+  target normal ``+y`` (deg); 0 keeps the motion in the x-y plane. The target is
+  invariant under this rotation, so the trajectory just turns with it.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import time
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from pencore.errors import InputError, SolverError
+from pencore.inputs.geometry import Projectile
+from pencore.inputs.library import get_projectile, get_target
+from pencore.inputs.models import Emulation, ShankModel, emulation, shank_model, to_json
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.inputs.target import Target
+from pencore.integrators.driver import CHUNK_STEPS, RunResult
+from pencore.integrators.problem import Problem
+from pencore.integrators.rosenbrock import integrate
+from pencore.kernels.forces import kernel_model
+from pencore.kernels.state import body_reach
+from pencore.run.dataset import trajectory_dataset
+from pencore.run.initial import (
+    _check_inputs,
+    _check_reaches_target,
+    initial_state,
+)
+
+__all__ = ["prepare", "simulate", "run_impact"]
+
+
+def prepare(
+    projectile: Any,
+    target: Any,
+    numerics: Numerics | None = None,
+    *,
+    shank: ShankModel | Mapping[str, Any] | str | None = None,
+    emulation: Emulation | Mapping[str, Any] | None = None,
+    **overrides: Any,
+) -> Problem:
+    """Resolve names and build the kernel arrays (reusable across many trajectories).
+
+    ``shank`` and ``emulation`` select the shank contact model and the paper-emulation
+    numerics (:mod:`pencore.inputs.models`; default: the DAFL on pencore's rings, adaptive).
+    """
+    num = resolve_numerics(numerics, overrides)
+    sm = shank_model(shank)
+    em = _emulation(emulation)
+    if num.method != "rosenbrock" and (em.integrator == "explicit" or sm.kind == "cavity"):
+        what = "the explicit integrator" if em.integrator == "explicit" else "the cavity model"
+        raise InputError(
+            f"numerics method {num.method!r} cannot be combined with {what}; "
+            "use method 'rosenbrock'"
+        )
+    p = get_projectile(projectile)
+    t = get_target(target)
+    mp = p.mass_properties()
+    ring_set = p.rings(num.n_nose, num.n_shank, num.n_face)
+    rings = ring_set.as_array()
+    bounds, coef, fric = t.kernel_arrays(p.diameter)
+    inertia = np.array([mp.i_axial, mp.i_transverse, mp.i_transverse])
+    pr = Problem(p, t, num, rings, bounds, coef, fric, mp.mass, inertia, mp.lc, sm, em)
+    if not (sm.is_default and em.surface == "rings"):
+        pr.kernel_rings, pr.model = kernel_model(
+            p, ring_set, sm, em, num.n_nose, num.n_shank, num.n_face
+        )
+    return pr
+
+
+_emulation = emulation
+
+
+def simulate(
+    projectile: str | Projectile,
+    target: str | Target,
+    velocity: float,
+    obliquity: float = 0.0,
+    yaw: float = 0.0,
+    omega: float = 0.0,
+    *,
+    start: tuple[float, float, float] | None = None,
+    azimuth: float = 0.0,
+    stop_at_reversal: bool = False,
+    numerics: Numerics | None = None,
+    prepared: Problem | None = None,
+    shank: ShankModel | Mapping[str, Any] | str | None = None,
+    emulation: Emulation | Mapping[str, Any] | None = None,
+    spin_about: str = "cm",
+    **overrides: Any,
+) -> xr.Dataset:
+    """Simulate one impact.
+
+    Parameters
+    ----------
+    projectile : str or Projectile
+        Name (``p1``..``p4``, validation projectiles), YAML path, or object.
+    target : str or Target
+        Name (``soil``, ``concrete``, ``aluminium``), YAML path, or object.
+    velocity : float
+        Impact speed (m/s), > 0.
+    obliquity : float
+        Axis angle from the target normal (deg).
+    yaw : float
+        Velocity angle minus axis angle (deg).
+    omega : float
+        Initial angular velocity about the centre of mass, about +z (rad/s).
+    start : (3,) float, optional
+        Initial nose-tip position (m). Default: just touching the surface at x = 0.
+    azimuth : float
+        Rotation of the whole impact about the target normal (deg).
+    stop_at_reversal : bool
+        End the run at the first reversal (outcome ``reversed``).
+    numerics : Numerics, optional
+        Numerical parameters; keyword overrides (``eps=...``, ``rtol=...``) apply on top.
+    prepared : optional
+        Output of :func:`prepare`, to skip re-resolving in loops (it carries the shank
+        model and emulation: do not pass those as well).
+    shank : ShankModel, mapping or str, optional
+        Shank contact model (:mod:`pencore.inputs.models`): ``"dafl"`` (default), ``"cavity"``,
+        ``"factor"``.
+    emulation : Emulation or mapping, optional
+        Paper-emulation numerics (:mod:`pencore.inputs.models`): panels, explicit integrator.
+    spin_about : {"cm", "tip"}
+        The point ``omega`` turns the body about at t = 0.
+
+    Returns
+    -------
+    xarray.Dataset
+        Time histories on dimension ``time`` (s) and scalar results; see the README.
+    """
+    pr, run, wall, (velocity, obliquity, yaw, omega, azimuth, start) = _impact(
+        projectile, target, velocity, obliquity, yaw, omega, start, azimuth,
+        stop_at_reversal, numerics, prepared, shank, emulation, spin_about, overrides,
+    )  # fmt: skip
+    ds = trajectory_dataset(
+        pr.projectile,
+        pr.target,
+        pr.numerics,
+        run,
+        wall,
+        dict(
+            velocity=velocity,
+            obliquity=obliquity,
+            yaw=yaw,
+            omega=omega,
+            azimuth=azimuth,
+            start=None if start is None else list(start),
+            stop_at_reversal=stop_at_reversal,
+        ),
+    )
+    return _record_model(ds, pr, spin_about)
+
+
+def run_impact(
+    projectile: str | Projectile,
+    target: str | Target,
+    velocity: float,
+    obliquity: float = 0.0,
+    yaw: float = 0.0,
+    omega: float = 0.0,
+    *,
+    start: tuple[float, float, float] | None = None,
+    azimuth: float = 0.0,
+    stop_at_reversal: bool = False,
+    numerics: Numerics | None = None,
+    prepared: Problem | None = None,
+    shank: ShankModel | Mapping[str, Any] | str | None = None,
+    emulation: Emulation | Mapping[str, Any] | None = None,
+    spin_about: str = "cm",
+    **overrides: Any,
+) -> RunResult:
+    """:func:`simulate` without building the Dataset: the raw run (SI units).
+
+    Same arguments, checks and errors as :func:`simulate`, and the same run to the last
+    bit; for searches that need only a verdict (``.reversed``, ``.outcome``), where the
+    Dataset would cost ~15 % of a trajectory. ``.ys`` is the state history (see
+    :mod:`pencore.kernels.dynamics`), ``.ts`` its times (s).
+    """
+    return _impact(
+        projectile, target, velocity, obliquity, yaw, omega, start, azimuth,
+        stop_at_reversal, numerics, prepared, shank, emulation, spin_about, overrides,
+    )[1]  # fmt: skip
+
+
+def _impact(
+    projectile: Any,
+    target: Any,
+    velocity: Any,
+    obliquity: Any,
+    yaw: Any,
+    omega: Any,
+    start: Any,
+    azimuth: Any,
+    stop_at_reversal: Any,
+    numerics: Any,
+    prepared: Any,
+    shank: Any,
+    emulation: Any,
+    spin_about: str,
+    overrides: Mapping[str, Any],
+) -> tuple[Problem, RunResult, float, tuple]:
+    """Check the inputs, prepare, integrate; ``(prepared, run, wall s, checked inputs)``."""
+    velocity, obliquity, yaw, omega, azimuth, start = _check_inputs(
+        velocity, obliquity, yaw, omega, azimuth, start
+    )
+    if not isinstance(stop_at_reversal, bool):
+        raise InputError(f"stop_at_reversal must be True or False, got {stop_at_reversal!r}")
+    if prepared is not None and not isinstance(prepared, Problem):
+        raise InputError(f"prepared must come from pencore.run.impact.prepare, got {prepared!r}")
+    if prepared is not None and (shank is not None or emulation is not None):
+        raise InputError("pass shank= and emulation= to pencore.prepare, not with prepared=")
+    pr = prepared or prepare(
+        projectile, target, numerics, shank=shank, emulation=emulation, **overrides
+    )
+    num = pr.numerics
+    y0 = initial_state(
+        pr.projectile,
+        pr.rings,
+        velocity,
+        math.radians(obliquity),
+        math.radians(yaw),
+        omega,
+        start,
+        math.radians(azimuth),
+        spin_about,
+    )
+    _check_reaches_target(y0, body_reach(pr.rings), num)
+    t0 = time.perf_counter()
+    run = _run(pr, y0, velocity, stop_at_reversal)
+    wall = time.perf_counter() - t0
+    _raise_on_failure(run, num)
+    return pr, run, wall, (velocity, obliquity, yaw, omega, azimuth, start)
+
+
+def _record_model(ds: xr.Dataset, pr: Problem, spin_about: str) -> xr.Dataset:
+    """Add the shank model, emulation and spin centre to the attributes and inputs_json,
+    when they are not the defaults (default datasets stay exactly as they were)."""
+    extra: dict[str, Any] = {}
+    if not pr.shank.is_default:
+        extra["shank"] = json.loads(to_json(pr.shank))
+    if not pr.emulation.is_default or pr.emulation.surface != "rings":
+        extra["emulation"] = json.loads(to_json(pr.emulation))
+    if spin_about != "cm":
+        extra["spin_about"] = spin_about
+    if extra:
+        inputs = json.loads(ds.attrs["inputs_json"])
+        inputs.update(extra)
+        ds.attrs["inputs_json"] = json.dumps(inputs, default=str)
+        ds.attrs["shank_model"] = pr.shank.describe()
+        ds.attrs["emulation"] = pr.emulation.describe()
+    return ds
+
+
+def _run(pr: Problem, y0: np.ndarray, velocity: float, stop_at_reversal: bool) -> RunResult:
+    """Integrate with the selected integrator: the explicit scheme of the paper
+    emulation, the compiled Rosenbrock pair, or scipy's reference (SI units)."""
+    if pr.emulation.integrator == "explicit":
+        from pencore.integrators.explicit import integrate_explicit as integrator
+    elif pr.numerics.method == "rosenbrock":
+        integrator = integrate
+    else:
+        from pencore.integrators.scipy_ivp import integrate_scipy as integrator
+    return integrator(pr, y0, velocity, stop_at_reversal=stop_at_reversal)
+
+
+def _raise_on_failure(run: RunResult, num: Numerics) -> None:
+    """A :class:`SolverError` naming the cause and the last state, for failed runs."""
+    causes = {
+        "step_limit": f"step budget of {num.max_steps} steps used up (raise numerics "
+        "max_steps, or loosen rtol)",
+        "wall_limit": f"wall-time budget of {num.max_wall:g} s used up (raise numerics max_wall)",
+        "step_underflow": f"the step needed for rtol {num.rtol:g} fell below h_min = "
+        f"{num.h_min:g} s: the contact law is too stiff or chatters"
+        + (" (eps = 0 is the discontinuous law: use eps > 0)" if num.eps == 0.0 else ""),
+        "non_finite": "the state became infinite or NaN (a runaway)",
+        "chatter": f"the steps stalled: {CHUNK_STEPS} accepted steps moved the body less "
+        "than 1 % of its length and changed its speed by less than 1 % (the contact law "
+        "chatters)"
+        + (" (eps = 0 is the discontinuous law: use eps > 0)" if num.eps == 0.0 else ""),
+    }
+    if run.outcome not in causes:
+        return
+    y = run.ys[-1]
+    raise SolverError(
+        f"{causes[run.outcome]}; at t = {run.ts[-1]:.4g} s after {run.ts.size - 1} steps "
+        f"the centre of mass was at ({y[0]:.4g}, {y[1]:.4g}, {y[2]:.4g}) m moving at "
+        f"{math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2):.4g} m/s"
+    )

@@ -1,0 +1,172 @@
+"""Perforation of finite targets: the verdict, the ballistic limit, the Recht-Ipson curve.
+
+A run on a finite target (:class:`pencore.inputs.target.Target` whose last layer has a
+thickness) ends ``perforated`` when every surface element is below the rear face of the
+last plate and the centre of mass moves away from it
+(:func:`pencore.kernels.state.perforated`); the trajectory Dataset then carries the residual
+velocity (``attrs['residual_velocity']``, m/s) and the exit attitude
+(:func:`pencore.run.dataset.exit_attributes`).
+
+The ballistic limit ``v_bl`` (m/s) is the lowest impact speed that perforates:
+:func:`ballistic_limit` searches it with :func:`pencore.search.threshold.find_threshold`, the
+search behind Vcr, Vci and omega_c, and returns the same :class:`CriticalResult`
+(bracket, every evaluation, monotonicity flag).
+
+Recht-Ipson curve (Recht & Ipson, J. Appl. Mech. 30 (1963) 384-390, energy and momentum
+balance of a rigid projectile perforating a plate; the generalised exponent ``p`` is the
+form of Lambert & Jonas, BRL-R-1852 (1976))::
+
+    v_r = a (v^p - v_bl^p)^(1/p)   for v > v_bl,   0 otherwise
+
+with ``a = 1`` and ``p = 2`` for a rigid projectile whose resisting work does not depend on
+the impact speed. :func:`fit_recht_ipson` fits ``a`` and ``p`` (``v_bl`` given, e.g. from
+:func:`ballistic_limit`, or fitted too).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from pencore.errors import InputError
+from pencore.run.impact import prepare, run_impact
+from pencore.search.threshold import (
+    DEFAULT_SCAN,
+    FIXED_BY_SEARCH,
+    VELOCITY_TOL,
+    CriticalResult,
+    find_threshold,
+    split_search_kwargs,
+)
+
+__all__ = [
+    "perforates",
+    "residual_velocity",
+    "ballistic_limit",
+    "recht_ipson",
+    "fit_recht_ipson",
+]
+
+
+def perforates(ds: xr.Dataset) -> bool:
+    """True when the run of ``ds`` ended ``perforated``."""
+    return ds.attrs.get("outcome") == "perforated"
+
+
+def residual_velocity(ds: xr.Dataset) -> float:
+    """Residual speed (m/s) of the centre of mass once clear of the target; 0 when the run
+    did not perforate."""
+    return float(ds.attrs["residual_velocity"]) if perforates(ds) else 0.0
+
+
+def ballistic_limit(
+    projectile: Any,
+    target: Any,
+    obliquity: float = 0.0,
+    yaw: float = 0.0,
+    lo: float = 50.0,
+    hi: float = 3000.0,
+    tol: float = VELOCITY_TOL,
+    *,
+    omega: float = 0.0,
+    scan: int | None = DEFAULT_SCAN,
+    max_iter: int = 60,
+    **simulate_kwargs: Any,
+) -> CriticalResult:
+    """Ballistic limit v_bl (m/s): lowest impact speed that perforates a finite target.
+
+    Verdict at speed ``v``: ``simulate(projectile, target, v, obliquity, yaw, omega)``
+    ends with outcome ``perforated``. A ricochet (``exited``) or an embedded projectile
+    (``stopped``) is "no perforation". At oblique incidence a low-speed ricochet and a
+    higher-speed embedding can both precede perforation; the scan flags a verdict that
+    goes True then False as ``non_monotone``.
+
+    Parameters
+    ----------
+    projectile, target
+        As for :func:`pencore.simulate`; the target must be finite (last layer with a
+        thickness).
+    obliquity, yaw : float
+        Degrees.
+    lo, hi, tol : float
+        Speed range searched and final bracket width (m/s).
+    omega : float
+        Initial angular velocity (rad/s).
+    scan, max_iter
+        See :func:`pencore.search.threshold.find_threshold`.
+    **simulate_kwargs
+        ``numerics=``, numerics overrides (``rtol=``, ``eps=``, ...) and ``start=``.
+
+    Returns
+    -------
+    CriticalResult
+        ``value`` is the midpoint of the bracket ``[lo, hi]`` (m/s): ``lo`` did not
+        perforate, ``hi`` did.
+    """
+    numerics, overrides, sim = split_search_kwargs(dict(simulate_kwargs), FIXED_BY_SEARCH)
+    pr = prepare(projectile, target, numerics, **overrides)
+    if not pr.target.finite:
+        raise InputError(
+            f"target {pr.target.name!r} is semi-infinite: the ballistic limit needs a "
+            "finite last layer (give it a thickness)"
+        )
+
+    def verdict(v: float) -> bool:
+        run = run_impact(pr.projectile, pr.target, v, obliquity, yaw, omega, prepared=pr, **sim)
+        return run.outcome == "perforated"
+
+    return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="v_bl")
+
+
+def recht_ipson(v: np.ndarray | float, v_bl: float, a: float = 1.0, p: float = 2.0) -> np.ndarray:
+    """Recht-Ipson residual speed ``a (v^p - v_bl^p)^(1/p)`` (m/s), 0 for ``v <= v_bl``."""
+    v = np.asarray(v, dtype=float)
+    return a * np.maximum(v**p - v_bl**p, 0.0) ** (1.0 / p)
+
+
+def fit_recht_ipson(v: np.ndarray, v_r: np.ndarray, v_bl: float | None = None) -> dict[str, float]:
+    """Least-squares fit of :func:`recht_ipson` to perforating runs.
+
+    Parameters
+    ----------
+    v, v_r : array
+        Impact and residual speeds (m/s); only rows with ``v_r > 0`` are fitted.
+    v_bl : float, optional
+        Ballistic limit (m/s), held fixed; fitted too when None.
+
+    Returns
+    -------
+    dict
+        ``a``, ``p``, ``v_bl`` (m/s) and ``rms`` (m/s, RMS residual of the fit).
+    """
+    from scipy.optimize import least_squares
+
+    v = np.asarray(v, dtype=float)
+    v_r = np.asarray(v_r, dtype=float)
+    keep = v_r > 0.0
+    v, v_r = v[keep], v_r[keep]
+    if v.size < (3 if v_bl is None else 2):
+        raise InputError(f"need at least 3 perforating runs to fit Recht-Ipson, got {v.size}")
+    vmin = float(v.min())
+
+    def unpack(x: np.ndarray) -> tuple[float, float, float]:
+        return x[0], x[1], (float(v_bl) if v_bl is not None else x[2])
+
+    def resid(x: np.ndarray) -> np.ndarray:
+        a, p, vb = unpack(x)
+        return recht_ipson(v, vb, a, p) - v_r
+
+    x0 = [1.0, 2.0] + ([] if v_bl is not None else [0.9 * vmin])
+    lower = [1e-3, 1.0] + ([] if v_bl is not None else [0.0])
+    upper = [10.0, 10.0] + ([] if v_bl is not None else [vmin * (1 - 1e-9)])
+    sol = least_squares(resid, x0, bounds=(lower, upper))
+    a, p, vb = unpack(sol.x)
+    return {
+        "a": float(a),
+        "p": float(p),
+        "v_bl": float(vb),
+        "rms": float(math.sqrt(np.mean(sol.fun**2))),
+    }

@@ -1,0 +1,303 @@
+"""The threshold search behind every critical value, and its result.
+
+:func:`find_threshold` finds the lowest value of one input at which a yes/no verdict
+switches from False to True: it checks both ends of the bracket, optionally scans it
+coarsely to detect a non-monotone verdict, and bisects to a caller-given tolerance.
+Every verdict evaluated is returned in :class:`CriticalResult`, so a workflow can
+archive the evidence behind each number. The verdicts themselves (a run that turns back,
+deviates or perforates) are in :mod:`pencore.search.critical` and
+:mod:`pencore.search.perforation`.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, fields
+from typing import Any
+
+import numpy as np
+
+from pencore.errors import InputError
+from pencore.inputs.numerics import Numerics
+
+#: Progress of the searches (bracket, evaluations, verdicts) at INFO; the workflow
+#: scripts route it to the rule's log file.
+log = logging.getLogger("pencore.search")
+
+__all__ = [
+    "VELOCITY_TOL",
+    "OMEGA_TOL",
+    "DEFAULT_SCAN",
+    "STATUSES",
+    "CriticalResult",
+    "find_threshold",
+    "FIXED_BY_SEARCH",
+    "split_search_kwargs",
+]
+
+#: Default (and widest recommended) bracket width for critical velocities (m/s).
+VELOCITY_TOL = 5.0
+#: Default (and widest recommended) bracket width for critical angular velocities (rad/s).
+OMEGA_TOL = 0.5
+#: Scan points used by :func:`vcr`, :func:`omega_c` and :func:`vci` before bisecting.
+DEFAULT_SCAN = 5
+
+#: Possible values of :attr:`CriticalResult.status`.
+STATUSES = ("ok", "non_monotone", "below_range", "above_range", "max_iter")
+
+
+@dataclass(frozen=True)
+class CriticalResult:
+    """Outcome of a threshold search.
+
+    Attributes
+    ----------
+    value : float
+        Midpoint of the final bracket ``[lo, hi]``; NaN for ``below_range`` and
+        ``above_range``.
+    lo : float
+        Largest value evaluated with verdict False below the threshold (NaN if none,
+        i.e. ``below_range``).
+    hi : float
+        Smallest value evaluated with verdict True above ``lo`` (NaN if none, i.e.
+        ``above_range``). For ``below_range`` it is the lower end of the search range.
+    n_evals : int
+        Number of verdict evaluations (each value is evaluated once).
+    monotone : bool
+        False if the coarse scan saw a True followed later by a False. True otherwise,
+        which without a scan means "not contradicted", not "proven".
+    status : str
+        ``"ok"``: converged, ``hi - lo <= tol``. ``"non_monotone"``: converged on the
+        first False -> True transition of a non-monotone verdict (the lowest threshold
+        found). ``"below_range"``: the verdict is already True at the lower end.
+        ``"above_range"``: it is still False at the upper end. ``"max_iter"``: the bracket
+        is still wider than ``tol`` after ``max_iter`` bisections.
+    message : str
+        Human-readable explanation, naming the flips of a non-monotone verdict.
+    history : tuple of (float, bool)
+        Every evaluated value and its verdict, in evaluation order.
+    tol : float
+        The tolerance asked for.
+    """
+
+    value: float
+    lo: float
+    hi: float
+    n_evals: int
+    monotone: bool
+    status: str
+    message: str
+    history: tuple[tuple[float, bool], ...] = ()
+    tol: float = math.nan
+
+    @property
+    def converged(self) -> bool:
+        """True when ``value`` is a threshold located to within ``tol``."""
+        return self.status in ("ok", "non_monotone")
+
+    def to_dict(self) -> dict[str, Any]:
+        """Plain-Python dict (history as a list of [value, verdict]) for JSON/netCDF attrs."""
+        d = {f.name: getattr(self, f.name) for f in fields(self)}
+        d["history"] = [[float(v), bool(b)] for v, b in self.history]
+        return d
+
+
+def _fmt(v: float) -> str:
+    return f"{v:.6g}"
+
+
+def find_threshold(
+    verdict: Callable[[float], bool],
+    lo: float,
+    hi: float,
+    tol: float,
+    *,
+    max_iter: int = 60,
+    scan: int | None = None,
+    name: str = "threshold",
+) -> CriticalResult:
+    """Lowest value in ``[lo, hi]`` where ``verdict`` switches from False to True.
+
+    Progress (the bracket, each evaluation and its verdict, the outcome) is logged at
+    INFO through ``logging.getLogger("pencore.search")``, prefixed with ``name``.
+
+    Parameters
+    ----------
+    verdict : callable
+        ``verdict(value) -> bool``; True means "reverses" / "unstable". Called once per
+        distinct value.
+    lo, hi : float
+        Search range, ``lo < hi`` (units of the searched quantity).
+    tol : float
+        Required width of the final bracket (same units), > 0. No default on purpose:
+        use :data:`VELOCITY_TOL` or :data:`OMEGA_TOL` or tighter.
+    max_iter : int
+        Largest number of bisection steps.
+    scan : int, optional
+        Number of equally spaced points (ends included, >= 2) evaluated across
+        ``[lo, hi]`` before bisecting. If they show a True followed later by a False the
+        verdict is not monotone: ``monotone`` is False, ``status`` is
+        ``"non_monotone"``, ``message`` names the values where it flips, and only the
+        FIRST False -> True transition of the scan is bisected, so the result is the
+        lowest threshold found (a flip narrower than the scan spacing can still be
+        missed). Default None: only the ends are checked.
+    name : str, optional
+        What is searched (``"Vcr"``, ``"Vci"``, ``"omega_c"``), for the progress log.
+
+    Returns
+    -------
+    CriticalResult
+        The bracket ends are checked first: if ``verdict(lo)`` is True the status is
+        ``"below_range"`` (``value`` NaN, ``hi = lo``, ``lo`` NaN); if ``verdict(hi)`` is
+        False it is ``"above_range"`` (``value`` NaN, ``lo = hi``, ``hi`` NaN). Otherwise
+        ``lo`` has verdict False, ``hi`` True, ``hi - lo <= tol`` (unless ``max_iter``),
+        and ``value = (lo + hi) / 2``.
+    """
+    lo, hi, tol = float(lo), float(hi), float(tol)
+    if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
+        raise InputError(f"need finite lo < hi, got lo={lo!r}, hi={hi!r}")
+    if not (math.isfinite(tol) and tol > 0.0):
+        raise InputError(f"tol must be a positive number, got {tol!r}")
+    if int(max_iter) < 0:
+        raise InputError(f"max_iter must be >= 0, got {max_iter!r}")
+    if scan is not None and int(scan) < 2:
+        raise InputError(f"scan must be None or >= 2 points, got {scan!r}")
+
+    seen: dict[float, bool] = {}
+    history: list[tuple[float, bool]] = []
+
+    bracket = [float(lo), float(hi)]  # current bracket, for the progress log only
+    log.info("%s: search in [%s, %s], tol %s", name, _fmt(lo), _fmt(hi), _fmt(tol))
+
+    def ev(v: float) -> bool:
+        v = float(v)
+        if v not in seen:
+            seen[v] = bool(verdict(v))
+            history.append((v, seen[v]))
+            log.info(
+                "%s: evaluation %d at %s -> %s (bracket [%s, %s])",
+                name,
+                len(history),
+                _fmt(v),
+                seen[v],
+                _fmt(bracket[0]),
+                _fmt(bracket[1]),
+            )
+        return seen[v]
+
+    def result(
+        value: float, a: float, b: float, monotone: bool, status: str, message: str
+    ) -> CriticalResult:
+        log.info(
+            "%s: %s after %d evaluations, value %s in [%s, %s]",
+            name,
+            status,
+            len(history),
+            _fmt(value),
+            _fmt(a),
+            _fmt(b),
+        )
+        return CriticalResult(
+            value, a, b, len(history), monotone, status, message, tuple(history), tol
+        )
+
+    nan = math.nan
+    if ev(lo):
+        return result(
+            nan,
+            nan,
+            lo,
+            True,
+            "below_range",
+            f"verdict is already True at the lower end {_fmt(lo)}: the threshold "
+            f"is at or below {_fmt(lo)}; lower lo",
+        )
+    if not ev(hi):
+        return result(
+            nan,
+            hi,
+            nan,
+            True,
+            "above_range",
+            f"verdict is still False at the upper end {_fmt(hi)}: the threshold "
+            f"is above {_fmt(hi)} (or does not exist); raise hi",
+        )
+
+    monotone = True
+    notes = []
+    a, b = lo, hi
+    if scan is not None:
+        grid = np.linspace(lo, hi, int(scan))
+        grid[0], grid[-1] = lo, hi
+        verdicts = [ev(v) for v in grid]
+        flips = [
+            (grid[i], verdicts[i], grid[i + 1], verdicts[i + 1])
+            for i in range(len(grid) - 1)
+            if verdicts[i] != verdicts[i + 1]
+        ]
+        first = next(i for i in range(len(grid) - 1) if not verdicts[i] and verdicts[i + 1])
+        a, b = float(grid[first]), float(grid[first + 1])
+        bracket[:] = [a, b]
+        if any(v1 and not v2 for _, v1, _, v2 in flips):
+            monotone = False
+            desc = "; ".join(
+                f"{str(v1)}->{str(v2)} between {_fmt(x1)} and {_fmt(x2)}"
+                for x1, v1, x2, v2 in flips
+            )
+            notes.append(
+                f"verdict is not monotone on the {len(grid)}-point scan of "
+                f"[{_fmt(lo)}, {_fmt(hi)}]: flips {desc}; bisected only the first "
+                f"False->True transition [{_fmt(a)}, {_fmt(b)}], so the value is the "
+                "lowest threshold found"
+            )
+        else:
+            notes.append(f"{len(grid)}-point scan of [{_fmt(lo)}, {_fmt(hi)}] is monotone")
+    else:
+        notes.append("monotonicity not checked (no scan)")
+
+    n_iter = 0
+    while b - a > tol and n_iter < max_iter:
+        mid = 0.5 * (a + b)
+        if mid <= a or mid >= b:  # floating-point resolution reached
+            break
+        if ev(mid):
+            b = mid
+        else:
+            a = mid
+        bracket[:] = [a, b]
+        n_iter += 1
+    value = 0.5 * (a + b)
+    if b - a > tol:
+        status = "max_iter"
+        notes.insert(
+            0, f"bracket width {_fmt(b - a)} is still > tol {_fmt(tol)} after {n_iter} bisections"
+        )
+    else:
+        status = "ok" if monotone else "non_monotone"
+        notes.insert(0, f"threshold in [{_fmt(a)}, {_fmt(b)}] after {n_iter} bisections")
+    return result(value, a, b, monotone, status, "; ".join(notes))
+
+
+#: Arguments of a run that a solver-backed search sets itself.
+FIXED_BY_SEARCH = {"velocity", "obliquity", "yaw", "omega", "prepared", "stop_at_reversal"}
+
+
+def split_search_kwargs(
+    kwargs: dict[str, Any], fixed: set[str]
+) -> tuple[Numerics | None, dict, dict]:
+    """Split a search's keyword arguments into (numerics, numerics overrides, simulate
+    kwargs); arguments in ``fixed`` (set by the search itself) and unknown ones raise
+    :class:`~pencore.errors.InputError`."""
+    bad = set(kwargs) & fixed
+    if bad:
+        raise InputError(f"argument(s) {', '.join(sorted(bad))} are set by the search itself")
+    numerics = kwargs.pop("numerics", None)
+    # numerics overrides and the models (shank=, emulation=) all go to prepare()
+    to_prepare = set(Numerics.__dataclass_fields__) | {"shank", "emulation"}
+    overrides = {k: kwargs.pop(k) for k in list(kwargs) if k in to_prepare}
+    unknown = set(kwargs) - {"start"}
+    if unknown:
+        raise InputError(f"unknown argument(s): {', '.join(sorted(unknown))}")
+    return numerics, overrides, kwargs
