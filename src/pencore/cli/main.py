@@ -248,7 +248,7 @@ def build_parser() -> argparse.ArgumentParser:
         "--write",
         metavar="PATH",
         help="also write the fitted geometry to PATH (YAML, written atomically); "
-        "src/pencore/data/table3_geometry.yaml regenerates the shipped file",
+        "src/pencore/inputs/data/table3_geometry.yaml regenerates the shipped file",
     )
     sub.add_parser(
         "list",

@@ -68,7 +68,7 @@ __all__ = [
 
 #: Most resistance coefficients a medium may have: the compiled kernels hold the stress
 #: polynomial, its smoothed step (one degree more) and the Jacobian's moments (three
-#: more) in arrays of ``pencore.kernels.arcs._MAXD + 2`` entries (tests/test_physics.py checks).
+#: more) in arrays of ``pencore.kernels.arcs._MAXD + 2`` entries (tests/run/test_impact.py checks).
 MAX_COEFFICIENTS = 8
 
 

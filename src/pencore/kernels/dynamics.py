@@ -309,7 +309,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
             # the layer's share of the band: the cores and ramps of
             # pencore.kernels.arcs.band_regions, written out here because the call (even marked
             # inline) makes the right-hand side 14 -> 18 us; the Jacobian calls
-            # band_regions, and tests/test_jacobian.py compares the two forms
+            # band_regions, and tests/kernels/test_jacobian.py compares the two forms
             nreg = 0
             for edge in range(2):
                 level = bounds[lay, edge]

@@ -9,7 +9,7 @@ which the compiler turns into vector instructions: the branches and the ``acos``
 arc's half-angle stay in a scalar pass, the Taylor shift, the ``cos^j`` recursion and
 the sums are branch-free passes over the rings. Each ring's result is the same
 sequence of floating-point operations as the one-ring form, so the loads are
-bit-identical to it (``tests/test_fast_path.py``). SI units.
+bit-identical to it (``tests/kernels/test_dynamics_whole_rings.py``). SI units.
 """
 
 from __future__ import annotations

@@ -36,7 +36,7 @@ from pencore.studies.parts import grid, parts_of
 from pencore.studies.trajectories import stack_trajectories
 from pencore.studies.trends import trend
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 NAN = math.nan
 
 

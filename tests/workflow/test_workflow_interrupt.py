@@ -21,7 +21,7 @@ import numpy as np
 import pytest
 import xarray as xr
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 TARGET = "results/fig8/vcr.nc"
 SNAKEMAKE = [sys.executable, "-m", "snakemake"]
 # last on the command line: --configfile takes every word after it

@@ -16,7 +16,7 @@ from helpers import heavy_modules_after
 from pencore.errors import ConfigError
 from pencore.studies.config_check import check_config, schema_error_message
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 SHIPPED = yaml.safe_load((REPO / "config" / "config.yaml").read_text())
 SCHEMA = yaml.safe_load((REPO / "workflow" / "schemas" / "config.schema.yaml").read_text())
 

@@ -27,7 +27,7 @@ from pencore.inputs.library import projectile_names, target_names
 from pencore.inputs.numerics import resolve_numerics
 from pencore.io.netcdf import read_netcdf
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
 STUDY_RULES = ("table2", "fig5", "verification")
 FIGURE_RULES = ("table2_figure", "fig5_figure", "verification_figure")
@@ -451,7 +451,7 @@ def test_archived_config_is_the_shipped_one():
 def test_workflow_script_errors_are_one_line(tmp_path, raise_, one_line):
     # a job that fails with pencore's own error prints one line naming it (the rule's
     # log keeps the traceback); anything else is a bug and keeps its traceback
-    scripts = Path(__file__).resolve().parents[1] / "workflow" / "scripts"
+    scripts = Path(__file__).resolve().parents[2] / "workflow" / "scripts"
     log = tmp_path / "job.log"
     code = (
         f"import sys; sys.path.insert(0, {str(scripts)!r})\n"

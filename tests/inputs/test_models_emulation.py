@@ -181,5 +181,5 @@ def test_readme_states_the_model_ranges():
 
     from pencore.inputs.limits import limits_markdown
 
-    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
     assert limits_markdown("models") in readme

@@ -5,7 +5,7 @@ Three doors: the Python API (``pencore.simulate`` raises ``InputError``), YAML f
 case asserts the exception or exit status, a one-line message that names the offending
 value, no traceback, no file left behind, and a time bound (a hang guard: every case is
 refused before any integration, in well under a second). The workflow configuration's
-catalogue is in ``tests/test_config_validation.py``.
+catalogue is in ``tests/studies/test_config_check.py``.
 """
 
 from __future__ import annotations
@@ -389,5 +389,5 @@ def test_readme_states_the_ranges_the_code_checks():
     """The README's table of valid ranges is the one pencore.inputs.limits enforces."""
     from pencore.inputs.limits import limits_markdown
 
-    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
     assert limits_markdown() in readme
