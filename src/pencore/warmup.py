@@ -2,12 +2,15 @@
 
 pencore's kernels are compiled on first use and cached on disk (``cache=True``; in
 ``__pycache__`` next to the sources, or under ``NUMBA_CACHE_DIR``). A fresh clone, a CI
-run or the first jobs of a reproduction would otherwise each pay ~20 s of compilation
-before their first result. ``python -m pencore.warmup`` runs one short trajectory of
-every kernel variant (the default DAFL on rings with the Rosenbrock integrator, the
-cavity and factor shank models, the panel surface and the explicit integrator), so that
-afterwards a fresh process loads the kernels from the cache
-(``benchmarks/bench_startup.py`` measures both).
+run or the first jobs of a reproduction would otherwise each pay ~55 s of compilation
+before their first result (on the 2-core benchmark machine; the default path compiles
+nearly every kernel, ``benchmarks/bench_compile.py``), and say so once on stderr
+(:func:`pencore.run.impact._compile_notice`). ``python -m pencore.warmup`` runs one short
+trajectory of every kernel variant (the default DAFL on rings with the Rosenbrock
+integrator, the cavity and factor shank models, the panel surface and the explicit
+integrator), so that afterwards a fresh process loads the kernels from the cache
+(``benchmarks/bench_startup.py`` measures both). On a cold cache it says so once too,
+at its first variant: the variants share one process, and the notice is once per process.
 
 Run: ``python -m pencore.warmup`` (the README's set-up commands and ``.ci/run`` do).
 """
