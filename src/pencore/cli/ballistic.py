@@ -1,11 +1,20 @@
-"""The ``pencore ballistic-limit`` subcommand (kept apart from :mod:`pencore.cli`, which
-registers it): the lowest impact speed that perforates a finite target."""
+"""The ``pencore ballistic-limit`` subcommand: the lowest impact speed that perforates a
+finite target."""
 
 from __future__ import annotations
 
 import argparse
 import math
 
+from pencore.cli.options import (
+    add_window_options,
+    number_type,
+    numerics_option,
+    obliquity,
+    resolve,
+    velocity,
+    with_windows,
+)
 from pencore.inputs.numerics import resolve_numerics
 
 __all__ = ["add_parser", "run"]
@@ -13,8 +22,6 @@ __all__ = ["add_parser", "run"]
 
 def add_parser(sub: argparse._SubParsersAction) -> None:
     """Register ``ballistic-limit`` on the subparsers of :func:`pencore.cli.main.build_parser`."""
-    from pencore.cli.main import _number, _numerics_option, _obliquity, _velocity, _window_options
-
     p = sub.add_parser(
         "ballistic-limit",
         help="search the ballistic limit (m/s) of a finite target",
@@ -32,31 +39,31 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     )
     p.add_argument(
         "--obliquity",
-        type=_obliquity,
+        type=obliquity,
         default=0.0,
         metavar="DEG",
         help="obliquity in deg, 0 <= DEG < 90 (default: 0)",
     )
     p.add_argument(
-        "--yaw", type=_number("yaw"), default=0.0, metavar="DEG", help="yaw in deg (default: 0)"
+        "--yaw", type=number_type("yaw"), default=0.0, metavar="DEG", help="yaw in deg (default: 0)"
     )
     p.add_argument(
-        "--lo", type=_velocity, default=50.0, metavar="M_S", help="lowest speed (default: 50)"
+        "--lo", type=velocity, default=50.0, metavar="M_S", help="lowest speed (default: 50)"
     )
     p.add_argument(
-        "--hi", type=_velocity, default=3000.0, metavar="M_S", help="highest speed (default: 3000)"
+        "--hi", type=velocity, default=3000.0, metavar="M_S", help="highest speed (default: 3000)"
     )
     p.add_argument(
         "--tol",
-        type=_velocity,
+        type=velocity,
         default=5.0,
         metavar="M_S",
         help="width of the final bracket in m/s (default: 5)",
     )
-    _window_options(p)
+    add_window_options(p)
     p.add_argument(
         "--numerics",
-        type=_numerics_option,
+        type=numerics_option,
         action="append",
         default=[],
         metavar="KEY=VALUE",
@@ -66,15 +73,14 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the search and print the result; errors propagate to :func:`pencore.cli.main`."""
-    from pencore.cli.main import _resolve, _with_windows
     from pencore.errors import InputError
     from pencore.inputs.library import get_projectile, get_target
     from pencore.search.perforation import ballistic_limit
 
     if not args.lo < args.hi:
         raise InputError(f"--lo {args.lo:g} must be below --hi {args.hi:g} (m/s)")
-    projectile = _resolve("projectile", args.projectile, get_projectile)
-    target = _with_windows(_resolve("target", args.target, get_target), args)
+    projectile = resolve("projectile", args.projectile, get_projectile)
+    target = with_windows(resolve("target", args.target, get_target), args)
     r = ballistic_limit(
         projectile,
         target,

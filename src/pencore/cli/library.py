@@ -1,18 +1,46 @@
-"""The ``pencore list`` and ``pencore fit-table3`` subcommands (kept apart from
-:mod:`pencore.cli`, which registers them): the projectile and target library, and the
-Table-3 geometry fit."""
+"""The ``pencore list`` and ``pencore fit-table3`` subcommands: the projectile and target
+library, and the Table-3 geometry fit."""
 
 from __future__ import annotations
 
 import argparse
 
-__all__ = ["list_library", "fit_table3"]
+from pencore.cli.options import CommandFailure
+
+__all__ = ["add_parsers", "list_library", "fit_table3"]
+
+
+def add_parsers(sub: argparse._SubParsersAction) -> None:
+    """Register ``fit-table3`` and ``list`` on the subparsers of
+    :func:`pencore.cli.main.build_parser`."""
+    fit3 = sub.add_parser(
+        "fit-table3",
+        help="fit the p1..p4 geometry (diameter and shank length in m) to the paper's "
+        "Table 3 (masses in kg, Lc/L)",
+        description="Fit a solid CRH-3 ogive + cylinder (diameter and shank length in "
+        "m) to the masses (kg) and Lc/L of paper Table 3, print the residuals (kg and "
+        "dimensionless), and compare the fit with the geometry pencore ships "
+        "(pencore/inputs/data/table3_geometry.yaml).",
+    )
+    fit3.add_argument(
+        "--write",
+        metavar="PATH",
+        help="also write the fitted geometry to PATH (YAML, written atomically); "
+        "src/pencore/inputs/data/table3_geometry.yaml regenerates the shipped file",
+    )
+    sub.add_parser(
+        "list",
+        help="list the named projectiles (mass in kg, diameter in mm) and targets "
+        "(coefficients in Pa, Pa s/m, Pa s^2/m^2)",
+        description="List the named projectiles (mass in kg, Lc/L = tip-to-centre-of-"
+        "mass distance over length, diameter in mm, source) and targets (resistance "
+        "coefficients a0 in Pa, a1 in Pa s/m, a2 in Pa s^2/m^2, source). Takes no options.",
+    )
 
 
 def fit_table3(args: argparse.Namespace) -> int:
     """``pencore fit-table3 [--write PATH]``: the minimax fit of the paper's Table 3, beside
     the shipped geometry; exit status 0, or 1 when the file cannot be written."""
-    from pencore.cli.main import _Failure
     from pencore.inputs.library import shipped_table3_geometry, table3_fit, write_table3_geometry
 
     fit = table3_fit()
@@ -28,7 +56,7 @@ def fit_table3(args: argparse.Namespace) -> int:
         try:
             write_table3_geometry(fit, args.write)
         except WriteError as exc:
-            raise _Failure(str(exc), 1) from None
+            raise CommandFailure(str(exc), 1) from None
         print(f"wrote {args.write}")
     return 0
 
