@@ -52,9 +52,8 @@ include: "workflow/rules/section4.smk"
 include: "workflow/rules/attribution.smk"
 include: "workflow/rules/ensemble.smk"
 include: "workflow/rules/tables.smk"
-# >>> issue 11: perforation of finite slabs (beyond the paper) >>>
+# Perforation of finite slabs (beyond the paper)
 include: "workflow/rules/perforation.smk"
-# <<< issue 11 <<<
 include: "workflow/rules/archive.smk"
 
 

@@ -1,6 +1,6 @@
 """Where the benchmark trajectory's time goes, and the arithmetic floor of its kernel.
 
-Issue 12 asks for 5 ms per trajectory at the present accuracy. This benchmark splits the
+The speed target is 5 ms per trajectory at the present accuracy. This benchmark splits the
 benchmark case (p2, soil, 45 deg, 1000 m/s, default numerics; the one of
 ``bench_trajectory.py``) into its parts and measures how far the right-hand side could
 fall with the same discretisation:

@@ -1,4 +1,5 @@
-"""The four speed figures of issue 12 in one table, with the machine and its load.
+"""The speed figures (trajectory, first result, reproduction, numpy ratio) in one table,
+with the machine and its load.
 
 1. per-trajectory time of the benchmark case (``bench_trajectory.py``: wall, median,
    and the fastest repeat), and what it would be with every right-hand side at the

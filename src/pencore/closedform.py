@@ -11,8 +11,8 @@ force on the embedded part of the nose (tip depth ``z``) is::
 
 (the shank carries no axial load: na = 0 there, and its a0 cancels around the ring).
 Fully embedded, ``A = pi a^2`` and ``B2 = pi a^2 N*`` with the nose factor ``N*``, giving
-the paper guide's ``F = pi a^2 (a0 + N* a2 V^2)`` and, for ``a1 = 0``, the tunnel-phase
-depth ``(m / (2 pi a^2 N* a2)) ln(1 + N* a2 V1^2 / a0)``.
+the familiar ``F = pi a^2 (a0 + N* a2 V^2)`` of the cavity-expansion literature and,
+for ``a1 = 0``, the tunnel-phase depth ``(m / (2 pi a^2 N* a2)) ln(1 + N* a2 V1^2 / a0)``.
 
 The nose-entry phase is integrated exactly: with ``a1 = 0``, ``m d(V^2)/dz = -2 F`` is
 linear in ``V^2`` and solved by quadrature (:func:`nose_entry_speed`), so

@@ -107,7 +107,7 @@ def test_table3_fit_reproduces_the_table_as_far_as_the_table_allows():
     """Mass is affine in shank density for any fixed body, so no geometry can fit the
     four masses better than the minimax line through them (0.0525 kg, just over the
     table's 0.05 kg rounding). The fit must reach that bound closely, and reproduce
-    every Lc/L and the nose geometry of the paper guide (d ~ 95 mm, shank ~ 500 mm)."""
+    every Lc/L and a plausible geometry (d ~ 95 mm, shank ~ 500 mm)."""
     fit = table3_fit()
     bound = table3_mass_bound()
     assert 0.05 < bound < 0.055  # the table is (slightly) inconsistent

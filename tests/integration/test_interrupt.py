@@ -46,5 +46,5 @@ def test_ctrl_c_stops_a_running_trajectory_within_a_second(tmp_path):
     assert "Traceback" not in stderr
     assert os.listdir(tmp_path) == []  # neither the file nor a temporary one
     # a chunk of 500 steps takes ~0.1 s here; 1 s is the promise, 5 s a hang guard that
-    # holds on a loaded machine (the measured time is in the closing note)
+    # holds on a loaded machine
     assert elapsed < 5.0, elapsed

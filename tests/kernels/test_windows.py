@@ -1,4 +1,4 @@
-"""Near-surface (crater) and free-surface resistance ramps (issue 11).
+"""Near-surface (crater) and free-surface resistance ramps.
 
 * off (the default) changes nothing, to the last bit;
 * with a crater the 1-D depth is the closed form of the ramp

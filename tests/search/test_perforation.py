@@ -1,4 +1,4 @@
-"""Finite targets and perforation (issue 11): limits that must hold.
+"""Finite targets and perforation: limits that must hold.
 
 * a slab is a half-space until the tip reaches its rear face;
 * for a normal impact, once the tip passes the rear face the nose is only partly loaded

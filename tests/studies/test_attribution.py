@@ -55,8 +55,8 @@ def test_gather_default_row_is_the_model_and_table_verdicts():
     # the default row is the model's own result, bit for bit (same code, same machine)
     assert float(ds["vcr"].sel(setting="default")) == float(ref["vcr"])
     np.testing.assert_array_equal(ds["alpha"].sel(setting="default").values, ref["alpha"].values)
-    # the "comes back out" reading moves Vcr up into the paper's 3 % band (1629 m/s,
-    # issue 10) and leaves every normal-impact number unchanged
+    # the "comes back out" reading moves Vcr up into the paper's 3 % band (1629 m/s)
+    # and leaves every normal-impact number unchanged
     assert float(ds["vcr"].sel(setting="exits")) > float(ds["vcr"].sel(setting="default"))
     assert (
         float(ds["miss_vcr"].sel(setting="exits"))

@@ -1,4 +1,4 @@
-# Ensemble (Monte Carlo) studies (issue 13), pencore.studies.ensemble; config `ensemble`.
+# Ensemble (Monte Carlo) studies, pencore.studies.ensemble; config `ensemble`.
 #   ensemble_chunk   one job per chunk: results/ensemble/<name>/parts/<k>.nc
 #   ensemble_gather  results/ensemble/<name>.nc (sample dimension + statistics)
 #   ensemble_figure  results/ensemble/<name>.{png,pdf}

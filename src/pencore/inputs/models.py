@@ -25,7 +25,7 @@ Warren & Poormon 2001). The models here:
     radius) around the nose-tip path; a shank element is loaded only where it presses
     into the wall of that cavity, i.e. where its wall intrusion ``delta = d - R_c > 0``
     (``d`` its distance from the tip path) and ``Vn >= 0``, with the resistance building
-    from the wall (``axis="tip"``, the default, as issue 10 specifies it)::
+    from the wall (``axis="tip"``, the default)::
 
         sigma = sigma_DAFL(Vn) * min(1, delta / delta_ref)
 

@@ -5,7 +5,7 @@ independent point-panel solver agrees with pencore; so the paper computed someth
 other than the model as written. :func:`disputed_quantities` computes, for one
 *setting* (a dict of choices: shank model, surface, explicit step, start height, spin
 centre, yaw reading, friction), every quantity in dispute, so that readings can be
-tested jointly: one setting, all the paper's numbers (issue 10).
+tested jointly: one setting, all the paper's numbers.
 
 The quantities (projectile #2 in soil unless stated; paper values in :data:`PAPER`):
 

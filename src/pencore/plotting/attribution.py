@@ -1,4 +1,4 @@
-"""Attribution figure (issue 10): one panel per disputed paper number, the value under
+"""Attribution figure: one panel per disputed paper number, the value under
 every setting, the paper's value, and the band that counts as reproducing it."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Ensemble figure (issue 13): distributions of the outcomes of N drawn impacts, and the
+"""Ensemble figure: distributions of the outcomes of N drawn impacts, and the
 convergence of the estimates against N."""
 
 from __future__ import annotations

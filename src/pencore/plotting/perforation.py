@@ -1,4 +1,4 @@
-"""Perforation figures (beyond the paper, issue 11): ballistic limit against slab thickness
+"""Perforation figures (beyond the paper): ballistic limit against slab thickness
 and obliquity, residual velocity against impact velocity with the Recht-Ipson fit, and
 measured against predicted for the validation against published measurements."""
 

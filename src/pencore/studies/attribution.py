@@ -1,5 +1,5 @@
 """Attribution study: which reading of the paper moves each disputed number, and whether
-one setting reproduces them all (issue 10).
+one setting reproduces them all.
 
 Each *setting* (configured in ``attribution.settings``: a name, a label, a group, whether
 it is a physically argued reading of the paper or an attribution-only knob, and the

@@ -1,4 +1,4 @@
-"""Beyond the paper (issue 11): perforation of finite slabs.
+"""Beyond the paper: perforation of finite slabs.
 
 * :func:`ballistic_limit_map`: the ballistic limit v_bl (:func:`pencore.search.critical.
   ballistic_limit`) of one projectile against slab thickness and obliquity;
