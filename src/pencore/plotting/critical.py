@@ -88,7 +88,24 @@ def _ordered_legend(ax, fig: Figure, order: list[str], ncols: int = 2) -> None:
     )
 
 
-_PAPER_FIG18 = r"paper, #2 at 1000 m/s ($20 < \omega_c \leq 25$ rad/s)"
+def _paper_vcr() -> tuple[float, float, float]:
+    """The paper's Vcr bracket of #2 (lo, hi in m/s) and its obliquity (deg), from the
+    claims file (claim ``vcr_p2_45``)."""
+    from pencore.paper.claims import at, claim, paper_values
+
+    lo, hi = paper_values()["vcr_p2_45_bracket"]
+    return lo, hi, float(at(claim("vcr_p2_45")["at"])[0]["obliquity"])
+
+
+def _paper_omega_c() -> tuple[float, float, float]:
+    """The paper's omega_c bracket of #2 (lo, hi in rad/s) and its impact speed (m/s),
+    from the claims file (claim ``omega_c_p2_1000``)."""
+    from pencore.paper.claims import at, claim, paper_values
+
+    lo, hi = paper_values()["omega_c_p2_1000_bracket"]
+    return lo, hi, float(at(claim("omega_c_p2_1000")["at"])[0]["velocity"])
+
+
 _SEARCH_LABELS = ["above the search range", "verdict not monotone"]
 
 
@@ -116,14 +133,15 @@ def plot_fig8(ds: xr.Dataset) -> Figure:
             f"{_pname(p)}, $L_c/L$ = {float(sub['lc_over_l']):.3f}",
             _jitter(obl, k, n),
         )
+    lo, hi, obliquity = _paper_vcr()
     ax.errorbar(
-        [45.0],
-        [1645.5],
-        yerr=[[4.5], [4.5]],
+        [obliquity],
+        [0.5 * (lo + hi)],
+        yerr=[[0.5 * (hi - lo)], [0.5 * (hi - lo)]],
         fmt="*",
         ms=11,
         color="k",
-        label="paper, #2 at 45° (1641 < $V_{cr}$ ≤ 1650)",
+        label=f"paper, #2 at {obliquity:g}° ({lo:g} < $V_{{cr}}$ ≤ {hi:g})",
     )
     _legend_search(ax)
     ax.set_xlabel(r"Angle of obliquity $\varphi_1$ (deg)")
@@ -256,16 +274,18 @@ def plot_fig18(ds: xr.Dataset) -> Figure:
             label,
             _jitter(v, k, ds.sizes["projectile"]),
         )
+    lo, hi, velocity = _paper_omega_c()
+    paper_label = rf"paper, #2 at {velocity:g} m/s (${lo:g} < \omega_c \leq {hi:g}$ rad/s)"
     ax.errorbar(
-        [1000.0],
-        [22.5],
-        yerr=[[2.5], [2.5]],
+        [velocity],
+        [0.5 * (lo + hi)],
+        yerr=[[0.5 * (hi - lo)], [0.5 * (hi - lo)]],
         fmt="*",
         ms=11,
         color="k",
-        label=_PAPER_FIG18,
+        label=paper_label,
     )
-    order += [_PAPER_FIG18, *_SEARCH_LABELS]
+    order += [paper_label, *_SEARCH_LABELS]
     _legend_search(ax)
     ax.set_xlabel(_VI)
     ax.set_ylabel(r"Critical angular velocity $\omega_c$ (rad/s)")

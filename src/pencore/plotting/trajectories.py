@@ -118,8 +118,7 @@ def plot_fig13(ds: xr.Dataset) -> Figure:
     ax1.set_ylabel("y (m)")
     ax1.set_title(
         f"(a) {_pname(ds.attrs.get('projectile'))}, yaw "
-        f"{ds.attrs.get('yaw_deg', 0.1):g}°; paper $\\varphi$: 0.16° (280), "
-        "0.24° (1000), large (2200)",
+        f"{ds.attrs.get('yaw_deg', 0.1):g}°; paper $\\varphi$: {_paper_fig13()}",
         fontsize=9,
     )
     ax1.grid(alpha=0.3)
@@ -139,7 +138,9 @@ def plot_fig16(ds: xr.Dataset) -> Figure:
     """(a) nose-tip paths for each omega, (b) signed deviation alpha against depth."""
     fig = new_figure(11.0, 4.6)
     ax1, ax2 = fig.subplots(1, 2)
-    paper = {5.0: "0.14°", 20.0: "2.86°", 25.0: "turns back"}
+    pv = _paper_values()
+    paper = {w: f"{a:g}°" for w, a in pv["fig16_alpha_deg"].items()}
+    paper[pv["fig16_reverses_at"]] = "turns back"
     for k, w in enumerate(ds["omega"].values):
         sub = ds.sel(omega=w)
         lab = (
@@ -175,7 +176,8 @@ def plot_start_height(ds: xr.Dataset) -> Figure:
     fig = new_figure(6.4, 4.6)
     ax = fig.add_subplot()
     h = ds["start_height"].values
-    paper = {5.0: 0.14, 20.0: 2.86}
+    pv = _paper_values()
+    paper = pv["fig16_alpha_deg"]
     for k, w in enumerate(ds["omega"].values):
         sub = ds.sel(omega=w)
         a = sub["alpha"].values
@@ -186,7 +188,15 @@ def plot_start_height(ds: xr.Dataset) -> Figure:
         if float(w) in paper:
             ax.axhline(paper[float(w)], color=_c(k), ls="--", lw=0.8)
     ax.plot([], [], "--", color="0.3", lw=0.8, label="paper (start height not stated)")
-    ax.plot([], [], "*", ms=10, color="0.3", ls="none", label="turns back (paper: at ω = 25 rad/s)")
+    ax.plot(
+        [],
+        [],
+        "*",
+        ms=10,
+        color="0.3",
+        ls="none",
+        label=f"turns back (paper: at ω = {pv['fig16_reverses_at']:g} rad/s)",
+    )
     ax.set_yscale("log")
     ax.set_xlabel("nose-tip height above the surface at the start (m)")
     ax.set_ylabel("deviation α (deg)")
@@ -198,3 +208,18 @@ def plot_start_height(ds: xr.Dataset) -> Figure:
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=7, frameon=False)
     return fig
+
+
+def _paper_values() -> dict:
+    """The paper's numbers of Sect. 4.3 from the claims file (:mod:`pencore.paper.claims`)."""
+    from pencore.paper.claims import paper_values
+
+    return paper_values()
+
+
+def _paper_fig13() -> str:
+    """The paper's final deviations of Figs 13-14 as a title fragment:
+    ``"0.16° (280), 0.24° (1000), large (2200)"`` (speeds in m/s)."""
+    pv = _paper_values()
+    phis = [f"{phi:g}° ({v:g})" for v, phi in sorted(pv["fig13_phi_deg"].items())]
+    return ", ".join([*phis, f"large ({pv['fig13_large_at']:g})"])
