@@ -90,6 +90,8 @@ for _kind, (_entry, _dataset) in S4_DATASETS.items():
             f"s4_{_kind}_figure"
         input:
             nc=_dataset,
+            # the paper's numbers drawn beside pencore's (pencore.paper.claims)
+            claims="config/paper_claims.csv",
         output:
             png=report(
                 s4_figure_path(_kind, "png"),
