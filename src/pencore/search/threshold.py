@@ -156,6 +156,46 @@ def find_threshold(
         and ``value = (lo + hi) / 2``.
     """
     lo, hi, tol = float(lo), float(hi), float(tol)
+    _check_search(lo, hi, tol, max_iter, scan)
+    search = _Search(verdict, name, tol, [lo, hi])
+    log.info("%s: search in [%s, %s], tol %s", name, _fmt(lo), _fmt(hi), _fmt(tol))
+    nan = math.nan
+    if search.ev(lo):
+        return search.result(
+            nan,
+            nan,
+            lo,
+            True,
+            "below_range",
+            f"verdict is already True at the lower end {_fmt(lo)}: the threshold "
+            f"is at or below {_fmt(lo)}; lower lo",
+        )
+    if not search.ev(hi):
+        return search.result(
+            nan,
+            hi,
+            nan,
+            True,
+            "above_range",
+            f"verdict is still False at the upper end {_fmt(hi)}: the threshold "
+            f"is above {_fmt(hi)} (or does not exist); raise hi",
+        )
+    if scan is not None:
+        a, b, monotone, note = _scan(search, lo, hi, int(scan))
+    else:
+        a, b, monotone, note = lo, hi, True, "monotonicity not checked (no scan)"
+    a, b, n_iter = _bisect(search, a, b, tol, max_iter)
+    if b - a > tol:
+        status = "max_iter"
+        first = f"bracket width {_fmt(b - a)} is still > tol {_fmt(tol)} after {n_iter} bisections"
+    else:
+        status = "ok" if monotone else "non_monotone"
+        first = f"threshold in [{_fmt(a)}, {_fmt(b)}] after {n_iter} bisections"
+    return search.result(0.5 * (a + b), a, b, monotone, status, f"{first}; {note}")
+
+
+def _check_search(lo: float, hi: float, tol: float, max_iter: int, scan: int | None) -> None:
+    """The arguments of :func:`find_threshold`, or :class:`~pencore.errors.InputError`."""
     if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
         raise InputError(f"need finite lo < hi, got lo={lo!r}, hi={hi!r}")
     if not (math.isfinite(tol) and tol > 0.0):
@@ -165,119 +205,99 @@ def find_threshold(
     if scan is not None and int(scan) < 2:
         raise InputError(f"scan must be None or >= 2 points, got {scan!r}")
 
-    seen: dict[float, bool] = {}
-    history: list[tuple[float, bool]] = []
 
-    bracket = [float(lo), float(hi)]  # current bracket, for the progress log only
-    log.info("%s: search in [%s, %s], tol %s", name, _fmt(lo), _fmt(hi), _fmt(tol))
+class _Search:
+    """One search's verdicts: each value evaluated once, every evaluation logged and kept
+    in order, and the current bracket (for the log)."""
 
-    def ev(v: float) -> bool:
+    def __init__(
+        self, verdict: Callable[[float], bool], name: str, tol: float, bracket: list[float]
+    ) -> None:
+        self.verdict, self.name, self.tol, self.bracket = verdict, name, tol, bracket
+        self.seen: dict[float, bool] = {}
+        self.history: list[tuple[float, bool]] = []
+
+    def ev(self, v: float) -> bool:
         v = float(v)
-        if v not in seen:
-            seen[v] = bool(verdict(v))
-            history.append((v, seen[v]))
+        if v not in self.seen:
+            self.seen[v] = bool(self.verdict(v))
+            self.history.append((v, self.seen[v]))
             log.info(
                 "%s: evaluation %d at %s -> %s (bracket [%s, %s])",
-                name,
-                len(history),
+                self.name,
+                len(self.history),
                 _fmt(v),
-                seen[v],
-                _fmt(bracket[0]),
-                _fmt(bracket[1]),
+                self.seen[v],
+                _fmt(self.bracket[0]),
+                _fmt(self.bracket[1]),
             )
-        return seen[v]
+        return self.seen[v]
 
     def result(
-        value: float, a: float, b: float, monotone: bool, status: str, message: str
+        self, value: float, a: float, b: float, monotone: bool, status: str, message: str
     ) -> CriticalResult:
         log.info(
             "%s: %s after %d evaluations, value %s in [%s, %s]",
-            name,
+            self.name,
             status,
-            len(history),
+            len(self.history),
             _fmt(value),
             _fmt(a),
             _fmt(b),
         )
         return CriticalResult(
-            value, a, b, len(history), monotone, status, message, tuple(history), tol
-        )
+            value, a, b, len(self.history), monotone, status, message, tuple(self.history),
+            self.tol,
+        )  # fmt: skip
 
-    nan = math.nan
-    if ev(lo):
-        return result(
-            nan,
-            nan,
-            lo,
-            True,
-            "below_range",
-            f"verdict is already True at the lower end {_fmt(lo)}: the threshold "
-            f"is at or below {_fmt(lo)}; lower lo",
-        )
-    if not ev(hi):
-        return result(
-            nan,
-            hi,
-            nan,
-            True,
-            "above_range",
-            f"verdict is still False at the upper end {_fmt(hi)}: the threshold "
-            f"is above {_fmt(hi)} (or does not exist); raise hi",
-        )
 
-    monotone = True
-    notes = []
-    a, b = lo, hi
-    if scan is not None:
-        grid = np.linspace(lo, hi, int(scan))
-        grid[0], grid[-1] = lo, hi
-        verdicts = [ev(v) for v in grid]
-        flips = [
-            (grid[i], verdicts[i], grid[i + 1], verdicts[i + 1])
-            for i in range(len(grid) - 1)
-            if verdicts[i] != verdicts[i + 1]
-        ]
-        first = next(i for i in range(len(grid) - 1) if not verdicts[i] and verdicts[i + 1])
-        a, b = float(grid[first]), float(grid[first + 1])
-        bracket[:] = [a, b]
-        if any(v1 and not v2 for _, v1, _, v2 in flips):
-            monotone = False
-            desc = "; ".join(
-                f"{str(v1)}->{str(v2)} between {_fmt(x1)} and {_fmt(x2)}"
-                for x1, v1, x2, v2 in flips
-            )
-            notes.append(
-                f"verdict is not monotone on the {len(grid)}-point scan of "
-                f"[{_fmt(lo)}, {_fmt(hi)}]: flips {desc}; bisected only the first "
-                f"False->True transition [{_fmt(a)}, {_fmt(b)}], so the value is the "
-                "lowest threshold found"
-            )
-        else:
-            notes.append(f"{len(grid)}-point scan of [{_fmt(lo)}, {_fmt(hi)}] is monotone")
-    else:
-        notes.append("monotonicity not checked (no scan)")
+def _scan(search: _Search, lo: float, hi: float, n: int) -> tuple[float, float, bool, str]:
+    """Evaluate ``n`` equally spaced points of ``[lo, hi]`` (ends known: False at ``lo``,
+    True at ``hi``); the first False -> True interval, whether the verdict is monotone,
+    and a note naming the flips of a non-monotone one."""
+    grid = np.linspace(lo, hi, n)
+    grid[0], grid[-1] = lo, hi
+    verdicts = [search.ev(v) for v in grid]
+    flips = [
+        (grid[i], verdicts[i], grid[i + 1], verdicts[i + 1])
+        for i in range(len(grid) - 1)
+        if verdicts[i] != verdicts[i + 1]
+    ]
+    first = next(i for i in range(len(grid) - 1) if not verdicts[i] and verdicts[i + 1])
+    a, b = float(grid[first]), float(grid[first + 1])
+    search.bracket[:] = [a, b]
+    if not any(v1 and not v2 for _, v1, _, v2 in flips):
+        return a, b, True, f"{len(grid)}-point scan of [{_fmt(lo)}, {_fmt(hi)}] is monotone"
+    desc = "; ".join(
+        f"{str(v1)}->{str(v2)} between {_fmt(x1)} and {_fmt(x2)}" for x1, v1, x2, v2 in flips
+    )
+    note = (
+        f"verdict is not monotone on the {len(grid)}-point scan of "
+        f"[{_fmt(lo)}, {_fmt(hi)}]: flips {desc}; bisected only the first "
+        f"False->True transition [{_fmt(a)}, {_fmt(b)}], so the value is the "
+        "lowest threshold found"
+    )
+    return a, b, False, note
 
+
+def _bisect(
+    search: _Search, a: float, b: float, tol: float, max_iter: int
+) -> tuple[float, float, int]:
+    """Halve the bracket ``[a, b]`` (verdict False at ``a``, True at ``b``) until it is at
+    most ``tol`` wide, ``max_iter`` steps were taken, or floating point cannot split it;
+    the final bracket and the number of steps."""
     n_iter = 0
     while b - a > tol and n_iter < max_iter:
         mid = 0.5 * (a + b)
         if mid <= a or mid >= b:  # floating-point resolution reached
             break
-        if ev(mid):
+        if search.ev(mid):
             b = mid
         else:
             a = mid
-        bracket[:] = [a, b]
+        search.bracket[:] = [a, b]
         n_iter += 1
-    value = 0.5 * (a + b)
-    if b - a > tol:
-        status = "max_iter"
-        notes.insert(
-            0, f"bracket width {_fmt(b - a)} is still > tol {_fmt(tol)} after {n_iter} bisections"
-        )
-    else:
-        status = "ok" if monotone else "non_monotone"
-        notes.insert(0, f"threshold in [{_fmt(a)}, {_fmt(b)}] after {n_iter} bisections")
-    return result(value, a, b, monotone, status, "; ".join(notes))
+    return a, b, n_iter
 
 
 #: Arguments of a run that a solver-backed search sets itself.
