@@ -92,6 +92,21 @@ def table2(
         ``depth_candidates(projectile, depth_measure, test)`` and its
         ``selection_score(projectile, depth_measure)``.
     """
+    _check_table2_args(rows, reference, projectiles, measures)
+    projectiles, measures = list(projectiles), list(measures)
+    num = resolve_numerics(numerics)
+    rows = rows.reset_index(drop=True)
+    runs = _run_candidates(rows, projectiles, target, num)
+    score, ip, im, rule = _select(runs["depth"], rows, reference, projectiles, measures)
+    table = _table(rows, runs, projectiles, ip, im, rule, float(score[ip, im]), target)
+    dsout = _dataset(rows, table, runs, score, projectiles, measures, ip, im, rule, reference, num)
+    return table, dsout
+
+
+def _check_table2_args(
+    rows: pd.DataFrame, reference: str, projectiles: Sequence[str], measures: Sequence[str]
+) -> None:
+    """The inputs of :func:`table2`, or :class:`~pencore.errors.InputError` naming the gap."""
     missing = [c for c in TABLE2_INPUT_COLUMNS if c not in rows.columns]
     if missing:
         raise InputError(f"Table 2 input lacks column(s) {', '.join(missing)}")
@@ -99,8 +114,6 @@ def table2(
         raise InputError(f"Table 2 input lacks the reference column {reference!r}")
     if len(rows) == 0:
         raise InputError("Table 2 input has no rows")
-    projectiles = list(projectiles)
-    measures = list(measures)
     if not projectiles:
         raise InputError("table2 needs at least one candidate projectile")
     bad = [m for m in measures if m not in DEPTH_MEASURES]
@@ -108,10 +121,15 @@ def table2(
         raise InputError(
             f"unknown depth measure(s) {bad or measures!r}; use {', '.join(DEPTH_MEASURES)}"
         )
-    num = resolve_numerics(numerics)
-    rows = rows.reset_index(drop=True)
-    n_t = len(rows)
 
+
+def _run_candidates(
+    rows: pd.DataFrame, projectiles: list[str], target: str, num: Numerics
+) -> dict[str, np.ndarray]:
+    """Every test with every candidate projectile: ``depth`` (projectile, every measure of
+    :data:`DEPTH_MEASURES`, test; m), ``outcome``, ``final_dev`` (deg) and ``n_steps``
+    (projectile, test)."""
+    n_t = len(rows)
     depth = np.full((len(projectiles), len(DEPTH_MEASURES), n_t), np.nan)
     outcome = np.empty((len(projectiles), n_t), dtype=object)
     final_dev = np.full((len(projectiles), n_t), np.nan)
@@ -133,7 +151,20 @@ def table2(
             outcome[ip, it] = ds.attrs["outcome"]
             final_dev[ip, it] = float(ds["final_deviation"])
             n_steps[ip, it] = int(ds.attrs["n_steps"])
+    return {"depth": depth, "outcome": outcome, "final_dev": final_dev, "n_steps": n_steps}
 
+
+def _select(
+    depth: np.ndarray,
+    rows: pd.DataFrame,
+    reference: str,
+    projectiles: list[str],
+    measures: list[str],
+) -> tuple[np.ndarray, int, int, str]:
+    """The RMS relative difference of every candidate from ``rows[reference]``
+    (projectile, every measure), the chosen (projectile, measure) indices among the
+    allowed ``measures``, and the selection rule in words."""
+    all_measures = list(DEPTH_MEASURES)
     ref = rows[reference].to_numpy(dtype=float)
     ok = np.isfinite(ref) & (ref > 0)
     if not ok.any():
@@ -144,13 +175,28 @@ def table2(
     sel_m = [all_measures.index(m) for m in measures]
     cand[:, sel_m] = score[:, sel_m]
     ip, im = np.unravel_index(int(np.argmin(cand)), cand.shape)
-    chosen_p, chosen_m = projectiles[ip], all_measures[im]
     rule = (
         f"candidate (projectile in {projectiles}, depth measure in {measures}) with the "
         f"smallest RMS relative difference from column {reference!r} over "
         f"{int(ok.sum())} tests"
     )
+    return score, int(ip), int(im), rule
 
+
+def _table(
+    rows: pd.DataFrame,
+    runs: dict[str, np.ndarray],
+    projectiles: list[str],
+    ip: int,
+    im: int,
+    rule: str,
+    chosen_score: float,
+    target: str,
+) -> pd.DataFrame:
+    """One row per test: the inputs, the selected candidate's depths and differences."""
+    all_measures = list(DEPTH_MEASURES)
+    depth, outcome = runs["depth"], runs["outcome"]
+    chosen_p, chosen_m = projectiles[ip], all_measures[im]
     measured = rows["measured_depth_m"].to_numpy(dtype=float)
     paper = rows["paper_predicted_depth_m"].to_numpy(dtype=float)
     chosen = depth[ip, im]
@@ -169,11 +215,34 @@ def table2(
     table.attrs = {
         "chosen_projectile": chosen_p,
         "chosen_depth_measure": chosen_m,
-        "chosen_rms_rel_diff": float(score[ip, im]),
+        "chosen_rms_rel_diff": chosen_score,
         "selection_rule": rule,
         "target": target,
     }
+    return table
 
+
+def _dataset(
+    rows: pd.DataFrame,
+    table: pd.DataFrame,
+    runs: dict[str, np.ndarray],
+    score: np.ndarray,
+    projectiles: list[str],
+    measures: list[str],
+    ip: int,
+    im: int,
+    rule: str,
+    reference: str,
+    num: Numerics,
+) -> xr.Dataset:
+    """:func:`table2`'s Dataset on dimension ``test``, with every candidate's depths."""
+    all_measures = list(DEPTH_MEASURES)
+    depth, final_dev, n_steps = runs["depth"], runs["final_dev"], runs["n_steps"]
+    chosen_p, chosen_m = projectiles[ip], all_measures[im]
+    chosen = depth[ip, im]
+    measured = rows["measured_depth_m"].to_numpy(dtype=float)
+    paper = rows["paper_predicted_depth_m"].to_numpy(dtype=float)
+    target = table.attrs["target"]
     test = rows["test"].to_numpy()
     dm_long = DEPTH_MEASURES[chosen_m][1]
     dsout = xr.Dataset(
@@ -286,4 +355,4 @@ def table2(
             rows["source"].astype(str).to_numpy(dtype=object),
             {"long_name": "provenance of the row: paper, derived or assumed"},
         )
-    return table, dsout
+    return dsout
