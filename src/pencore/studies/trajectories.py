@@ -67,10 +67,50 @@ def stack_trajectories(
     shape = tuple(len(np.atleast_1d(v)) for v, _ in coords.values())
     if set(runs) != set(product(*(range(n) for n in shape))):
         raise InputError("runs must hold one dataset for every combination of coordinates")
+    t = _shared_time_axis(runs, n_time)
+    hist, scalars = _sample(runs, shape, t, speed_fraction)
+    first = next(iter(runs.values()))
+    data = _history_variables(first, dims, hist)
+    data.update(_scalar_variables(dims, scalars, speed_fraction))
+    c = {d: (d, np.asarray(v), dict(a)) for d, (v, a) in coords.items()}
+    c["time"] = (
+        "time",
+        t,
+        _attrs("s", "time since start (shared, thinned grid; NaN after a run ends)"),
+    )
+    ds = xr.Dataset(data, coords=c)
+    ds.attrs.update(
+        {
+            "projectile": first.attrs["projectile"],
+            "target": first.attrs["target"],
+            "lc_over_l": float(first.attrs["lc_over_l"]),
+            "numerics_json": json.dumps(json.loads(first.attrs["inputs_json"])["numerics"]),
+            "time_axis": f"union of the runs' sample times thinned to about {int(n_time)}, "
+            "runs interpolated linearly",
+            "Conventions": "CF-1.8",
+        }
+    )
+    return ds
+
+
+def _shared_time_axis(runs: Mapping[tuple[int, ...], xr.Dataset], n_time: int) -> np.ndarray:
+    """The union of the runs' sample times (s) thinned to about ``n_time``, with every
+    run's last time kept."""
     all_t = np.unique(np.concatenate([r["time"].values for r in runs.values()]))
     pick = np.unique(np.round(np.linspace(0, all_t.size - 1, int(n_time))).astype(int))
     t = np.union1d(all_t[pick], [float(r["time"].values[-1]) for r in runs.values()])
 
+    return t
+
+
+def _sample(
+    runs: Mapping[tuple[int, ...], xr.Dataset],
+    shape: tuple[int, ...],
+    t: np.ndarray,
+    speed_fraction: float,
+) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray]]:
+    """Every run's histories interpolated onto ``t`` (NaN outside the run) and its
+    scalar results, as arrays of ``shape`` (+ time)."""
     hist = {k: np.full(shape + (t.size,), np.nan) for k in TRAJECTORY_VARIABLES}
     scal_f = {
         k: np.full(shape, np.nan)
@@ -111,7 +151,14 @@ def stack_trajectories(
         outcome[idx] = str(r.attrs["outcome"])
         nose[idx] = analysis.nose_direction(r)
 
-    first = next(iter(runs.values()))
+    scal_f.update(reversed=reversed_, n_steps=n_steps, outcome=outcome, nose_direction=nose)
+    return hist, scal_f
+
+
+def _history_variables(
+    first: xr.Dataset, dims: list[str], hist: dict[str, np.ndarray]
+) -> dict[str, tuple]:
+    """The time-history variables on ``(*dims, time)``, with the attributes of a run."""
     tdims = (*dims, "time")
     data = {
         k: (tdims, hist[k], dict(first[k].attrs))
@@ -127,86 +174,76 @@ def stack_trajectories(
             "positive towards +x (unwrapped)",
         ),
     )
+    return data
+
+
+def _scalar_variables(
+    dims: list[str], scal_f: dict[str, np.ndarray], speed_fraction: float
+) -> dict[str, tuple]:
+    """The per-run scalars on ``dims``, with units and long names."""
+    outcome, reversed_, n_steps, nose = (
+        scal_f["outcome"],
+        scal_f["reversed"],
+        scal_f["n_steps"],
+        scal_f["nose_direction"],
+    )
     fd = f"at the last state with speed >= {speed_fraction:g} x impact speed"
-    data.update(
-        {
-            "outcome": (
-                dims,
-                outcome,
-                {"long_name": "how the run ended (stopped, exited, ...)", "units": "1"},
+    return {
+        "outcome": (
+            dims,
+            outcome,
+            {"long_name": "how the run ended (stopped, exited, ...)", "units": "1"},
+        ),
+        "reversed": (
+            dims,
+            reversed_,
+            _attrs(
+                "1", "1 if the centre of mass velocity turned towards the surface in the target"
             ),
-            "reversed": (
-                dims,
-                reversed_,
-                _attrs(
-                    "1", "1 if the centre of mass velocity turned towards the surface in the target"
-                ),
+        ),
+        "penetration_depth": (
+            dims,
+            scal_f["penetration_depth"],
+            _attrs("m", "deepest point of the nose tip below the surface"),
+        ),
+        "path_length": (
+            dims,
+            scal_f["path_length"],
+            _attrs("m", "length of the nose-tip path below the surface"),
+        ),
+        "final_deviation": (
+            dims,
+            scal_f["final_deviation"],
+            _attrs(
+                "degree",
+                f"trajectory deviation from the normal (paper phi, alpha) {fd}",
+                speed_fraction=float(speed_fraction),
             ),
-            "penetration_depth": (
-                dims,
-                scal_f["penetration_depth"],
-                _attrs("m", "deepest point of the nose tip below the surface"),
-            ),
-            "path_length": (
-                dims,
-                scal_f["path_length"],
-                _attrs("m", "length of the nose-tip path below the surface"),
-            ),
-            "final_deviation": (
-                dims,
-                scal_f["final_deviation"],
-                _attrs(
-                    "degree",
-                    f"trajectory deviation from the normal (paper phi, alpha) {fd}",
-                    speed_fraction=float(speed_fraction),
-                ),
-            ),
-            "final_deviation_signed": (
-                dims,
-                scal_f["final_deviation_signed"],
-                _attrs(
-                    "degree", f"signed in-plane trajectory deviation (positive towards +x) {fd}"
-                ),
-            ),
-            "final_theta": (
-                dims,
-                scal_f["final_theta"],
-                _attrs("degree", "axis angle from the normal at the end of the run"),
-            ),
-            "nose_direction": (
-                dims,
-                nose,
-                {"units": "1", "long_name": "side the nose points to at the end (+x or -x)"},
-            ),
-            "t_first_contact": (
-                dims,
-                scal_f["t_first_contact"],
-                _attrs("s", "time of first contact with the target"),
-            ),
-            "t_end": (dims, scal_f["t_end"], _attrs("s", "time at the end of the run")),
-            "n_steps": (dims, n_steps, _attrs("1", "accepted integration steps")),
-            "wall_time": (dims, scal_f["wall_time"], _attrs("s", "solver wall time")),
-        }
-    )
-    c = {d: (d, np.asarray(v), dict(a)) for d, (v, a) in coords.items()}
-    c["time"] = (
-        "time",
-        t,
-        _attrs("s", "time since start (shared, thinned grid; NaN after a run ends)"),
-    )
-    ds = xr.Dataset(data, coords=c)
-    ds.attrs.update(
-        {
-            "projectile": first.attrs["projectile"],
-            "target": first.attrs["target"],
-            "lc_over_l": float(first.attrs["lc_over_l"]),
-            "numerics_json": json.dumps(json.loads(first.attrs["inputs_json"])["numerics"]),
-            "time_axis": f"union of the runs' sample times thinned to about {int(n_time)}, "
-            "runs interpolated linearly",
-            "Conventions": "CF-1.8",
-        }
-    )
-    return ds
+        ),
+        "final_deviation_signed": (
+            dims,
+            scal_f["final_deviation_signed"],
+            _attrs("degree", f"signed in-plane trajectory deviation (positive towards +x) {fd}"),
+        ),
+        "final_theta": (
+            dims,
+            scal_f["final_theta"],
+            _attrs("degree", "axis angle from the normal at the end of the run"),
+        ),
+        "nose_direction": (
+            dims,
+            nose,
+            {"units": "1", "long_name": "side the nose points to at the end (+x or -x)"},
+        ),
+        "t_first_contact": (
+            dims,
+            scal_f["t_first_contact"],
+            _attrs("s", "time of first contact with the target"),
+        ),
+        "t_end": (dims, scal_f["t_end"], _attrs("s", "time at the end of the run")),
+        "n_steps": (dims, n_steps, _attrs("1", "accepted integration steps")),
+        "wall_time": (dims, scal_f["wall_time"], _attrs("s", "solver wall time")),
+    }
 
 
 _PARAM_ATTRS = {
