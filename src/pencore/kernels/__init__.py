@@ -18,6 +18,11 @@ module             contents
 ``state``          outcome codes, stopping test, LU solve, quaternion helpers
 ``cache``          the guard that drops stale compiled code (runs on import)
 =================  ==============================================================
+
+Compile-time habit: a value passed to another compiled function is never a literal
+constant (counters start as ``np.int64(0)``, flags are run-time booleans), because numba
+compiles the callee once more for a literal's own type; the first use compiles each
+function once (``benchmarks/bench_compile.py`` lists any that compile twice).
 """
 
 from pencore.kernels.cache import invalidate_stale_caches

@@ -52,7 +52,7 @@ def _arc(center: float, half: float, lo: np.ndarray, hi: np.ndarray) -> int:
 
 @nb.njit(cache=True, inline="always")
 def _intersect(alo, ahi, na, blo, bhi, nb_, olo, ohi) -> int:
-    n = 0
+    n = np.int64(0)
     for i in range(na):
         for j in range(nb_):
             lo = max(alo[i], blo[j])
@@ -415,7 +415,7 @@ def band_regions(
         we = wl if edge == 0 else -wl
         if y0 - yk >= level + hb:
             continue  # the band is wholly above this level
-        n = 0
+        n = np.int64(0)
         if y0 - yk <= level - hb:
             n = _level_arc(y0, yk, phiy, level - hb, False, l1lo, l1hi)
         if n > 0:

@@ -207,7 +207,7 @@ def point_loads(y, pts, bounds, coef, fric, eps, with_friction, cavity, cav, pat
         dx, dy, dz = tip[0] - path[n - 1, 0], tip[1] - path[n - 1, 1], tip[2] - path[n - 1, 2]
         s_tip = path[n - 1, 3] + math.sqrt(dx * dx + dy * dy + dz * dz)
     reg = eps if eps > 0.0 else 1e-9
-    j_prev = -1
+    j_prev = np.int64(-1)
     x1_prev = np.nan
     for i in range(pts.shape[0]):
         px, py, pz = pts[i, 0], pts[i, 1], pts[i, 2]

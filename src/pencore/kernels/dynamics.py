@@ -229,7 +229,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
     geo = np.empty((14, n))  # per ring: y0 yk yc ys hb q av bc bs kv cph sph epsr need
     kind = np.empty(n, dtype=np.int64)  # -1 out of contact, -2 general, else fast slot
     tab = np.empty((5, n))  # the fast rings' av, kv, cos/sin(phi0), epsr
-    nf = 0
+    nf = np.int64(0)
     rk = math.sqrt(r11 * r11 + r12 * r12)  # |d(height)/d(radius)| of a ring point
     for i in range(n):
         x1 = rings[i, 0]
@@ -318,7 +318,7 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
                 we = wl if edge == 0 else -wl
                 if y0 - yk >= level + hb:
                     continue
-                n = 0
+                n = np.int64(0)
                 if y0 - yk <= level - hb:
                     n = _level_arc(y0, yk, phiy, level - hb, False, l1lo, l1hi)
                 if n > 0:

@@ -44,8 +44,10 @@ def model_loads(y, rings, bounds, coef, fric, eps, n_gauss, model):
         )  # fmt: skip
     fb, mb, clear = contact_loads(y, rings, bounds, coef, fric, eps, n_gauss)
     if cavity:
+        # ``cavity`` (True here), not the literal: one compiled point_loads serves
+        # every call site (a literal bool argument compiles a specialisation of its own)
         f2, m2, c2 = point_loads(
-            y, pts, bounds, coef, fric, eps, n_gauss > 0, True, cav, path, npath,
+            y, pts, bounds, coef, fric, eps, n_gauss > 0, cavity, cav, path, npath,
             np.empty((0, 0)),  # no Jacobian
         )  # fmt: skip
         for k in range(3):

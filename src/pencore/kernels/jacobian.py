@@ -172,8 +172,8 @@ def load_jacobian(y, rings, bounds, coef, eps):
     eps_ = np.empty((2, _MAXD, n))
     lev = np.empty((2, n))
     lev2 = np.empty((2, n))
-    nf = 0
-    nf2 = 0
+    nf = np.int64(0)
+    nf2 = np.int64(0)
     last = np.nan
     for i in range(n):
         x1 = rings[i, 0]
@@ -400,13 +400,16 @@ def model_load_jacobian(y, rings, bounds, coef, fric, eps, model):
     ``-A G(vn) g`` per point with ``A`` depending on the position only."""
     ipar, cav, pts, path, npath = model
     cavity = ipar[0] == SHANK_CAVITY
+    # run-time booleans, not literals: a literal bool argument would compile a
+    # specialisation of point_loads of its own (the Jacobian is frictionless)
+    no_friction = np.bool_(False)
     if ipar[1] == SURFACE_PANELS:
         d = np.zeros((6, 6))
-        point_loads(y, pts, bounds, coef, fric, eps, False, cavity, cav, path, npath, d)
+        point_loads(y, pts, bounds, coef, fric, eps, no_friction, cavity, cav, path, npath, d)
         return d
     d = load_jacobian(y, rings, bounds, coef, eps)
     if cavity:
-        point_loads(y, pts, bounds, coef, fric, eps, False, True, cav, path, npath, d)
+        point_loads(y, pts, bounds, coef, fric, eps, no_friction, cavity, cav, path, npath, d)
     return d
 
 

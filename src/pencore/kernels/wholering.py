@@ -115,7 +115,7 @@ def whole_ring_integrals(tab, nf, coef, nside, out):
         # each ring's step polynomial (one per step width) and level
         last = np.nan
         level = 0.0
-        deg = 0
+        deg = np.int64(0)
         for m in range(nf):
             if tab[4, m] != last:
                 level, deg = side_poly(coef, 0, tab[4, m], side, poly)
