@@ -14,6 +14,10 @@ with the machine and its load.
 Writes benchmarks/results/speed.csv. Run (from the repository root):
 python benchmarks/bench_startup.py && python benchmarks/bench_reproduction.py
 python benchmarks/speed_summary.py
+
+``python benchmarks/speed_summary.py --markdown`` prints the README's performance table
+from ``speed.csv`` and ``compile.csv`` (:func:`markdown_table`; a test keeps the README's
+copy equal to it).
 """
 
 from __future__ import annotations
@@ -43,9 +47,57 @@ def _json_of(script: str) -> dict:
         return json.loads(out.read_text())
 
 
+#: (file, row key, label, how to rerun) of the README's performance table, in order.
+TABLE_ROWS = (
+    ("speed", "trajectory", "one trajectory (p2, soil, 45 deg, 1000 m/s, default numerics), "
+     "median", "bench_trajectory.py"),
+    ("speed", "trajectory_raw_run", "the same run without its Dataset (what each verdict "
+     "of a search costs), median", "bench_trajectory.py"),
+    ("speed", "first_result_warm_cache", "fresh process to its first result, after the "
+     "install step", "bench_startup.py"),
+    ("compile", "first_result", "first result on an empty kernel cache: compiling the "
+     "default path (CPU)", "bench_compile.py"),
+    ("compile", "warmup", "the install step `python -m pencore.warmup` (CPU)",
+     "bench_compile.py"),
+    ("speed", "snakemake_dry_run", "a Snakemake start (`snakemake -n` of the whole workflow)",
+     "bench_startup.py"),
+    ("speed", "reproduction_wall", "full reproduction, `snakemake --cores 2 --forceall` "
+     "after the install step (wall)", "bench_reproduction.py"),
+    ("speed", "reproduction_cpu", "the same, CPU of all its processes",
+     "bench_reproduction.py"),
+    ("speed", "numpy_ratio", "the numpy form of the same force law over pencore, per "
+     "trajectory", "bench_numpy.py"),
+)  # fmt: skip
+
+
+def markdown_table(results: Path = HERE / "results") -> str:
+    """The README's performance table (markdown) from ``speed.csv`` and ``compile.csv``:
+    each figure with its unit, the commit and date it was measured at, and the script
+    that measures it."""
+    speed = pd.read_csv(results / "speed.csv").set_index("figure")
+    compile_ = pd.read_csv(results / "compile.csv").set_index("case")
+    lines = [
+        "| figure | value | measured (commit, UTC) | rerun with |",
+        "|---|---|---|---|",
+    ]
+    for source, key, label, script in TABLE_ROWS:
+        if source == "speed":
+            row = speed.loc[key]
+            value = f"{row['value']:.3g} {row['unit']}"
+        else:
+            row = compile_.loc[key]
+            value = f"{row['cpu_s']:.3g} s"
+        when = f"{row['commit']}, {str(row['measured_utc'])[:10]}"
+        lines.append(f"| {label} | {value} | {when} | `benchmarks/{script}` |")
+    return "\n".join(lines) + "\n"
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.parse_args()
+    ap.add_argument("--markdown", action="store_true", help="print the README's table and exit")
+    if ap.parse_args().markdown:
+        print(markdown_table(), end="")
+        return
     rows = []
     traj = _json_of("bench_trajectory.py")
     rows.append(("trajectory", traj["wall_s_median"] * 1e3, "ms", 5.0, traj["case"]))
