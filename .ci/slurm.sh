@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Real single-node Slurm cluster in CI (issue 13, part A).
+# Real single-node Slurm cluster in CI.
 # Installs Slurm + munge if missing, starts munged/slurmctld/slurmd without systemd,
 # runs the small workflow (.test/config.yaml) through the slurm executor plugin,
 # checks every job went through sbatch, runs the same target locally and compares
