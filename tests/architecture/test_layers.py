@@ -116,7 +116,11 @@ HISTORY = re.compile(r"\bissues? ?#?\d+\b|\b(this|last|next|first|second|third|f
 
 def _history_files() -> list[Path]:
     roots = [PACKAGE, REPO / "config", REPO / "workflow", REPO / "benchmarks", REPO / "docs"]
-    files = [REPO / "Snakefile", REPO / "README.md", *(REPO / ".ci").iterdir()]
+    files = [
+        REPO / "Snakefile",
+        REPO / "README.md",
+        *(f for f in (REPO / ".ci").iterdir() if f.is_file()),
+    ]
     for root in roots:
         files += [
             p
