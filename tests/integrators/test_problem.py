@@ -1,0 +1,55 @@
+"""pencore.integrators.problem: what a prepared problem gives every integrator."""
+
+import math
+
+import numpy as np
+import pytest
+
+import pencore
+from pencore.integrators.problem import Problem
+from pencore.kernels.state import body_reach
+
+
+def test_prepare_returns_the_public_problem():
+    pr = pencore.prepare("p2", "soil")
+    assert isinstance(pr, Problem)
+    assert pr.model is None and pr.loaded_rings is pr.rings  # the default model
+
+
+def test_atol_scales_each_component_by_its_size():
+    pr = pencore.prepare("p2", "soil", rtol=1e-5)
+    length, v = pr.projectile.length, 800.0
+    atol = pr.atol(v)
+    assert atol.shape == (13,)
+    np.testing.assert_allclose(atol[:3], 1e-7 * length, rtol=1e-15)  # m
+    np.testing.assert_allclose(atol[3:7], 1e-7, rtol=1e-15)  # quaternion
+    np.testing.assert_allclose(atol[7:10], 1e-7 * v, rtol=1e-15)  # m/s
+    np.testing.assert_allclose(atol[10:], 1e-7 * v / length, rtol=1e-15)  # rad/s
+
+
+def test_a_step_never_jumps_half_the_thinnest_layer():
+    plate = {"name": "plate", "layers": [{"medium": "aluminium", "thickness": 0.01}]}
+    assert pencore.prepare("p2", plate).max_travel == pytest.approx(0.005)
+    half_space = pencore.prepare("p2", "soil")
+    assert half_space.max_travel == half_space.numerics.max_travel
+
+
+def test_friction_points_only_when_the_target_has_friction():
+    assert pencore.prepare("p2", "soil").n_gauss == 0  # frictionless soil
+    rough = {"name": "rough", "coefficients": [1e6, 0.0, 1e3], "friction": 0.1}
+    pr = pencore.prepare("p2", rough, n_gauss=6)
+    assert pr.n_gauss == 6
+
+
+def test_gravity_points_down_and_reach_is_the_farthest_ring():
+    pr = pencore.prepare("p2", "soil", gravity=9.81)
+    np.testing.assert_array_equal(pr.gravity, [0.0, -9.81, 0.0])
+    assert pr.reach == body_reach(pr.rings)
+    r = np.hypot(pr.rings[:, 0], pr.rings[:, 1]).max()
+    assert math.isclose(pr.reach, r, rel_tol=1e-15)
+
+
+def test_a_shank_model_loads_its_own_rings():
+    pr = pencore.prepare("p4", "soil", shank="cavity")
+    assert pr.model is not None and pr.loaded_rings is pr.kernel_rings
+    assert pr.load_args()[-1] is pr.model
