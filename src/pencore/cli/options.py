@@ -3,7 +3,10 @@ argument types that check a value against :data:`pencore.inputs.limits.LIMITS`, 
 depth-window options, and the checks of names, files and the output path.
 
 Every user error becomes one line on stderr and exit status 2 (1 for a failure to
-write); the argument types name the value and what is allowed.
+write); the argument types name the value and what is allowed. SI units throughout
+(m, m/s, rad/s), angles in degrees, window depths in calibers (projectile diameters).
+This module imports no solver code, so the parser builds without loading numba or
+xarray.
 """
 
 from __future__ import annotations
@@ -41,7 +44,16 @@ PROG = "pencore"
 
 
 class CommandFailure(Exception):
-    """An error to report as one line with a given exit status (``.status``)."""
+    """An error that :func:`pencore.cli.main.main` reports as one line and an exit status.
+
+    Parameters
+    ----------
+    message : str
+        The message, printed as ``pencore: error: <message>`` (whitespace runs made one
+        space).
+    status : int
+        The exit status: 2 for bad input, 1 for a failure to write.
+    """
 
     def __init__(self, message: str, status: int) -> None:
         super().__init__(message)
@@ -49,21 +61,52 @@ class CommandFailure(Exception):
 
 
 class Parser(argparse.ArgumentParser):
-    """ArgumentParser whose errors are one line: ``pencore: error: ...``."""
+    """An :class:`argparse.ArgumentParser` whose usage errors are one line.
+
+    ``error`` prints ``pencore: error: <message> (see '<prog> --help')`` on stderr and
+    exits with status 2, instead of argparse's usage block.
+    """
 
     def error(self, message: str) -> NoReturn:
         self.exit(2, f"{PROG}: error: {one_line(message)} (see '{self.prog} --help')\n")
 
 
 def one_line(text: str) -> str:
-    """``text`` with every run of whitespace (newlines included) made one space."""
+    """Collapse ``text`` to one line.
+
+    Parameters
+    ----------
+    text : str
+        Any message (converted with :class:`str`).
+
+    Returns
+    -------
+    str
+        ``text`` with every run of whitespace (newlines included) made one space.
+    """
     return " ".join(str(text).split())
 
 
 def number_type(key: str, ok: Callable[[float], bool] = lambda v: True, allowed: str = "") -> Any:
-    """An argparse type: a float within ``pencore.inputs.limits.LIMITS[key]`` for which ``ok``
-    holds (a narrower range the CLI promises: ``allowed``), else an error naming the
-    value and what is allowed."""
+    """Make an argparse ``type=`` for a number checked against the package's limits.
+
+    Parameters
+    ----------
+    key : str
+        Key into :data:`pencore.inputs.limits.LIMITS`, which gives the unit (m/s, deg,
+        rad/s, m, calibers) and the allowed range, e.g. ``"velocity"``, ``"yaw"``.
+    ok : callable, optional
+        A narrower condition the command line promises, on the value in the unit of
+        ``key``; checked only when ``allowed`` is given. Default: always true.
+    allowed : str, optional
+        Words for ``ok``, used in the error (``"a number of degrees in [0, 90)"``).
+
+    Returns
+    -------
+    callable
+        ``conv(text) -> float``: the value in the unit of ``key``; raises
+        :class:`argparse.ArgumentTypeError` naming ``text`` and what is allowed.
+    """
 
     def conv(text: str) -> float:
         try:
@@ -80,12 +123,33 @@ def number_type(key: str, ok: Callable[[float], bool] = lambda v: True, allowed:
     return conv
 
 
+#: argparse type: a speed in m/s, > 0, up to the 10 km/s guard of ``LIMITS["velocity"]``.
 velocity = number_type("velocity")
+#: argparse type: an obliquity in deg, 0 <= DEG < 90.
 obliquity = number_type("obliquity", lambda v: 0.0 <= v < 90.0, "a number of degrees in [0, 90)")
 
 
 def numerics_option(text: str) -> tuple[str, Any]:
-    """``KEY=VALUE`` for ``--numerics``; the value is read as a YAML scalar."""
+    """Parse one ``--numerics KEY=VALUE`` (an argparse ``type=``).
+
+    Parameters
+    ----------
+    text : str
+        ``KEY=VALUE``, e.g. ``rtol=1e-6``, ``t_max=2`` (s), ``method=Radau``. The value is
+        read as a YAML scalar; text that reads as a number (YAML leaves ``1e-6`` a
+        string) becomes a float. Keys and ranges are checked later, by
+        :func:`pencore.inputs.numerics.resolve_numerics`.
+
+    Returns
+    -------
+    tuple of (str, Any)
+        The key (stripped) and the value, in the unit of the key.
+
+    Raises
+    ------
+    argparse.ArgumentTypeError
+        When ``text`` has no ``=`` or an empty key.
+    """
     key, sep, value = text.partition("=")
     if not sep or not key:
         raise argparse.ArgumentTypeError(f"must be KEY=VALUE (e.g. rtol=1e-6), got {text!r}")
@@ -104,7 +168,15 @@ def numerics_option(text: str) -> tuple[str, Any]:
 
 
 def add_window_options(p: argparse.ArgumentParser) -> None:
-    """``--crater-depth`` and ``--free-surface-depth`` (calibers), set on every medium."""
+    """Add ``--crater-depth K`` and ``--free-surface-depth K`` to a subcommand.
+
+    Parameters
+    ----------
+    p : argparse.ArgumentParser
+        The subcommand's parser. Both options are depths in calibers (projectile
+        diameters), default ``None`` (each medium keeps its own); see
+        :func:`with_windows`.
+    """
     p.add_argument(
         "--crater-depth",
         type=number_type("crater_depth"),
@@ -126,15 +198,50 @@ def add_window_options(p: argparse.ArgumentParser) -> None:
 
 
 def with_windows(target: Any, args: argparse.Namespace) -> Any:
-    """``target`` with the ``--crater-depth`` / ``--free-surface-depth`` of ``args`` (in
-    calibers) set on every medium, or ``target`` itself when neither was given."""
+    """Apply the depth-window options to a target.
+
+    Parameters
+    ----------
+    target : pencore.inputs.target.Target
+        The resolved target.
+    args : argparse.Namespace
+        Parsed arguments with ``crater_depth`` and ``free_surface_depth`` (calibers, or
+        ``None``), as added by :func:`add_window_options`.
+
+    Returns
+    -------
+    pencore.inputs.target.Target
+        ``target`` with both windows set on every medium, or ``target`` itself when
+        neither option was given.
+    """
     if args.crater_depth is None and args.free_surface_depth is None:
         return target
     return target.with_windows(args.crater_depth, args.free_surface_depth)
 
 
 def check_output(out: str) -> Path:
-    """Check that ``out`` can be written, before any computation."""
+    """Check that ``out`` can be written, before any computation.
+
+    A temporary file is created and removed in the output directory (``os.access`` is
+    fooled by root, read-only mounts and ACLs).
+
+    Parameters
+    ----------
+    out : str
+        The ``--out`` path; must end in ``.nc``, not be a directory, and lie in an
+        existing, writable directory.
+
+    Returns
+    -------
+    pathlib.Path
+        ``out`` as a path.
+
+    Raises
+    ------
+    CommandFailure
+        Status 2 naming the path and the problem; status 1 when the disk or quota is
+        full.
+    """
     path = Path(out)
     if path.suffix != ".nc":
         raise CommandFailure(f"output file {out!r} must end in .nc", 2)
@@ -161,12 +268,46 @@ def check_output(out: str) -> Path:
 
 
 def cli_inputs(args: argparse.Namespace) -> dict[str, Any]:
-    """The command-line arguments that made a run, for the file's provenance."""
+    """The command-line arguments that made a run, for the output file's provenance.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        Parsed arguments (values in the units of their options).
+
+    Returns
+    -------
+    dict of str to Any
+        Every argument except the dispatch keys ``func`` and ``command``.
+    """
     return {k: v for k, v in vars(args).items() if k not in ("func", "command")}
 
 
 def resolve(kind: str, spec: str, getter: Callable[[str], Any]) -> Any:
-    """Resolve a name or YAML file; every failure becomes an :class:`InputError`."""
+    """Resolve a library name or a YAML file into a projectile or target.
+
+    Parameters
+    ----------
+    kind : str
+        ``"projectile"`` or ``"target"``, for the messages; a projectile's mass
+        properties are computed at once, so a body without volume fails here, before
+        the run.
+    spec : str
+        A library name (see ``pencore list``) or the path of a YAML file (SI units).
+    getter : callable
+        :func:`pencore.inputs.library.get_projectile` or ``get_target``.
+
+    Returns
+    -------
+    Any
+        What ``getter`` returns.
+
+    Raises
+    ------
+    pencore.errors.InputError
+        For every failure (unknown name, missing or non-UTF-8 file, invalid YAML or
+        values), one line naming ``spec``.
+    """
     try:
         obj = getter(spec)
         if kind == "projectile":
