@@ -176,10 +176,8 @@ def test_explicit_needs_no_adaptive_method():
         pencore.simulate("p2", "soil", 300.0, emulation={"integrator": "explicit"}, method="BDF")
 
 
-def test_readme_states_the_model_ranges():
+def test_docs_state_the_model_ranges():
     from pathlib import Path
 
-    from pencore.inputs.limits import limits_markdown
-
-    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
-    assert limits_markdown("models") in readme
+    page = (Path(__file__).resolve().parents[2] / "docs/user-guide/inputs.md").read_text()
+    assert "```{include} ../_generated/limits_models.md" in page

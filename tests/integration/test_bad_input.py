@@ -385,9 +385,9 @@ def test_results_grow_instead_of_being_preallocated():
     assert np.isfinite(ds.cm_y.values).all()
 
 
-def test_readme_states_the_ranges_the_code_checks():
-    """The README's table of valid ranges is the one pencore.inputs.limits enforces."""
-    from pencore.inputs.limits import limits_markdown
-
-    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
-    assert limits_markdown() in readme
+def test_docs_state_the_ranges_the_code_checks():
+    """The docs' table of valid ranges is generated from the limits the code enforces."""
+    page = (Path(__file__).resolve().parents[2] / "docs/user-guide/inputs.md").read_text()
+    assert "```{include} ../_generated/limits.md" in page
+    generator = (Path(__file__).resolve().parents[2] / "docs/_ext/pencore_docs.py").read_text()
+    assert '"limits.md": limits_table' in generator and "limits_markdown(group)" in generator

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-#: Default noise threshold of :func:`inflection_points`, relative to the peak |curvature|.
+#: Default noise threshold of :func:`inflection_points`, relative to the peak abs(curvature).
 #: A sign change counts only when the curvature reaches this fraction of its peak on both
 #: sides. Saved solver states are accurate to about ``rtol`` (1e-6); differencing them
 #: twice on the adaptive grid leaves curvature noise around 1e-10 of the peak on straight
@@ -24,13 +24,13 @@ import xarray as xr
 #: inflections of the turning part, whose lobes are several percent of the peak or more.
 DEFAULT_REL_THRESHOLD = 1e-2
 
-#: Default fraction of the peak |curvature| that marks Points 1 and 2 of Eq. 12.
+#: Default fraction of the peak abs(curvature) that marks Points 1 and 2 of Eq. 12.
 DEFAULT_BRACKET_FRACTION = 0.05
 
 #: Default fraction of the impact speed below which the end of a run is not analysed.
 DEFAULT_SPEED_FRACTION = 0.1
 
-#: A path whose peak |curvature| times its chord length is below this is straight.
+#: A path whose peak abs(curvature) times its chord length is below this is straight.
 STRAIGHT_TOL = 1e-9
 
 
@@ -207,9 +207,9 @@ class Inflections:
     direction : (k,) int ndarray
         +1 where the curvature goes from negative to positive, -1 the other way.
     peak : float
-        Peak |curvature| (1/m) over the samples considered.
+        Peak abs(curvature) (1/m) over the samples considered.
     threshold : float
-        |curvature| (1/m) that a lobe had to exceed to count.
+        abs(curvature) (1/m) that a lobe had to exceed to count.
     """
 
     index: np.ndarray
@@ -266,11 +266,11 @@ def inflection_points(
     t : (n,) array_like, optional
         Time (s), strictly increasing, possibly non-uniform; default chord length.
     rel_threshold : float
-        Noise threshold relative to the peak |curvature| (default
+        Noise threshold relative to the peak abs(curvature) (default
         :data:`DEFAULT_REL_THRESHOLD` = 1e-2): a sign change counts only when the
         curvature exceeds ``rel_threshold * peak`` on both sides of it, so wiggles below
         that level (differencing noise, exit or stop transients) are ignored. A path whose
-        peak |curvature| times its chord length is below :data:`STRAIGHT_TOL` is straight
+        peak abs(curvature) times its chord length is below :data:`STRAIGHT_TOL` is straight
         and has none.
     vx, vy : (n,) array_like, optional
         Exact ``dx/dt``, ``dy/dt`` (m/s) if known; needs ``t``.

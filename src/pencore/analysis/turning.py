@@ -159,14 +159,14 @@ def turning_angle_arrays(
         i1, i2 = int(above[0]), int(above[-1])
         if i1 == 0:
             return fail(
-                f"|curvature| is already >= {fraction:g} of its peak at the first sample: "
+                f"abs(curvature) is already >= {fraction:g} of its peak at the first sample: "
                 "no straight approach, so Point 1 is not in the record"
             )
         w1 = (thr - a[i1 - 1]) / (a[i1] - a[i1 - 1])
         p1 = point(i1 - 1, float(w1))
         if i2 == a.size - 1:
             return fail(
-                f"|curvature| is still >= {fraction:g} of its peak at the last sample "
+                f"abs(curvature) is still >= {fraction:g} of its peak at the last sample "
                 f"analysed (speed >= {speed_fraction:g} x impact speed): the curved part "
                 "does not end, so Point 2 is not in the record",
                 theta_1=p1["theta"],
@@ -211,7 +211,7 @@ def turning_angle(
     ``method="bracket"`` (default)
         The paper's Points 1 and 2 (``d2y/dx2 = 0``, Fig. 7b) bracket the curved part of
         the path: straight before entry, curved, straight again. Point 1 is where
-        |curvature| first rises through ``fraction`` (default 0.05) of its peak, Point 2
+        abs(curvature) first rises through ``fraction`` (default 0.05) of its peak, Point 2
         where it last falls through it; both crossings are interpolated linearly between
         samples. NaN when the path is straight, when it is already curved at the first
         sample, or when it is still curved at the last sample analysed (the run stopped
@@ -231,7 +231,7 @@ def turning_angle(
         ``impact_speed``.
     method : {"bracket", "sign_change"}
     fraction : float
-        Fraction of the peak |curvature| that marks Points 1 and 2 (bracket method).
+        Fraction of the peak abs(curvature) that marks Points 1 and 2 (bracket method).
     speed_fraction : float
         Part of the run analysed, as a fraction of the impact speed (default 0.1).
     rel_threshold : float

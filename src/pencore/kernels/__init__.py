@@ -2,22 +2,22 @@
 velocity Jacobian, the rigid-body right-hand side, and the state helpers the
 integrators inline.
 
-=================  ==============================================================
-module             contents
-=================  ==============================================================
-``windows``        depth windows of the contact stress (crater, free surface)
-``bands``          what the band a surface ring stands for spans
-``arcs``           arc sets on a ring and closed-form integrals over them
-``friction``       Coulomb friction on the loaded arcs of a ring
-``wholering``      normal-stress integrals of whole immersed rings, all at once
-``dynamics``       contact force and moment (paper Eqs 5-11), rigid-body equations
-``contact_points`` point loads (panels, shank ring points), the nose-tip path
-``panels``         the point-load surfaces (built once per problem, not compiled)
-``forces``         the right-hand side with a selectable shank model and surface
-``jacobian``       closed-form velocity Jacobian of the ring loads
-``state``          outcome codes, stopping test, LU solve, quaternion helpers
-``cache``          the guard that drops stale compiled code (runs on import)
-=================  ==============================================================
+==================  ==============================================================
+module              contents
+==================  ==============================================================
+``windows``         depth windows of the contact stress (crater, free surface)
+``bands``           what the band a surface ring stands for spans
+``arcs``            arc sets on a ring and closed-form integrals over them
+``friction``        Coulomb friction on the loaded arcs of a ring
+``wholering``       normal-stress integrals of whole immersed rings, all at once
+``dynamics``        contact force and moment (paper Eqs 5-11), rigid-body equations
+``contact_points``  point loads (panels, shank ring points), the nose-tip path
+``panels``          the point-load surfaces (built once per problem, not compiled)
+``forces``          the right-hand side with a selectable shank model and surface
+``jacobian``        closed-form velocity Jacobian of the ring loads
+``state``           outcome codes, stopping test, LU solve, quaternion helpers
+``cache``           the guard that drops stale compiled code (runs on import)
+==================  ==============================================================
 
 Compile-time habit: a value passed to another compiled function is never a literal
 constant (counters start as ``np.int64(0)``, flags are run-time booleans), because numba

@@ -32,18 +32,26 @@ The quantities (projectile #2 in soil unless stated; paper values in :data:`PAPE
 
 The choices (keys of the dict; all optional):
 
-``shank``        :class:`pencore.inputs.models.ShankModel` or its mapping / name (default DAFL);
-``emulation``    :class:`pencore.inputs.models.Emulation` or its mapping (default: none);
-``numerics``     mapping of :class:`pencore.Numerics` overrides (e.g. a coarse mesh);
-``start_height`` tip height (m) above the surface at t = 0 for the normal impacts;
-``spin_about``   ``"cm"`` (the paper: "about the centre of mass") or ``"tip"``;
-``reversal``     what "turns back" means: ``"turns_back"`` (default: the centre-of-mass
-                 velocity turns towards the surface while in the target) or ``"exits"``
-                 (the body comes back out of the target, the paper's words for Fig. 7
-                 read literally); applies to ``vcr`` and ``turned_back``
-``yaw_reading``  ``"axis_tilted"`` or ``"velocity_tilted"``
-                 (:func:`pencore.inputs.conventions.normal_impact_angles`);
-``friction``     constant Coulomb coefficient of the soil (the paper: frictionless).
+``shank``
+    :class:`pencore.inputs.models.ShankModel` or its mapping / name (default DAFL);
+``emulation``
+    :class:`pencore.inputs.models.Emulation` or its mapping (default: none);
+``numerics``
+    mapping of :class:`pencore.Numerics` overrides (e.g. a coarse mesh);
+``start_height``
+    tip height (m) above the surface at t = 0 for the normal impacts;
+``spin_about``
+    ``"cm"`` (the paper: "about the centre of mass") or ``"tip"``;
+``reversal``
+    what "turns back" means: ``"turns_back"`` (default: the centre-of-mass velocity
+    turns towards the surface while in the target) or ``"exits"`` (the body comes back
+    out of the target, the paper's words for Fig. 7 read literally); applies to ``vcr``
+    and ``turned_back``
+``yaw_reading``
+    ``"axis_tilted"`` or ``"velocity_tilted"``
+    (:func:`pencore.inputs.conventions.normal_impact_angles`);
+``friction``
+    constant Coulomb coefficient of the soil (the paper: frictionless).
 """
 
 from __future__ import annotations

@@ -4,15 +4,15 @@ chunks that are separate jobs, gathered with outcome probabilities and distribut
 An ensemble *case* names a projectile and a target, ``n_samples``, ``n_chunks``, a
 ``seed``, and a distribution for each impact variable (config units at the edge):
 
-================  =========  ==========================================================
-key               units      meaning (as in :func:`pencore.simulate`)
-================  =========  ==========================================================
-``velocity_m_s``  m/s        impact speed
-``obliquity_deg`` degree     angle of the projectile axis from the target normal
-``yaw_deg``       degree     velocity angle minus axis angle
-``omega_rad_s``   rad/s      initial angular velocity about the in-plane normal
-``azimuth_deg``   degree     rotation of the whole impact about the target normal
-================  =========  ==========================================================
+=================  =========  ==========================================================
+key                units      meaning (as in :func:`pencore.simulate`)
+=================  =========  ==========================================================
+``velocity_m_s``   m/s        impact speed
+``obliquity_deg``  degree     angle of the projectile axis from the target normal
+``yaw_deg``        degree     velocity angle minus axis angle
+``omega_rad_s``    rad/s      initial angular velocity about the in-plane normal
+``azimuth_deg``    degree     rotation of the whole impact about the target normal
+=================  =========  ==========================================================
 
 A distribution is ``{dist: fixed, value}``, ``{dist: uniform, min, max}`` or
 ``{dist: normal, mean, sd}`` with optional ``min`` / ``max`` (a truncated normal, drawn by

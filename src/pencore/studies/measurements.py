@@ -184,7 +184,7 @@ def error_statistics(measured: Sequence[float], predicted: Sequence[float]) -> d
 
     Returns ``n`` (rows), ``n_relative`` (rows with a measured value > 0, the only ones
     with a relative error: a measured residual velocity of 0 m/s is a shot that did not
-    perforate), ``mean_abs_error`` (mean |predicted - measured|, in the measured units),
+    perforate), ``mean_abs_error`` (mean abs(predicted - measured), in the measured units),
     and over the relative errors ``e = predicted / measured - 1`` (dimensionless):
     ``mean_rel_error``, ``rms_rel_error``, ``max_abs_rel_error`` and the 95 % Student-t
     interval of the mean (``ci95_lo``, ``ci95_hi``; NaN for fewer than two values).

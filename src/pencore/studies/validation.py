@@ -308,8 +308,9 @@ def fig5(
         title="Paper Fig. 5: penetration depth against impact velocity, concrete and "
         "aluminium targets",
         n_experiments=len(e_case),
-        note="Projectiles are 'assumed' (paper guide) until the published geometry and "
-        "points are supplied; experimental points come from the experiments CSV.",
+        note="Projectiles are assumed (the paper's text does not give them) until the "
+        "published geometry and points are supplied; experimental points come from the "
+        "experiments CSV.",
     )
     return ds
 

@@ -1,0 +1,129 @@
+"""Open the built docs site and the workflow report in a real headless browser.
+
+Serves each directory over HTTP on localhost, opens every page of the site (the API
+reference's per-module pages excepted: one of them is opened as a sample) and the report in
+Debian's chromium through chromedriver (selenium), and fails if a page has
+
+* an image that did not load (``naturalWidth == 0`` once the page is complete), or
+* a script error or failed request in the browser's console (level SEVERE).
+
+Keeps a screenshot of the site's front page and of the report (``--screenshots DIR``).
+
+Usage: python .ci/browser_check.py --site docs/_build/html [--report results/report.html]
+       [--screenshots ci-artifacts]
+Exits 1 listing every problem, 0 if none.
+"""
+
+from __future__ import annotations
+
+import argparse
+import functools
+import http.server
+import threading
+import time
+from contextlib import contextmanager
+from pathlib import Path
+
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+
+CHROMIUM = "/usr/bin/chromium"
+CHROMEDRIVER = "/usr/bin/chromedriver"
+
+#: JavaScript: the images of the page that have not loaded.
+BROKEN_IMAGES = """
+return Array.from(document.images)
+    .filter(img => img.complete && img.naturalWidth === 0 && img.src)
+    .map(img => img.src);
+"""
+
+
+@contextmanager
+def serve(root: Path):
+    """An HTTP server on a free localhost port serving ``root``; yields its base URL."""
+
+    class Quiet(http.server.SimpleHTTPRequestHandler):
+        def log_message(self, *args: object) -> None:
+            pass
+
+    server = http.server.ThreadingHTTPServer(
+        ("127.0.0.1", 0), functools.partial(Quiet, directory=str(root))
+    )
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        yield f"http://127.0.0.1:{server.server_address[1]}"
+    finally:
+        server.shutdown()
+
+
+def browser() -> webdriver.Chrome:
+    options = webdriver.ChromeOptions()
+    options.binary_location = CHROMIUM
+    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,1000"):
+        options.add_argument(arg)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    return webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+
+
+def check_page(driver: webdriver.Chrome, url: str) -> list[str]:
+    """Problems of one page: broken images and console errors."""
+    driver.get(url)
+    deadline = time.monotonic() + 20
+    while driver.execute_script("return document.readyState") != "complete":
+        if time.monotonic() > deadline:
+            return [f"{url}: did not finish loading in 20 s"]
+        time.sleep(0.05)
+    problems = [f"{url}: image did not load: {src}" for src in driver.execute_script(BROKEN_IMAGES)]
+    for entry in driver.get_log("browser"):
+        if entry["level"] == "SEVERE":
+            problems.append(f"{url}: console error: {entry['message']}")
+    return problems
+
+
+def site_pages(site: Path) -> list[str]:
+    pages = sorted(p.relative_to(site).as_posix() for p in site.rglob("*.html"))
+    api = [p for p in pages if p.startswith("api/generated/")]
+    # every page, but of the per-module API pages only the first (they share one template)
+    return [p for p in pages if not p.startswith(("api/generated/", "_"))] + api[:1]
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--site", type=Path, required=True, help="the built HTML site")
+    parser.add_argument("--report", type=Path, help="the workflow's HTML report")
+    parser.add_argument("--screenshots", type=Path, default=Path("ci-artifacts"))
+    args = parser.parse_args(argv)
+    args.screenshots.mkdir(parents=True, exist_ok=True)
+    problems: list[str] = []
+    driver = browser()
+    try:
+        with serve(args.site) as base:
+            pages = site_pages(args.site)
+            for page in pages:
+                problems += check_page(driver, f"{base}/{page}")
+            driver.get(f"{base}/index.html")
+            driver.save_screenshot(str(args.screenshots / "docs-front-page.png"))
+            print(f"browser check: {len(pages)} pages of {args.site}")
+        if args.report:
+            with serve(args.report.parent) as base:
+                url = f"{base}/{args.report.name}"
+                problems += check_page(driver, url)
+                time.sleep(1.0)  # the report renders its panels after loading
+                problems += [
+                    f"{url}: console error: {e['message']}"
+                    for e in driver.get_log("browser")
+                    if e["level"] == "SEVERE"
+                ]
+                driver.save_screenshot(str(args.screenshots / "report.png"))
+                print(f"browser check: {args.report}")
+    finally:
+        driver.quit()
+    for problem in problems:
+        print(problem)
+    print(f"browser check: {len(problems)} problem(s); screenshots in {args.screenshots}/")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,468 @@
+"""Tables and numbers of the documentation, generated from the files that hold them.
+
+No number in the docs or the README is typed by hand where a file holds it: the pages
+include the Markdown this module writes to ``docs/_generated/`` at every build (a Sphinx
+extension, :func:`setup`), and the prose takes single numbers through MyST substitutions
+(``{{ vcr_p2_45 }}``, :func:`numbers`). The README's generated blocks come from the same
+functions (``python docs/_ext/pencore_docs.py --readme`` rewrites them;
+``tests/docs/test_generated.py`` fails when they are stale).
+
+Sources: ``results/archive/paper_comparison.csv`` (the archived comparison with the paper),
+``config/paper_claims.csv``, ``benchmarks/results/*.csv``, :data:`pencore.inputs.limits.LIMITS`,
+the workflow's configuration schema, and a run of the solver (the Dataset's variables).
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import subprocess
+import sys
+from collections.abc import Callable
+from pathlib import Path
+
+import pandas as pd
+
+REPO = Path(__file__).resolve().parents[2]
+GENERATED = REPO / "docs" / "_generated"
+COMPARISON = REPO / "results" / "archive" / "paper_comparison.csv"
+BENCH = REPO / "benchmarks" / "results"
+
+#: The README's headline rows: (quantity in the comparison table, short label[, the key of
+#: :func:`pencore.paper.claims.paper_values` when the paper gives a bracket, not a value]).
+HEADLINE = (
+    (
+        "Table 2 test 2: penetration depth (V=280 m/s, obliquity 0 deg, yaw 0 deg)",
+        "depth of #2 in soil, 280 m/s, normal (Table 2)",
+    ),
+    ("Vcr of #2 at 45 deg obliquity (Fig. 7)", "Vcr of #2 at 45 deg (Fig. 7)", "vcr_p2_45_bracket"),
+    (
+        "Fig. 13: deviation phi of #4, yaw 0.1 deg, Vi = 1000 m/s, axis_tilted (configured)",
+        "deviation of #4, yaw 0.1 deg, 1000 m/s (Fig. 13)",
+    ),
+    (
+        "Fig. 16: deviation alpha of #2, 1000 m/s, omega = 20 rad/s",
+        "deviation of #2 spun at 20 rad/s, 1000 m/s (Fig. 16)",
+    ),
+    (
+        "omega_c of #2 at 1000 m/s (Figs 16-17)",
+        "omega_c of #2 at 1000 m/s (Figs 16-17)",
+        "omega_c_p2_1000_bracket",
+    ),
+)
+
+UNIT_TEXT = {"m s-1": "m/s", "rad s-1": "rad/s", "degree": "deg", "1": "", "kg": "kg", "m": "m"}
+
+
+def _fmt(value: object, digits: int = 4) -> str:
+    """A number with ``digits`` significant digits, a boolean as yes/no, text as it is."""
+    if isinstance(value, bool) or str(value) in ("True", "False"):
+        return "yes" if str(value) == "True" else "no"
+    try:
+        x = float(value)  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        return str(value)
+    if x != x:  # NaN
+        return ""
+    return f"{x:.{digits}g}"
+
+
+def comparison() -> pd.DataFrame:
+    """The archived comparison with the paper (``results/archive/paper_comparison.csv``)."""
+    return pd.read_csv(COMPARISON, dtype=str, keep_default_na=False)
+
+
+def _row(table: pd.DataFrame, quantity: str) -> pd.Series:
+    hit = table[table["quantity"] == quantity]
+    if len(hit) != 1:
+        raise KeyError(f"{quantity!r} is not one row of {COMPARISON.name}")
+    return hit.iloc[0]
+
+
+def _relative(row: pd.Series) -> str:
+    try:
+        p, q = float(row["paper_value"]), float(row["pencore_value"])
+    except ValueError:
+        return row["difference"]
+    return f"{100 * (q - p) / p:+.1f} %"
+
+
+def headline_table() -> str:
+    """The README's five-row table of pencore against the paper."""
+    from pencore.paper.claims import paper_values
+
+    paper_of = paper_values()
+    table = comparison()
+    lines = ["| quantity | paper | pencore | difference |", "|---|---|---|---|"]
+    for quantity, label, *bracket in HEADLINE:
+        row = _row(table, quantity)
+        unit = UNIT_TEXT.get(row["units"], row["units"])
+        paper = f"{_fmt(row['paper_value'])} {unit}".strip()
+        if bracket:
+            lo, hi = paper_of[bracket[0]]
+            paper = f"{_fmt(lo)} to {_fmt(hi)} {unit}"
+        ours = f"{_fmt(row['pencore_value'], 5)} {unit}".strip()
+        diff = _relative(row) if re.match(r"^[+-]?\d", ours) else "differs"
+        if bracket and diff != "differs":
+            diff += " (from the midpoint)"
+        lines.append(f"| {label} | {paper} | {ours} | {diff} |")
+    return "\n".join(lines)
+
+
+def comparison_counts() -> str:
+    """One sentence counting the verdicts and trends of the comparison table."""
+    table = comparison()
+    verdicts = table[table["kind"] == "verdict"]["difference"].value_counts()
+    trends = table[table["kind"] == "trend"]["pencore_value"].value_counts()
+    return (
+        f"Of the paper's {len(table[table['kind'] == 'trend'])} trends, "
+        f"{trends.get('holds', 0)} hold and {trends.get('partly holds', 0)} partly hold; "
+        f"of its {len(table[table['kind'] == 'verdict'])} yes/no statements, "
+        f"{verdicts.get('agrees', 0)} agree and {verdicts.get('differs', 0)} differ."
+    )
+
+
+def comparison_table() -> str:
+    """Every row of the archived comparison, as the docs' results page shows it."""
+    table = comparison()
+    lines = [
+        "| quantity | paper | pencore | difference | units | note |",
+        "|---|---|---|---|---|---|",
+    ]
+    for _, row in table.iterrows():
+        cells = [
+            row["quantity"],
+            _fmt(row["paper_value"], 5),
+            _fmt(row["pencore_value"], 6),
+            _fmt(row["difference"], 3) if row["kind"] == "value" else row["difference"],
+            UNIT_TEXT.get(row["units"], row["units"]),
+            row["note"],
+        ]
+        lines.append("| " + " | ".join(c.replace("|", "/") for c in cells) + " |")
+    return "\n".join(lines)
+
+
+def limits_table(group: str = "core") -> str:
+    """Valid ranges of every input (:func:`pencore.inputs.limits.limits_markdown`)."""
+    from pencore.inputs.limits import limits_markdown
+
+    return limits_markdown(group)
+
+
+def speed_table() -> str:
+    """The current speed figures (``benchmarks/speed_summary.py --markdown``)."""
+    out = subprocess.run(
+        [sys.executable, str(REPO / "benchmarks" / "speed_summary.py"), "--markdown"],
+        check=True,
+        capture_output=True,
+        text=True,
+        cwd=REPO,
+    )
+    return out.stdout.strip()
+
+
+def _csv_table(path: Path, columns: dict[str, str], digits: int = 5) -> str:
+    frame = pd.read_csv(path)
+    lines = ["| " + " | ".join(columns.values()) + " |", "|" + "---|" * len(columns)]
+    for _, row in frame.iterrows():
+        lines.append("| " + " | ".join(_fmt(row[c], digits) for c in columns) + " |")
+    return "\n".join(lines)
+
+
+def convergence_table() -> str:
+    """Each numerical parameter varied alone (``benchmarks/results/convergence.csv``)."""
+    return _csv_table(
+        BENCH / "convergence.csv",
+        {
+            "parameter": "parameter",
+            "value": "value",
+            "depth_280": "depth #2, 280 m/s (m)",
+            "depth_280_vs_exact": "vs exact 1-D (m)",
+            "path_45_1000": "path #2, 45 deg, 1000 m/s (m)",
+            "turn_45_1000": "turning angle (deg)",
+            "dev_p4_1000": "deviation #4, yaw 0.1 deg (deg)",
+            "vcr_p2_45": "Vcr #2, 45 deg (m/s)",
+        },
+        6,
+    )
+
+
+def emulation_table() -> str:
+    """Convergence of the paper-emulation numerics (``emulation_convergence.csv``)."""
+    return _csv_table(
+        BENCH / "emulation_convergence.csv",
+        {
+            "sweep": "sweep",
+            "setting": "setting",
+            "reference": "reference",
+            "err_depth": "depth error (rel.)",
+            "err_path": "path error (rel.)",
+            "err_dev_deg": "deviation error (deg)",
+            "err_depth_280": "depth 280 m/s error (rel.)",
+            "steps": "steps",
+        },
+        3,
+    )
+
+
+def attribution_table() -> str:
+    """Each attribution setting's disputed numbers (``benchmarks/results/attribution.csv``)."""
+    from pencore.paper.claims import paper_values
+
+    paper = paper_values()
+    lo, hi = paper["vcr_p2_45_bracket"]
+    alpha = paper["fig16_alpha_deg"]
+    phi = paper["fig13_phi_deg"]
+    depth = comparison()
+    depth_280 = _row(
+        depth, "Table 2 test 2: penetration depth (V=280 m/s, obliquity 0 deg, yaw 0 deg)"
+    )["paper_value"]
+    header = {
+        "setting": "setting",
+        "alpha_5": f"alpha 5 rad/s (paper {_fmt(alpha[5.0])} deg)",
+        "alpha_20": f"alpha 20 rad/s (paper {_fmt(alpha[20.0])} deg)",
+        "back_25": "turns back at 25 rad/s (paper: yes)",
+        "vcr": f"Vcr (paper {_fmt(lo)}-{_fmt(hi)} m/s)",
+        "depth_280": f"depth 280 m/s (paper {depth_280} m)",
+        "phi_p4_280": f"phi #4 280 m/s (paper {_fmt(phi[280.0])} deg)",
+        "phi_p4_1000": f"phi #4 1000 m/s (paper {_fmt(phi[1000.0])} deg)",
+        "within_3pct_all": "all within 3 %",
+    }
+    return _csv_table(BENCH / "attribution.csv", header, 4)
+
+
+def dataset_table() -> str:
+    """Every variable and coordinate of a trajectory Dataset, with units and meaning."""
+    import pencore
+
+    ds = pencore.simulate("p2", "soil", 280.0)
+    lines = ["| name | dims | units | meaning |", "|---|---|---|---|"]
+    for name in list(ds.coords) + list(ds.data_vars):
+        var = ds[name]
+        dims = ", ".join(var.dims) or "(scalar)"
+        unit = var.attrs.get("units", "")
+        meaning = var.attrs.get("long_name", "")
+        lines.append(f"| `{name}` | {dims} | {unit} | {meaning} |")
+    return "\n".join(lines)
+
+
+def dataset_attrs_table() -> str:
+    """The run-level attributes of a trajectory Dataset."""
+    import pencore
+
+    ds = pencore.simulate("p2", "soil", 280.0)
+    lines = ["| attribute | example (p2, soil, 280 m/s) |", "|---|---|"]
+    for key, value in ds.attrs.items():
+        text = str(value).replace("|", "/").replace("\n", " ")
+        if len(text) > 80:
+            text = text[:77] + "..."
+        lines.append(f"| `{key}` | {text} |")
+    return "\n".join(lines)
+
+
+def numbers() -> dict[str, str]:
+    """Single numbers for the prose (MyST substitutions), each read from its file."""
+    table = comparison()
+    out: dict[str, str] = {}
+
+    def value(quantity: str, digits: int = 5) -> str:
+        return _fmt(_row(table, quantity)["pencore_value"], digits)
+
+    out["vcr_p2_45"] = value("Vcr of #2 at 45 deg obliquity (Fig. 7)", 6)
+    out["vcr_p2_45_paper"] = _fmt(
+        _row(table, "Vcr of #2 at 45 deg obliquity (Fig. 7)")["paper_value"], 5
+    )
+    out["depth_t2"] = value(
+        "Table 2 test 2: penetration depth (V=280 m/s, obliquity 0 deg, yaw 0 deg)", 4
+    )
+    out["depth_t2_paper"] = _fmt(
+        _row(table, "Table 2 test 2: penetration depth (V=280 m/s, obliquity 0 deg, yaw 0 deg)")[
+            "paper_value"
+        ]
+    )
+    out["table2_offset"] = _relative(
+        _row(table, "Table 2 test 2: penetration depth (V=280 m/s, obliquity 0 deg, yaw 0 deg)")
+    )
+    out["alpha_20"] = value("Fig. 16: deviation alpha of #2, 1000 m/s, omega = 20 rad/s", 3)
+    out["alpha_20_paper"] = _fmt(
+        _row(table, "Fig. 16: deviation alpha of #2, 1000 m/s, omega = 20 rad/s")["paper_value"]
+    )
+    speed = pd.read_csv(BENCH / "speed.csv").set_index("figure")["value"]
+    out["trajectory_ms"] = _fmt(speed["trajectory"], 3)
+    out["reproduction_wall_s"] = _fmt(speed["reproduction_wall"], 2)
+    compile_ = pd.read_csv(BENCH / "compile.csv").set_index("case")["cpu_s"]
+    out["warmup_s"] = _fmt(compile_["warmup"], 2)
+    out["comparison_counts"] = comparison_counts()
+    from pencore import analysis
+
+    out["deviation_speed_percent"] = _fmt(100 * analysis.DEFAULT_SPEED_FRACTION)
+    out["turning_bracket_percent"] = _fmt(100 * analysis.DEFAULT_BRACKET_FRACTION)
+    import json
+
+    import yaml
+
+    repro = json.loads((BENCH / "reproduction.json").read_text())
+    cases = yaml.safe_load((REPO / "config" / "config.yaml").read_text())["ensemble"]["cases"]
+    n = sum(int(c["n_samples"]) for c in cases)
+    out["ensemble_n"] = str(n)
+    out["ensemble_wall_s"] = _fmt(repro["group_wall_sum_s"]["ensemble"], 3)
+    out["ensemble_ms_per_sample"] = _fmt(1e3 * repro["group_wall_sum_s"]["ensemble"] / n, 2)
+    return out
+
+
+ARCHIVE = REPO / "results" / "archive"
+
+
+def ballistic_limit_table() -> str:
+    """Archived ballistic limits against plate thickness and obliquity (m/s)."""
+    import xarray as xr
+
+    with xr.open_dataset(ARCHIVE / "perforation" / "ballistic_limit.nc") as ds:
+        obl = [f"{o:g} deg" for o in ds.obliquity.values]
+        lines = [
+            "| thickness (m) | " + " | ".join(obl) + " |",
+            "|---|" + "---|" * len(obl),
+        ]
+        for i, t in enumerate(ds.thickness.values):
+            cells = [_fmt(v, 4) for v in ds.v_bl.values[i]]
+            lines.append(f"| {t:g} | " + " | ".join(cells) + " |")
+        caption = (
+            f"\n\nProjectile {ds.attrs['projectile']} into slabs of the "
+            f"{ds.attrs['medium']} law, crater {ds.attrs['crater_depth_calibers']:g} and free "
+            f"surface {ds.attrs['free_surface_depth_calibers']:g} calibers; ballistic limit "
+            "in m/s (midpoint of the bracket; `results/archive/perforation/ballistic_limit.nc`)."
+        )
+    return "\n".join(lines) + caption
+
+
+def residual_velocity_text() -> str:
+    """The archived residual-velocity study's Recht-Ipson fit, in one paragraph."""
+    import xarray as xr
+
+    with xr.open_dataset(ARCHIVE / "perforation" / "residual_velocity.nc") as ds:
+        a = ds.attrs
+        v = ds.velocity.values
+        return (
+            f"Residual velocity of {a['projectile']} through a {a['thickness_m']:g} m slab "
+            f"of {a['medium']}, obliquity {a['obliquity_deg']:g} deg, impact speeds "
+            f"{v.min():g}-{v.max():g} m/s (`results/archive/perforation/"
+            f"residual_velocity.nc`): with the searched ballistic limit "
+            f"{_fmt(a['v_bl_m_s'], 4)} m/s, the Recht-Ipson fit gives "
+            f"a = {_fmt(a['recht_ipson_a'], 3)}, p = {_fmt(a['recht_ipson_p'], 3)} (RMS "
+            f"{_fmt(a['recht_ipson_rms_m_s'], 2)} m/s); the rigid-body values a = 1, p = 2 "
+            f"miss by {_fmt(a['recht_ipson_rigid_rms_m_s'], 2)} m/s RMS."
+        )
+
+
+def measurements_table() -> str:
+    """Statistics of pencore against every measured quantity in the archive."""
+    import xarray as xr
+
+    with xr.open_dataset(ARCHIVE / "validation" / "measurements.nc") as ds:
+        lines = [
+            "| quantity | shots | mean error | 95 % interval | RMS | largest |",
+            "|---|---|---|---|---|---|",
+        ]
+        for q in ds.quantity.values:
+            st = ds.sel(quantity=q)
+
+            def pct(name: str, st: xr.Dataset = st) -> str:
+                return f"{100 * float(st[name]):+.1f} %"
+
+            n = int(ds.sizes["shot"])
+            lines.append(
+                f"| {q} | {n} | {pct('stat_mean_rel_error')} | {pct('stat_ci95_lo')} to "
+                f"{pct('stat_ci95_hi')} | {pct('stat_rms_rel_error')[1:]} | "
+                f"{pct('stat_max_abs_rel_error')[1:]} |"
+            )
+    return "\n".join(lines)
+
+
+def layers_table() -> str:
+    """The package's layers, top first, as ``pyproject.toml``'s import contract lists them."""
+    import tomllib
+
+    config = tomllib.loads((REPO / "pyproject.toml").read_text())["tool"]["importlinter"]
+    contract = next(
+        c for c in config["contracts"] if c["type"] == "layers" and "containers" not in c
+    )
+    lines = ["| layer (top first) | modules |", "|---|---|"]
+    for i, layer in enumerate(contract["layers"], 1):
+        names = ", ".join(f"`{m.strip()}`" for m in layer.split("|"))
+        lines.append(f"| {i} | {names} |")
+    return "\n".join(lines)
+
+
+#: every generated page: file name in docs/_generated -> the function that writes it
+PAGES: dict[str, Callable[[], str]] = {
+    "headline.md": headline_table,
+    "comparison.md": comparison_table,
+    "limits.md": limits_table,
+    "limits_models.md": lambda: limits_table("models"),
+    "speed.md": speed_table,
+    "convergence.md": convergence_table,
+    "emulation.md": emulation_table,
+    "attribution.md": attribution_table,
+    "dataset.md": dataset_table,
+    "dataset_attrs.md": dataset_attrs_table,
+    "ballistic_limit.md": ballistic_limit_table,
+    "residual_velocity.md": residual_velocity_text,
+    "measurements.md": measurements_table,
+    "layers.md": layers_table,
+}
+
+#: the README's generated blocks: marker name -> the function that writes it
+README_BLOCKS: dict[str, Callable[[], str]] = {"headline": headline_table}
+
+_BLOCK = re.compile(
+    r"(<!-- generated: (?P<name>[\w-]+) .*?-->\n)(?P<body>.*?)(\n<!-- end generated -->)",
+    re.S,
+)
+
+
+def readme_with_blocks(text: str) -> str:
+    """``text`` with every ``<!-- generated: name -->`` block regenerated."""
+
+    def fill(m: re.Match[str]) -> str:
+        return m.group(1) + README_BLOCKS[m.group("name")]() + m.group(4)
+
+    return _BLOCK.sub(fill, text)
+
+
+def write_pages(target: Path = GENERATED) -> None:
+    """Write every generated page into ``target`` (only files whose text changed)."""
+    target.mkdir(parents=True, exist_ok=True)
+    for name, make in PAGES.items():
+        text = make() + "\n"
+        path = target / name
+        if not path.exists() or path.read_text() != text:
+            path.write_text(text)
+
+
+def _on_config_inited(app, config) -> None:  # noqa: ANN001 (Sphinx, Config)
+    write_pages()
+    config.myst_substitutions = {**numbers(), **config.myst_substitutions}
+
+
+def setup(app) -> dict[str, object]:  # noqa: ANN001
+    """Sphinx entry point: generate the pages and numbers before the sources are read."""
+    app.connect("config-inited", _on_config_inited)
+    return {"parallel_read_safe": True, "parallel_write_safe": True}
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``--readme``: rewrite the README's generated blocks; ``--pages``: write the pages."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--readme", action="store_true", help="rewrite README.md's blocks")
+    parser.add_argument("--pages", action="store_true", help="write docs/_generated/")
+    args = parser.parse_args(argv)
+    if args.readme:
+        readme = REPO / "README.md"
+        readme.write_text(readme_with_blocks(readme.read_text()))
+    if args.pages:
+        write_pages()
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,103 @@
+"""The docs pages: every module in the API reference, the generated tables built from
+their files, and the few numbers typed in the prose equal to the files that hold them."""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from pathlib import Path
+
+import pytest
+import yaml
+
+REPO = Path(__file__).resolve().parents[2]
+DOCS = REPO / "docs"
+
+
+def _page(name: str) -> str:
+    return (DOCS / name).read_text()
+
+
+def test_api_reference_lists_every_module():
+    listed = set(re.findall(r"^   (pencore[\w.]*)$", _page("api/index.md"), re.M))
+    src = REPO / "src"
+    modules = {
+        ".".join(p.relative_to(src).with_suffix("").parts).removesuffix(".__init__")
+        for p in (src / "pencore").rglob("*.py")
+        if p.name != "__main__.py"
+    }
+    assert modules - listed == set(), "modules missing from docs/api/index.md"
+    assert listed - modules == set(), "docs/api/index.md lists modules that do not exist"
+
+
+def test_every_generated_include_has_a_generator(gen):
+    includes = set()
+    for page in DOCS.rglob("*.md"):
+        if "_build" in page.parts or "_generated" in page.parts:
+            continue
+        includes |= set(re.findall(r"_generated/([\w.-]+\.md)", page.read_text()))
+    assert includes <= set(gen.PAGES), includes - set(gen.PAGES)
+
+
+@pytest.mark.parametrize("name", ["headline.md", "comparison.md", "ballistic_limit.md"])
+def test_generated_tables_come_from_the_archive(gen, name):
+    import pandas as pd
+
+    text = gen.PAGES[name]()
+    if name == "ballistic_limit.md":
+        import xarray as xr
+
+        with xr.open_dataset(REPO / "results/archive/perforation/ballistic_limit.nc") as ds:
+            assert f"{float(ds.v_bl.values[0, 0]):.4g}" in text
+        return
+    table = pd.read_csv(REPO / "results/archive/paper_comparison.csv")
+    vcr = table[table.quantity == "Vcr of #2 at 45 deg obliquity (Fig. 7)"].pencore_value
+    digits = 5 if name == "headline.md" else 6
+    assert f"{float(vcr.iloc[0]):.{digits}g}" in text
+
+
+def test_substitutions_used_in_pages_are_defined(gen):
+    numbers = gen.numbers()
+    used = set()
+    for page in DOCS.rglob("*.md"):
+        if "_build" in page.parts:
+            continue
+        used |= set(re.findall(r"\{\{\s*(\w+)\s*\}\}", page.read_text()))
+    assert used <= set(numbers), used - set(numbers)
+
+
+def test_ensemble_page_shows_the_shipped_case():
+    block = re.search(r"```yaml\n(ensemble:.*?)```", _page("user-guide/ensembles.md"), re.S)
+    shown = yaml.safe_load(block.group(1))["ensemble"]["cases"][0]
+    shipped = yaml.safe_load((REPO / "config/config.yaml").read_text())["ensemble"]["cases"][0]
+    assert shown == shipped
+    large = yaml.safe_load((REPO / "config/ensemble_large.yaml").read_text())
+    case = large["ensemble"]["cases"][0]
+    text = _page("user-guide/ensembles.md")
+    assert f"N = {case['n_samples']:,}".replace(",", " ") in text
+    assert f"in {case['n_chunks']} chunks" in text
+
+
+def test_typed_numbers_equal_their_sources():
+    from pencore.studies.attribution import TOLERANCE
+
+    assert f"{100 * TOLERANCE:g} %" in _page("results/attribution.md")
+    min_job_age = re.search(r"MinJobAge=(\d+)", (REPO / ".ci/slurm.sh").read_text()).group(1)
+    assert f"uses {min_job_age} s" in _page("user-guide/cluster.md")
+    python = tomllib.loads((REPO / "pyproject.toml").read_text())["project"]["requires-python"]
+    assert f"Python {python.removeprefix('>=')} or newer" in _page("getting-started.md")
+
+
+def test_no_reference_to_documents_not_in_the_repository():
+    pages = [REPO / "README.md", *DOCS.rglob("*.md")]
+    for page in pages:
+        if "_build" in page.parts or "_generated" in page.parts:
+            continue
+        text = page.read_text()
+        assert "paper guide" not in text.lower() and "../shared" not in text, page
+        for link in re.findall(r"\]\(([^)#:]+)(?:#[^)]*)?\)", text):
+            if link.startswith("http") or "auto_examples" in link:
+                continue
+            assert (page.parent / link).exists() or (page.parent / f"{link}.md").exists(), (
+                f"{page.relative_to(REPO)} links to {link}, which does not exist"
+            )

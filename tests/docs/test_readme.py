@@ -1,0 +1,83 @@
+"""README.md: the two set-up commands first, short, its numbers generated or checked, its
+links alive and its Python example working."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[2]
+README = (REPO / "README.md").read_text()
+
+
+def test_opens_with_exactly_the_two_setup_commands():
+    first = README.split("```")[1].strip().splitlines()
+    assert first[0] == "bash"
+    commands = first[1:]
+    assert len(commands) == 2
+    assert commands[0].startswith("python -m pip install -e '.[workflow]'")
+    assert "snakemake --cores 2" in commands[0]
+    assert commands[1].startswith("python -m pip install -e '.[test]'")
+    assert commands[1].endswith("python -m pytest -q")
+    # nothing but the title before them
+    assert README.split("```")[0].strip() == "# pencore"
+
+
+def test_is_for_users_not_a_lab_notebook():
+    lines = README.splitlines()
+    assert len(lines) <= 170, f"README has {len(lines)} lines; details belong in docs/"
+    assert not re.search(r"\bround\b", README, re.I)
+
+
+def test_generated_blocks_are_current(gen):
+    assert "<!-- generated: headline" in README
+    assert gen.readme_with_blocks(README) == README, (
+        "README's generated blocks are stale: run `python docs/_ext/pencore_docs.py --readme`"
+    )
+
+
+def test_relative_links_resolve():
+    links = re.findall(r"\]\(([^)#]+)(?:#[^)]*)?\)", README)
+    assert links
+    missing = [x for x in links if not x.startswith("http") and not (REPO / x).exists()]
+    assert not missing, f"README links to missing files: {missing}"
+
+
+def test_every_number_in_the_prose_is_checked():
+    """Numbers outside code and generated blocks: each is the paper's citation, or
+    a value checked here against the file that holds it."""
+    from pencore.studies.attribution import TOLERANCE
+
+    prose = re.sub(r"```.*?```", "", README, flags=re.S)
+    prose = re.sub(r"<!-- generated:.*?<!-- end generated -->", "", prose, flags=re.S)
+    prose = re.sub(r"`[^`]*`", "", prose)
+    citation = "Impact Engineering 38 (2011) 815-823"
+    assert prose.count(citation) >= 1
+    prose = prose.replace(citation, "").replace("3-D", "")
+    bad = subprocess.run(
+        [sys.executable, "-m", "pencore.cli", "simulate", "--projectile", "p2", "--target", "soil"]
+        + ["--velocity", "-1"],
+        capture_output=True,
+        text=True,
+    )
+    checked = {
+        f"{100 * TOLERANCE:g} %",  # the attribution study's agreement band
+        str(bad.returncode),  # "exit status 2" for a bad input
+    }
+    found = re.findall(r"\d+(?:\.\d+)?(?:\s*%)?", prose)
+    unchecked = [n for n in found if n not in checked]
+    assert not unchecked, f"numbers typed in the README without a check: {unchecked}"
+
+
+@pytest.mark.slow
+def test_python_example_runs():
+    code = next(b for b in README.split("```python\n")[1:]).split("```")[0]
+    namespace: dict = {}
+    exec(compile(code, "README.md", "exec"), namespace)  # noqa: S102
+    ds, r = namespace["ds"], namespace["r"]
+    assert ds.penetration_depth.units == "m"
+    assert r.status == "ok" and r.hi - r.lo <= 5.0
