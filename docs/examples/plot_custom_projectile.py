@@ -100,7 +100,7 @@ for obl, ds in runs.items():
 # Left: the nose-tip paths over the layers. Right: the speed of the centre of mass
 # against the height of the nose tip. The rate at which the speed falls with depth
 # changes at each interface, and the speed stays constant while the body crosses the air
-# gap (the short drop just below the slab is the shank still in the concrete).
+# gap (the short drop just below the slab is the rest of the nose still in the concrete).
 
 fig, (ax_path, ax_speed) = plt.subplots(1, 2, figsize=(11, 4.8), layout="constrained")
 top, colours = 0.0, {"concrete": "0.6", "crust": "peru", "soil": "tan"}
