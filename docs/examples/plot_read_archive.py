@@ -76,6 +76,7 @@ table = vcr["vcr"].to_pandas().round(1)
 lc_over_l = vcr["lc_over_l"].values
 table.index = [f"{p} (Lc/L {lc:.3f})" for p, lc in zip(table.index, lc_over_l, strict=True)]
 table.columns = [f"{o:g} deg" for o in table.columns]
+print(f"Vcr ({vcr['vcr'].attrs['units']}) against obliquity:")
 print(table.to_string())
 
 # %%
