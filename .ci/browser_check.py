@@ -5,7 +5,12 @@ reference's per-module pages excepted: one of them is opened as a sample) and th
 Debian's chromium through chromedriver (selenium), and fails if a page has
 
 * an image that did not load (``naturalWidth == 0`` once the page is complete), or
-* a script error or failed request in the browser's console (level SEVERE).
+* a script error, or a request to the site itself that failed, in the browser's console
+  (level SEVERE).
+
+A request to another host that failed (MathJax from its CDN, for example) is listed but is
+not a failure: CI has no network beyond the package registries, and a reader's browser
+fetches it.
 
 Keeps a screenshot of the site's front page and of the report (``--screenshots DIR``).
 
@@ -66,7 +71,25 @@ def browser() -> webdriver.Chrome:
     return webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
 
 
-def check_page(driver: webdriver.Chrome, url: str) -> list[str]:
+def console_problems(driver: webdriver.Chrome, url: str, base: str) -> list[str]:
+    """SEVERE console entries of the page: script errors and the site's own failed
+    requests; another host's failed requests are printed as notes."""
+    problems = []
+    for entry in driver.get_log("browser"):
+        if entry["level"] != "SEVERE":
+            continue
+        message = entry["message"]
+        source = message.split(" ", 1)[0]
+        if source == f"{base}/favicon.ico":
+            continue  # the browser's own request for a page without an icon
+        if "Failed to load resource" in message and not source.startswith(base):
+            print(f"note: {url}: another host was not reached: {source}")
+            continue
+        problems.append(f"{url}: console error: {message}")
+    return problems
+
+
+def check_page(driver: webdriver.Chrome, url: str, base: str) -> list[str]:
     """Problems of one page: broken images and console errors."""
     driver.get(url)
     deadline = time.monotonic() + 20
@@ -75,10 +98,7 @@ def check_page(driver: webdriver.Chrome, url: str) -> list[str]:
             return [f"{url}: did not finish loading in 20 s"]
         time.sleep(0.05)
     problems = [f"{url}: image did not load: {src}" for src in driver.execute_script(BROKEN_IMAGES)]
-    for entry in driver.get_log("browser"):
-        if entry["level"] == "SEVERE":
-            problems.append(f"{url}: console error: {entry['message']}")
-    return problems
+    return problems + console_problems(driver, url, base)
 
 
 def site_pages(site: Path) -> list[str]:
@@ -101,19 +121,19 @@ def main(argv: list[str] | None = None) -> int:
         with serve(args.site) as base:
             pages = site_pages(args.site)
             for page in pages:
-                problems += check_page(driver, f"{base}/{page}")
+                problems += check_page(driver, f"{base}/{page}", base)
             driver.get(f"{base}/index.html")
             driver.save_screenshot(str(args.screenshots / "docs-front-page.png"))
             print(f"browser check: {len(pages)} pages of {args.site}")
         if args.report:
             with serve(args.report.parent) as base:
                 url = f"{base}/{args.report.name}"
-                problems += check_page(driver, url)
+                problems += check_page(driver, url, base)
                 time.sleep(1.0)  # the report renders its panels after loading
+                problems += console_problems(driver, url, base)
                 problems += [
-                    f"{url}: console error: {e['message']}"
-                    for e in driver.get_log("browser")
-                    if e["level"] == "SEVERE"
+                    f"{url}: image did not load: {src}"
+                    for src in driver.execute_script(BROKEN_IMAGES)
                 ]
                 driver.save_screenshot(str(args.screenshots / "report.png"))
                 print(f"browser check: {args.report}")

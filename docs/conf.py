@@ -35,7 +35,7 @@ extensions = [
 ]
 
 source_suffix = {".md": "markdown", ".rst": "restructuredtext"}
-exclude_patterns = ["_build", "_generated/README-*", "examples/README.rst"]
+exclude_patterns = ["_build", "_generated", "examples/README.rst"]
 myst_enable_extensions = ["colon_fence", "dollarmath", "substitution", "deflist"]
 myst_heading_anchors = 3
 
@@ -65,6 +65,8 @@ sphinx_gallery_conf = {
     "image_scrapers": ("matplotlib",),
     "reset_modules": ("matplotlib",),
     "within_subsection_order": "FileNameSortKey",
+    # the timing pages load jQuery from a CDN, which a build without network cannot reach
+    "write_computation_times": False,
 }
 
 html_theme = "pydata_sphinx_theme"
@@ -77,5 +79,8 @@ html_theme_options = {
     "footer_end": ["sphinx-version"],
     "secondary_sidebar_items": ["page-toc"],
 }
-html_static_path: list[str] = []
+html_static_path = ["_static"]
+html_favicon = "_static/favicon.svg"
+# the theme reads the reader's saved choice; a first visit gets light mode
+html_context = {"default_mode": "light"}
 html_show_sourcelink = False

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# The documentation, built strictly and opened in a real browser:
+#  1. Sphinx builds docs/ with warnings as errors (broken internal links, undefined
+#     substitutions, docstrings that do not render) and runs every example of the gallery
+#     (an example that raises fails the build);
+#  2. the small configuration .test/config.yaml runs in a scratch clone and Snakemake
+#     writes its HTML report;
+#  3. headless chromium opens every page of the site and the report, and fails on an image
+#     that did not load or a script error (.ci/browser_check.py); screenshots of the front
+#     page and the report are kept in ci-artifacts/.
+# Needs the docs extra (python -m pip install -e '.[docs]') and Debian's chromium and
+# chromium-driver, which this script installs with apt-get when they are missing.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+REPO=$(pwd)
+
+if [[ ! -x /usr/bin/chromium || ! -x /usr/bin/chromedriver ]]; then
+    apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium chromium-driver > /dev/null
+fi
+
+rm -rf docs/_build docs/auto_examples docs/api/generated
+python -m sphinx -W --keep-going -q -b html docs docs/_build/html
+echo "docs: built docs/_build/html"
+
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+git clone -q "$REPO" "$WORK/repo"
+(
+    cd "$WORK/repo"
+    python -m snakemake --cores 2 --configfile .test/config.yaml --quiet > "$WORK/run.log" 2>&1 \
+        || { tail -40 "$WORK/run.log"; exit 1; }
+    python -m snakemake --configfile .test/config.yaml --report "$WORK/report.html" \
+        > "$WORK/report.log" 2>&1 || { tail -40 "$WORK/report.log"; exit 1; }
+)
+python .ci/browser_check.py --site docs/_build/html --report "$WORK/report.html" \
+    --screenshots ci-artifacts
