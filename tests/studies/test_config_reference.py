@@ -194,3 +194,9 @@ def test_every_rule_of_the_check_is_printed_and_probed():
     for path, name in LIMITED_KEYS.items():
         assert path in probed_paths, path
         assert f"{LIMITS[name].describe()} (checked)" in TABLE[path][1], path
+
+
+def test_config_readme_is_the_generated_reference():
+    """config/README.md is the generator's output (regenerate it with
+    ``python -m pencore.studies.config_reference > config/README.md``)."""
+    assert (REPO / "config" / "README.md").read_text() == MARKDOWN
