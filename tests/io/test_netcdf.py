@@ -9,7 +9,13 @@ import pytest
 import xarray as xr
 
 import pencore
-from pencore.io.netcdf import config_hash, downsample, read_netcdf, write_netcdf
+from pencore.io.netcdf import (
+    ELAPSED_TIME,
+    config_hash,
+    downsample,
+    read_netcdf,
+    write_netcdf,
+)
 
 
 def _trajectory(n: int = 1000) -> xr.Dataset:
@@ -50,11 +56,41 @@ def test_float_variables_are_compressed(tmp_path):
     path = write_netcdf(_trajectory(), tmp_path / "t.nc", config_slice={}, study="s")
     back = xr.open_dataset(path)
     try:
-        for name in ("tip_y", "time"):
+        for name in ("tip_y", ELAPSED_TIME):
             assert back[name].encoding["zlib"] and back[name].encoding["complevel"] == 4
         assert not back["count"].encoding.get("zlib", False)
     finally:
         back.close()
+
+
+def test_elapsed_time_is_not_a_cf_time_axis_on_disk(tmp_path):
+    """The run's elapsed time has no reference date/time, so it is not a CF time
+    coordinate (CF 1.10 section 4.4): on disk it is a generic coordinate in seconds under
+    a name checkers do not take for a time axis; read_netcdf gives back ``time``."""
+    ds = _trajectory(50)
+    path = write_netcdf(ds, tmp_path / "t.nc", config_slice={}, study="s")
+    with xr.open_dataset(path, decode_times=False) as raw:
+        assert "time" not in raw.dims and "time" not in raw.variables
+        assert raw["tip_y"].dims == (ELAPSED_TIME,)
+        attrs = raw[ELAPSED_TIME].attrs
+        assert attrs["units"] == "s" and "since" not in attrs["units"]
+        assert "standard_name" not in attrs and "axis" not in attrs
+        assert "not a CF time coordinate" in attrs["comment"]
+        np.testing.assert_array_equal(raw[ELAPSED_TIME].values, ds["time"].values)
+    back = read_netcdf(path)
+    assert back["tip_y"].dims == ("time",)
+    assert back["time"].attrs == ds["time"].attrs
+    np.testing.assert_array_equal(back["time"].values, ds["time"].values)
+    np.testing.assert_array_equal(back["tip_y"].values, ds["tip_y"].values)
+
+
+def test_files_written_with_a_time_dimension_still_read(tmp_path):
+    ds = _trajectory(20)
+    path = tmp_path / "old.nc"
+    ds.drop_attrs().to_netcdf(path, engine="netcdf4")
+    back = read_netcdf(path)
+    assert back["tip_y"].dims == ("time",)
+    np.testing.assert_array_equal(back["time"].values, ds["time"].values)
 
 
 def test_write_is_atomic(tmp_path, monkeypatch):

@@ -17,7 +17,14 @@ from typing import Any
 from pencore.errors import InputError
 from pencore.inputs.limits import check_keys, integer, number
 
-__all__ = ["Numerics", "DEFAULT_NUMERICS", "METHODS", "JACOBIANS", "resolve_numerics"]
+__all__ = [
+    "Numerics",
+    "DEFAULT_NUMERICS",
+    "METHODS",
+    "JACOBIANS",
+    "NUMERIC_FIELDS",
+    "resolve_numerics",
+]
 
 #: Integration methods: the compiled Rosenbrock pair (default) and scipy's implicit
 #: ``solve_ivp`` methods on the same right-hand side (reference; much slower).
@@ -101,15 +108,13 @@ class Numerics:
     method: str = "rosenbrock"
 
     def __post_init__(self) -> None:
-        for f in fields(self):
-            if f.name in ("method", "jacobian"):
-                continue
-            value = getattr(self, f.name)
-            if f.name in _INT_FIELDS:
-                checked: float = integer(value, f.name, "numerics")
+        for name in NUMERIC_FIELDS:
+            value = getattr(self, name)
+            if name in _INT_FIELDS:
+                checked: float = integer(value, name, "numerics")
             else:
-                checked = number(value, f.name, "numerics")
-            object.__setattr__(self, f.name, checked)
+                checked = number(value, name, "numerics")
+            object.__setattr__(self, name, checked)
         if self.method not in METHODS:
             hint = difflib.get_close_matches(str(self.method), METHODS, n=1)
             tip = f"; did you mean {hint[0]!r}?" if hint else ""
@@ -124,6 +129,13 @@ class Numerics:
                 f"got {self.jacobian!r}{tip}"
             )
 
+
+#: The numeric fields of :class:`Numerics`, each checked against
+#: :data:`pencore.inputs.limits.LIMITS` under its own name (all but ``method`` and
+#: ``jacobian``, which are names).
+NUMERIC_FIELDS: tuple[str, ...] = tuple(
+    f.name for f in fields(Numerics) if f.name not in ("method", "jacobian")
+)
 
 DEFAULT_NUMERICS = Numerics()
 

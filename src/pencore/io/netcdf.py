@@ -198,12 +198,32 @@ def write_netcdf(
 #: (``cfchecker``, run by ``.ci/cf_check.py``) verifies. The files use nothing newer.
 CF_CONVENTIONS = "CF-1.8"
 
+#: The name on disk of the ``time`` dimension of trajectories. pencore's ``time`` is the
+#: time elapsed since the start of a run (s), not a CF time coordinate: CF 1.10 section
+#: 4.4 says a time coordinate value represents a date/time and its units must contain a
+#: reference date/time (``seconds since 1992-10-8 15:15:42.5 -6:00``), and a simulated
+#: impact has no date. It is therefore written as a generic coordinate (CF section 4:
+#: coordinates may be any continuous quantity) with units ``s`` and a long_name, without
+#: ``standard_name = "time"`` or ``axis = "T"``. CF standardises no variable or dimension
+#: names (section 2.3), but tools take a dimension named ``time`` for a CF time axis
+#: (the IOOS compliance-checker then asks for ``standard_name = "time"``, which in turn
+#: asks for ``since`` units), so on disk the dimension is named for what it is.
+#: :func:`read_netcdf` gives it back its in-memory name ``time``.
+ELAPSED_TIME = "elapsed_time"
+
+_ELAPSED_TIME_COMMENT = (
+    "time elapsed since the start of the run; not a CF time coordinate (no reference "
+    "date/time); pencore.io.netcdf.read_netcdf names it 'time'"
+)
+
 
 def cf_encoding(ds: xr.Dataset) -> tuple[xr.Dataset, dict[str, dict[str, Any]]]:
     """A copy of ``ds`` and its netCDF encoding, such that the file is CF-compliant.
 
     * ``Conventions`` is :data:`CF_CONVENTIONS`; ``history`` records when and by which
       pencore version (and study) the file was written;
+    * the ``time`` dimension and its coordinate (elapsed time since the start of a run)
+      are named :data:`ELAPSED_TIME`, with a ``comment`` saying why;
     * text variables are written as character arrays (CF-1.8 has no variable-length
       strings), read back as text by xarray;
     * 64-bit integers become 32-bit where the values fit, booleans 8-bit integers;
@@ -216,6 +236,13 @@ def cf_encoding(ds: xr.Dataset) -> tuple[xr.Dataset, dict[str, dict[str, Any]]]:
     line = f"{stamp} written by pencore {__version__}" + (f" (study {study})" if study else "")
     out.attrs["Conventions"] = CF_CONVENTIONS
     out.attrs["history"] = line.strip()
+    if "time" in out.dims and ELAPSED_TIME not in out.variables:
+        out = out.rename({"time": ELAPSED_TIME})
+        if ELAPSED_TIME in out.variables:
+            out[ELAPSED_TIME].attrs = {
+                **out[ELAPSED_TIME].attrs,
+                "comment": _ELAPSED_TIME_COMMENT,
+            }
     encoding: dict[str, dict[str, Any]] = {}
     for name, var in out.variables.items():
         enc: dict[str, Any] = {}
@@ -240,12 +267,22 @@ def cf_encoding(ds: xr.Dataset) -> tuple[xr.Dataset, dict[str, dict[str, Any]]]:
 
 
 def read_netcdf(path: str | os.PathLike[str]) -> xr.Dataset:
-    """Read a netCDF file fully into memory (the file is closed on return)."""
+    """Read a netCDF file fully into memory (the file is closed on return).
+
+    The elapsed-time dimension, :data:`ELAPSED_TIME` on disk, is named ``time`` again
+    (without the ``comment`` :func:`cf_encoding` added), so a written Dataset reads back
+    with the names it had; files written before the rename read unchanged.
+    """
     path = Path(path)
     if not path.is_file():
         raise FileNotFoundError(f"no netCDF file at {str(path)!r}")
     with xr.open_dataset(path, engine="netcdf4") as ds:
-        return ds.load()
+        ds = ds.load()
+    if ELAPSED_TIME in ds.dims and "time" not in ds.variables:
+        ds = ds.rename({ELAPSED_TIME: "time"})
+        if "time" in ds.variables and ds["time"].attrs.get("comment") == _ELAPSED_TIME_COMMENT:
+            ds["time"].attrs = {k: v for k, v in ds["time"].attrs.items() if k != "comment"}
+    return ds
 
 
 def downsample(

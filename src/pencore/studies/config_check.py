@@ -5,7 +5,9 @@ The Snakefile validates ``config`` against ``workflow/schemas/config.schema.yaml
 then calls :func:`check_config`, so a bad configuration stops when the workflow is parsed,
 with one line that names the key path and the value, instead of late in a job (or never).
 
-Checked here, by the unit in the key's name (``*_m_s``, ``*_deg``, ``*_rad_s``, ``*_m``):
+Checked here, by the unit in the key's name (``*_m_s``, ``*_deg``, ``*_rad_s``, ``*_m``;
+the ranges are the data :data:`KEY_RULES`, :data:`GRID_POINTS` and :data:`GRID_STEP`, which
+:mod:`pencore.studies.config_reference` prints for the configuration reference):
 
 * velocities (``*_m_s``) are > 0 and within the velocity guard of
   :data:`pencore.inputs.limits.LIMITS`; angular velocities (``*_rad_s``) within theirs;
@@ -26,18 +28,114 @@ from __future__ import annotations
 import difflib
 import math
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from pencore.errors import ConfigError, InputError
-from pencore.inputs.limits import LIMITS
+from pencore.inputs.limits import LIMITS, Limit, number
+from pencore.inputs.numerics import NUMERIC_FIELDS, resolve_numerics
 from pencore.paper.choices import check_settings
 from pencore.studies.ensemble_cases import check_case
 
-__all__ = ["MAX_GRID", "check_config", "schema_error_message"]
+__all__ = [
+    "GRID_POINTS",
+    "GRID_STEP",
+    "KEY_RULES",
+    "LIMITED_KEYS",
+    "MAX_GRID",
+    "KeyRule",
+    "check_config",
+    "key_rule",
+    "schema_error_message",
+]
 
 #: Largest number of points a configured grid may have (typo guard).
 MAX_GRID = 10_000
+
+
+@dataclass(frozen=True)
+class KeyRule:
+    """The range :func:`check_config` enforces on every number of the keys it matches.
+
+    Attributes
+    ----------
+    pattern : str
+        The keys matched, as a glob on the key's own name (``*_m_s``, ``obliquity*_deg``);
+        without ``*`` the name itself.
+    label : str
+        How messages name the quantity.
+    limit : pencore.inputs.limits.Limit
+        The valid range (unit and bounds).
+    """
+
+    pattern: str
+    label: str
+    limit: Limit
+
+    def matches(self, key: str) -> bool:
+        """Whether the rule applies to a key of this name."""
+        head, star, tail = self.pattern.partition("*")
+        if not star:
+            return key == self.pattern
+        return key.startswith(head) and key.endswith(tail) and len(key) >= len(head + tail)
+
+
+#: Ranges by the unit in the key's name, first match wins. Each applies to every number of
+#: the key's value: a scalar, each entry of a list, the ``min`` and ``max`` of a range or
+#: grid (and of an ensemble distribution).
+KEY_RULES: tuple[KeyRule, ...] = (
+    KeyRule("*_m_s", "velocity", LIMITS["velocity"]),
+    KeyRule("*_rad_s", "angular velocity", LIMITS["omega"]),
+    KeyRule(
+        "obliquity*_deg",
+        "obliquity",
+        Limit("obliquity", "deg", 0.0, 90.0, hi_open=True, why="the axis points into +x"),
+    ),
+    KeyRule("yaw*_deg", "yaw", LIMITS["yaw"]),
+    KeyRule(
+        "threshold*_deg",
+        "threshold",
+        Limit("threshold", "deg", 0.0, 180.0, True, True, why="an angle between directions"),
+    ),
+    KeyRule("start_m", "start coordinate", LIMITS["start"]),
+    KeyRule(
+        "start_height*_m",
+        "start height",
+        Limit("start height", "m", 0.0, LIMITS["start"].hi, kind="physical / guard"),
+    ),
+)
+
+#: Number of points ``n`` of a grid ``{min, max, n}`` (also the largest grid by step).
+GRID_POINTS = Limit("grid points", "", 1.0, float(MAX_GRID), kind="physical / guard")
+#: Step of a grid ``{min, max, step}``.
+GRID_STEP = Limit("step", "", 0.0, math.inf, lo_open=True, hi_open=True)
+
+
+def key_rule(key: str) -> KeyRule | None:
+    """The :data:`KEY_RULES` entry that applies to a key of this name, if any."""
+    return next((rule for rule in KEY_RULES if rule.matches(key)), None)
+
+
+_SETTING = "attribution.settings[].choices"
+
+#: Keys whose values pencore checks against :data:`pencore.inputs.limits.LIMITS` under the
+#: given name when the configuration is checked: the numerics overrides (every numeric
+#: field of :class:`pencore.inputs.numerics.Numerics` is checked by its own name), the
+#: perforation slab's depth windows, and the choices of an attribution setting
+#: (:func:`pencore.paper.choices.check_choices`). ``[]`` stands for every entry of a list.
+LIMITED_KEYS: dict[str, str] = {
+    **{f"numerics.{name}": name for name in NUMERIC_FIELDS},
+    "perforation.crater_depth": "crater_depth",
+    "perforation.free_surface_depth": "free_surface_depth",
+    **{f"{_SETTING}.numerics.{name}": name for name in NUMERIC_FIELDS},
+    f"{_SETTING}.shank.factor": "shank_factor",
+    f"{_SETTING}.shank.delta_ref": "delta_ref",
+    f"{_SETTING}.emulation.n_circumferential": "n_circumferential",
+    f"{_SETTING}.emulation.dt": "dt",
+    f"{_SETTING}.start_height": "start_height",
+    f"{_SETTING}.friction": "friction",
+}
 
 
 def _fail(path: str, message: str) -> None:
@@ -67,54 +165,31 @@ def _check_range(path: str, value: Mapping[str, Any]) -> None:
         _fail(path, f"min {lo!r} is larger than max {hi!r}")
     step, n = value.get("step"), value.get("n")
     if _is_num(step):
-        if not step > 0:
+        if not GRID_STEP.contains(step):
             _fail(path, f"step must be > 0, got {step!r}")
         if _is_num(lo) and _is_num(hi):
             points = math.floor((hi - lo) / step + 1e-9) + 1
-            if points > MAX_GRID:
+            if not GRID_POINTS.contains(points):
                 _fail(path, f"the grid has {points} points (min {lo}, max {hi}, step {step}); "
                       f"at most {MAX_GRID} are allowed (typo guard)")  # fmt: skip
-    if _is_num(n) and not 1 <= n <= MAX_GRID:
-        _fail(path, f"n must be in [1, {MAX_GRID}] points, got {n!r}")
+    if _is_num(n) and not GRID_POINTS.contains(n):
+        _fail(path, f"n must be {GRID_POINTS.describe()} points, got {n!r}")
 
 
 def _check_leaf(path: str, key: str, value: Any) -> None:
     if isinstance(value, Mapping):
         _check_range(path, value)
     nums = _numbers(value)
-    if key.endswith("_m_s"):
-        lim = LIMITS["velocity"]
-        for v in nums:
-            if not (math.isfinite(v) and lim.contains(v)):
-                _fail(path, f"velocity {v!r} m/s is not {lim.describe()}")
-    elif key.endswith("_rad_s"):
-        lim = LIMITS["omega"]
-        for v in nums:
-            if not (math.isfinite(v) and lim.contains(v)):
-                _fail(path, f"angular velocity {v!r} rad/s is not {lim.describe()}")
-    elif key.startswith("obliquity") and key.endswith("_deg"):
-        for v in nums:
-            if not 0.0 <= v < 90.0:
-                _fail(path, f"obliquity {v!r} deg is not in [0, 90) deg")
-    elif key.startswith("yaw") and key.endswith("_deg"):
-        for v in nums:
-            if not -90.0 < v < 90.0:
-                _fail(path, f"yaw {v!r} deg is not in (-90, 90) deg")
-    elif key.startswith("threshold") and key.endswith("_deg"):
-        for v in nums:
-            if not 0.0 < v < 180.0:
-                _fail(path, f"threshold {v!r} deg is not in (0, 180) deg")
-    elif key == "start_m" and value is not None:
-        lim = LIMITS["start"]
-        if not (isinstance(value, Sequence) and len(value) == 3 and len(nums) == 3):
+    rule = key_rule(key)
+    if rule is not None and not (rule.pattern == "start_m" and value is None):
+        lim = rule.limit
+        if rule.pattern == "start_m" and not (
+            isinstance(value, Sequence) and len(value) == 3 and len(nums) == 3
+        ):
             _fail(path, f"must be three numbers [x, y, z] in m, got {value!r}")
         for v in nums:
-            if not lim.contains(v):
-                _fail(path, f"start coordinate {v!r} m is not {lim.describe()}")
-    elif key.startswith("start_height") and key.endswith("_m"):
-        for v in nums:
-            if not 0.0 <= v <= LIMITS["start"].hi:
-                _fail(path, f"start height {v!r} m is not in [0, {LIMITS['start'].hi:g}] m")
+            if not (math.isfinite(v) and lim.contains(v)):
+                _fail(path, f"{rule.label} {v!r} {lim.unit} is not {lim.describe()}")
     if key in ("projectiles", "cases") and isinstance(value, Sequence):
         names = [c.get("name") if isinstance(c, Mapping) else c for c in value]
         dupes = sorted({str(x) for x in names if names.count(x) > 1})
@@ -179,6 +254,26 @@ def check_config(config: Mapping[str, Any], root: str | Path = ".") -> None:
             check_settings(settings)
         except InputError as exc:
             _fail("attribution.settings", str(exc))
+        for i, st in enumerate(settings):
+            num = (st.get("choices") or {}).get("numerics") if isinstance(st, Mapping) else None
+            if isinstance(num, Mapping):
+                try:
+                    resolve_numerics(num)
+                except InputError as exc:
+                    _fail(f"attribution.settings[{i}].choices.numerics", str(exc))
+    if isinstance(config.get("numerics"), Mapping):
+        try:
+            resolve_numerics(config["numerics"])
+        except InputError as exc:
+            _fail("numerics", str(exc))
+    perforation = config.get("perforation")
+    if isinstance(perforation, Mapping):
+        for key in ("crater_depth", "free_surface_depth"):
+            if key in perforation:
+                try:
+                    number(perforation[key], LIMITED_KEYS[f"perforation.{key}"])
+                except InputError as exc:
+                    _fail(f"perforation.{key}", str(exc))
 
 
 def schema_error_message(config: Mapping[str, Any], schema: Mapping[str, Any]) -> str:
