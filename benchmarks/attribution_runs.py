@@ -1,5 +1,6 @@
-"""The attribution table of the README: the paper's disputed quantities, setting by
-setting (pencore.paper.attribution.disputed_quantities), run one at a time.
+"""The attribution table of the docs (results, "Why the numbers differ"): the paper's
+disputed quantities, setting by setting (pencore.paper.attribution.disputed_quantities),
+run one at a time.
 
 Writes benchmarks/results/attribution.csv (one row per setting: the quantities, their
 differences from the paper, wall times) and prints a markdown table.

@@ -15,9 +15,9 @@ Writes benchmarks/results/speed.csv. Run (from the repository root):
 python benchmarks/bench_startup.py && python benchmarks/bench_reproduction.py
 python benchmarks/speed_summary.py
 
-``python benchmarks/speed_summary.py --markdown`` prints the README's performance table
-from ``speed.csv`` and ``compile.csv`` (:func:`markdown_table`; a test keeps the README's
-copy equal to it).
+``python benchmarks/speed_summary.py --markdown`` prints the docs' performance table
+from ``speed.csv`` and ``compile.csv`` (:func:`markdown_table`; the docs include it at
+every build).
 """
 
 from __future__ import annotations
@@ -47,7 +47,7 @@ def _json_of(script: str) -> dict:
         return json.loads(out.read_text())
 
 
-#: (file, row key, label, how to rerun) of the README's performance table, in order.
+#: (file, row key, label, how to rerun) of the docs' performance table, in order.
 TABLE_ROWS = (
     ("speed", "trajectory", "one trajectory (p2, soil, 45 deg, 1000 m/s, default numerics), "
      "median", "bench_trajectory.py"),
@@ -71,7 +71,7 @@ TABLE_ROWS = (
 
 
 def markdown_table(results: Path = HERE / "results") -> str:
-    """The README's performance table (markdown) from ``speed.csv`` and ``compile.csv``:
+    """The docs' performance table (markdown) from ``speed.csv`` and ``compile.csv``:
     each figure with its unit, the commit and date it was measured at, and the script
     that measures it."""
     speed = pd.read_csv(results / "speed.csv").set_index("figure")
@@ -94,7 +94,7 @@ def markdown_table(results: Path = HERE / "results") -> str:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--markdown", action="store_true", help="print the README's table and exit")
+    ap.add_argument("--markdown", action="store_true", help="print the docs' table and exit")
     if ap.parse_args().markdown:
         print(markdown_table(), end="")
         return

@@ -393,6 +393,14 @@ def layers_table() -> str:
     return "\n".join(lines)
 
 
+def config_reference_page() -> str:
+    """Every workflow configuration key (:mod:`pencore.studies.config_reference`), its
+    title dropped to sit under the page's own."""
+    from pencore.studies.config_reference import config_reference
+
+    return config_reference(REPO).split("\n", 1)[1].strip()
+
+
 #: every generated page: file name in docs/_generated -> the function that writes it
 PAGES: dict[str, Callable[[], str]] = {
     "headline.md": headline_table,
@@ -409,6 +417,7 @@ PAGES: dict[str, Callable[[], str]] = {
     "residual_velocity.md": residual_velocity_text,
     "measurements.md": measurements_table,
     "layers.md": layers_table,
+    "config_reference.md": config_reference_page,
 }
 
 #: the README's generated blocks: marker name -> the function that writes it

@@ -12,7 +12,7 @@ integrator), so that afterwards a fresh process loads the kernels from the cache
 (``benchmarks/bench_startup.py`` measures both). On a cold cache it says so once too,
 at its first variant: the variants share one process, and the notice is once per process.
 
-Run: ``python -m pencore.warmup`` (the README's set-up commands and ``.ci/run`` do).
+Run: ``python -m pencore.warmup`` (the README's two set-up commands and ``.ci/run`` do).
 """
 
 from __future__ import annotations

@@ -123,8 +123,8 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         default=[],
         metavar="KEY=VALUE",
         help="override a numerical parameter, e.g. rtol=1e-6, eps=1e-3 (m/s), t_max=2 (s), "
-        "method=Radau; repeat for several (see pencore.Numerics for the keys and the "
-        "README for their valid ranges)",
+        "method=Radau; repeat for several (see pencore.Numerics for the keys; the docs' "
+        "user guide lists their valid ranges)",
     )
     sim.add_argument(
         "--out",

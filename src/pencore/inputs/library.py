@@ -302,7 +302,7 @@ _NOSE_KEYS = {
 
 
 def projectile_from_dict(d: dict[str, Any]) -> Projectile:
-    """Build a projectile from a mapping (the YAML format in the README).
+    """Build a projectile from a mapping (the YAML format of the user guide's inputs page).
 
     Unknown keys, booleans or text where numbers belong, and values outside
     :data:`pencore.inputs.limits.LIMITS` raise :class:`InputError` naming the key and value.

@@ -14,8 +14,8 @@ Each range in :data:`LIMITS` is of one of two kinds:
     the model could be evaluated, but a value this far out is almost certainly a typo
     (a 10 km/s impact, a 100-m diameter, a 1000-s run); the bound is generous and says so.
 
-The table in the README ("Inputs and their valid ranges") is checked against
-:data:`LIMITS` by the test suite.
+The docs' table of valid ranges (user guide, "Projectiles, targets and numerics") is
+generated from :data:`LIMITS` by :func:`limits_markdown` at every build.
 """
 
 from __future__ import annotations
@@ -58,9 +58,8 @@ class Limit:
     why : str
         One line on where the bounds come from.
     group : str
-        ``"core"`` (the main table of the README) or ``"models"`` (the shank contact
-        models and paper-emulation numerics of :mod:`pencore.inputs.models`, tabulated in the
-        README section on them).
+        ``"core"`` (the main table of valid ranges) or ``"models"`` (the shank contact
+        models and paper-emulation numerics of :mod:`pencore.inputs.models`).
     """
 
     label: str
@@ -412,7 +411,7 @@ def check_keys(mapping: Mapping[str, Any], allowed: Iterable[str], what: str) ->
 
 
 def limits_markdown(group: str = "core") -> str:
-    """A README table of valid ranges, one row per entry of :data:`LIMITS` in ``group``
+    """A Markdown table of valid ranges, one row per entry of :data:`LIMITS` in ``group``
     (``"core"``: the main table; ``"models"``: the shank models and emulation numerics)."""
     rows = ["| input | valid range | kind | why |", "|---|---|---|---|"]
     for key, lim in LIMITS.items():

@@ -151,7 +151,8 @@ def simulate(
     Returns
     -------
     xarray.Dataset
-        Time histories on dimension ``time`` (s) and scalar results; see the README.
+        Time histories on dimension ``time`` (s) and scalar results; the user guide's
+        Dataset page lists every variable.
     """
     pr, run, wall, (velocity, obliquity, yaw, omega, azimuth, start) = _impact(
         projectile, target, velocity, obliquity, yaw, omega, start, azimuth,
