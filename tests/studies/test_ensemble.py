@@ -133,6 +133,10 @@ def test_samples_are_the_solver_runs_and_gather_joins_chunks():
     assert float(ds["p_reversed"]) == k / 6
     with pytest.raises(InputError, match="cover samples"):
         gather([parts[0]])
+    # every variable and coordinate says what it is (CF: long_name; checked in CI by the
+    # compliance-checker on the archived ensemble)
+    unnamed = [v for v in ds.variables if not ds[v].attrs.get("long_name")]
+    assert unnamed == []
 
 
 def test_azimuth_only_turns_the_trajectory():

@@ -144,7 +144,16 @@ def run_chunk(case: Mapping[str, Any], chunk: int, numerics: Any = None) -> xr.D
             data[k] = ("sample", vals.astype(np.int32), {"long_name": f"1: {k}"})
         else:
             data[k] = ("sample", vals, {"units": units[k][0], "long_name": units[k][1]})
-    ds = xr.Dataset(data, coords={"sample": ("sample", idx.astype(np.int32))})
+    ds = xr.Dataset(
+        data,
+        coords={
+            "sample": (
+                "sample",
+                idx.astype(np.int32),
+                {"long_name": "sample index (the same draw for any N and chunking)"},
+            )
+        },
+    )
     ds.attrs.update(case_json=json.dumps(c, sort_keys=True), chunk=chunk, n_chunks=c["n_chunks"])
     return ds
 
@@ -195,11 +204,26 @@ def gather(parts: Sequence[xr.Dataset]) -> xr.Dataset:
         mean, sd = float(np.mean(x)), float(np.std(x, ddof=1)) if n > 1 else math.nan
         half = t_half_width(x)
         ds[f"{name}_mean"] = ((), mean, {"units": units, "long_name": f"mean {long_name}"})
-        ds[f"{name}_mean_ci95"] = ("bound", [mean - half, mean + half], {"units": units})
+        ds[f"{name}_mean_ci95"] = (
+            "bound",
+            [mean - half, mean + half],
+            {"units": units, "long_name": f"Student-t 95 % interval of the mean {long_name}"},
+        )
         ds[f"{name}_sd"] = ((), sd, {"units": units, "long_name": f"standard deviation, {name}"})
         qs = [quantile_interval(x, q) for q in QUANTILES]
-        ds[f"{name}_quantile"] = ("quantile", [q[0] for q in qs], {"units": units})
-        ds[f"{name}_quantile_ci95"] = (("quantile", "bound"), [q[1:] for q in qs], {"units": units})
+        ds[f"{name}_quantile"] = (
+            "quantile",
+            [q[0] for q in qs],
+            {"units": units, "long_name": f"sample quantiles of the {long_name}"},
+        )
+        ds[f"{name}_quantile_ci95"] = (
+            ("quantile", "bound"),
+            [q[1:] for q in qs],
+            {
+                "units": units,
+                "long_name": f"order-statistic 95 % interval of the quantiles, {name}",
+            },
+        )
     # running estimates against N (powers of two, then N)
     ns = sorted({*(2**k for k in range(3, int(math.log2(n)) + 1)), n}) if n >= 8 else [n]
     rev = ds["reversed"].values
@@ -219,20 +243,33 @@ def gather(parts: Sequence[xr.Dataset]) -> xr.Dataset:
     ds = ds.assign_coords(
         n_used=("n_used", np.array(ns, dtype=np.int32), {"long_name": "first N samples"})
     )
-    ds["running_p_reversed"] = ("n_used", run["p_reversed"], {"units": "1"})
+    ds["running_p_reversed"] = (
+        "n_used",
+        run["p_reversed"],
+        {"units": "1", "long_name": "probability reversed from the first N samples"},
+    )
     ds["running_p_reversed_ci95"] = (
         ("n_used", "bound"),
         np.c_[run["p_lo"], run["p_hi"]],
-        {"units": "1"},
+        {"units": "1", "long_name": "Wilson 95 % interval of running_p_reversed"},
     )
-    ds["running_depth_mean"] = ("n_used", run["depth"], {"units": "m"})
+    ds["running_depth_mean"] = (
+        "n_used",
+        run["depth"],
+        {"units": "m", "long_name": "mean penetration depth from the first N samples"},
+    )
     ds["running_depth_mean_ci95"] = (
         ("n_used", "bound"),
         np.c_[run["depth_lo"], run["depth_hi"]],
-        {"units": "m"},
+        {"units": "m", "long_name": "Student-t 95 % interval of running_depth_mean"},
     )
     ds = ds.assign_coords(
-        quantile=("quantile", np.array(QUANTILES)), bound=("bound", np.array(["lower", "upper"]))
+        quantile=(
+            "quantile",
+            np.array(QUANTILES),
+            {"units": "1", "long_name": "probability of the quantile"},
+        ),
+        bound=("bound", np.array(["lower", "upper"]), {"long_name": "end of the interval"}),
     )
     ds.attrs["title"] = "pencore ensemble: impacts drawn from stated distributions"
     case = json.loads(ds.attrs["case_json"])
