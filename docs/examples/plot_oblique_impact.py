@@ -2,8 +2,8 @@
 An oblique impact and its trajectory
 ====================================
 
-This example runs one impact of the paper's projectile #2 into the soil target, at
-1400 m/s and 45 degrees of obliquity, and reads the results from the
+This example runs one steep oblique impact of the paper's projectile #2 into the soil
+target (the speed and obliquity are in the first code cell), and reads the results from the
 :class:`xarray.Dataset` that :func:`pencore.simulate` returns.
 
 The conventions are those of :func:`pencore.simulate`: the target fills ``y <= 0``, the
@@ -25,7 +25,8 @@ import numpy as np
 
 import pencore
 
-ds = pencore.simulate("p2", "soil", velocity=1200.0, obliquity=60.0)
+velocity, obliquity = 1200.0, 60.0  # m/s, deg
+ds = pencore.simulate("p2", "soil", velocity=velocity, obliquity=obliquity)
 
 # %%
 # What the Dataset holds
@@ -94,7 +95,7 @@ for t_mark in np.arange(0.0, t[-1], 5e-3):
 ax_path.set_aspect("equal")
 ax_path.set_xlabel("x, along the surface (m)")
 ax_path.set_ylabel("y, height above the surface (m)")
-ax_path.set_title("p2 into soil, 1200 m/s, 60 deg")
+ax_path.set_title(f"p2 into soil, {velocity:g} m/s, {obliquity:g} deg")
 ax_path.legend(loc="lower left")
 
 ax_speed.plot(ds["time"] * 1e3, ds["speed"])
