@@ -180,6 +180,11 @@ def test_schema_every_key_has_type_description_default():
         target = defs[ref.rsplit("/", 1)[-1]] if ref else sub
         assert "type" in target, f"{path} has no type"
         assert "description" in sub or "description" in target, f"{path} has no description"
+        if path.startswith("$defs.distribution."):
+            # the keys of an ensemble distribution, a value inside a list entry like the
+            # entries of other lists (not walked): a default would be merged into every
+            # distribution given (a `value` into a normal one, which is then refused)
+            continue
         assert "default" in sub, f"{path} has no default"
 
 
