@@ -2,7 +2,8 @@
 
 Serves each directory over HTTP on localhost, opens every page of the site (the API
 reference's per-module pages excepted: one of them is opened as a sample) and the report in
-Debian's chromium through chromedriver (selenium), and fails if a page has
+Debian's chromium through chromedriver (selenium); in the report it walks every category
+and opens every result's preview. It fails if a page or a preview has
 
 * an image that did not load (``naturalWidth == 0`` once the page is complete), or
 * a script error, or a request to the site itself that failed, in the browser's console
@@ -31,6 +32,7 @@ from pathlib import Path
 
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.by import By
 
 CHROMIUM = "/usr/bin/chromium"
 CHROMEDRIVER = "/usr/bin/chromedriver"
@@ -101,6 +103,76 @@ def check_page(driver: webdriver.Chrome, url: str, base: str) -> list[str]:
     return problems + console_problems(driver, url, base)
 
 
+#: Entries of the report's sidebar that are not result categories.
+REPORT_GENERAL = ("Workflow", "Statistics", "About")
+
+
+def _open_report_at(driver: webdriver.Chrome, url: str, path: list[str]) -> None:
+    """Load the report and click through the categories in ``path``."""
+    driver.get(url)
+    _wait_for(driver, "//li/a")
+    for name in path:
+        xpath = f"//li[not(ancestor::ol)]/a[normalize-space()={name!r}]"
+        _wait_for(driver, xpath)  # the sidebar renders after the click before
+        _click(driver, driver.find_element(By.XPATH, xpath))
+    # the view of the last category: its breadcrumb shows it
+    if path:
+        _wait_for(driver, f"//ol//a[normalize-space()={path[-1]!r}]")
+    time.sleep(0.3)
+
+
+def _click(driver: webdriver.Chrome, element: object) -> None:
+    """Click through the DOM, as the report's own handlers see it (a pointer click can be
+    intercepted by the sidebar's transition)."""
+    driver.execute_script("arguments[0].click();", element)
+
+
+def _wait_for(driver: webdriver.Chrome, xpath: str, seconds: float = 20.0) -> None:
+    deadline = time.monotonic() + seconds
+    while not driver.find_elements(By.XPATH, xpath):
+        if time.monotonic() > deadline:
+            raise TimeoutError(f"{xpath} did not appear in {seconds:g} s")
+        time.sleep(0.1)
+
+
+def check_report(driver: webdriver.Chrome, url: str, base: str) -> tuple[list[str], int]:
+    """Walk every category of a Snakemake report and open every result's preview;
+    problems (broken images, console errors) and the number of results opened."""
+    problems: list[str] = []
+    opened = 0
+    paths: list[list[str]] = [[]]
+    while paths:
+        path = paths.pop()
+        where = f"{url} [{' / '.join(path) or 'front page'}]"
+        try:
+            _open_report_at(driver, url, path)
+        except TimeoutError as exc:
+            problems.append(f"{where}: the view did not open ({exc})")
+            problems += console_problems(driver, where, base)
+            continue
+        problems += console_problems(driver, where, base)
+        names = [
+            a.text.strip()
+            for a in driver.find_elements(By.XPATH, "//li[not(ancestor::ol)]/a")
+            if a.text.strip() and a.text.strip() not in REPORT_GENERAL
+        ]
+        paths += [[*path, n] for n in names if n not in path]
+        rows = len(driver.find_elements(By.XPATH, "//tr[td]"))
+        for i in range(rows):
+            _open_report_at(driver, url, path)
+            row = driver.find_elements(By.XPATH, "//tr[td]")[i]
+            label = " / ".join([*path, row.find_element(By.TAG_NAME, "td").text])
+            _click(driver, row.find_element(By.XPATH, ".//a[@iconname='eye']"))
+            time.sleep(0.3)
+            opened += 1
+            problems += [
+                f"{url} [{label}]: image did not load: {src[:60]}"
+                for src in driver.execute_script(BROKEN_IMAGES)
+            ]
+            problems += console_problems(driver, f"{url} [{label}]", base)
+    return problems, opened
+
+
 def site_pages(site: Path) -> list[str]:
     pages = sorted(p.relative_to(site).as_posix() for p in site.rglob("*.html"))
     api = [p for p in pages if p.startswith("api/generated/")]
@@ -129,14 +201,10 @@ def main(argv: list[str] | None = None) -> int:
             with serve(args.report.parent) as base:
                 url = f"{base}/{args.report.name}"
                 problems += check_page(driver, url, base)
-                time.sleep(1.0)  # the report renders its panels after loading
-                problems += console_problems(driver, url, base)
-                problems += [
-                    f"{url}: image did not load: {src}"
-                    for src in driver.execute_script(BROKEN_IMAGES)
-                ]
                 driver.save_screenshot(str(args.screenshots / "report.png"))
-                print(f"browser check: {args.report}")
+                found, opened = check_report(driver, url, base)
+                problems += found
+                print(f"browser check: {args.report}, {opened} results opened")
     finally:
         driver.quit()
     for problem in problems:
