@@ -182,9 +182,9 @@ def add_window_options(p: argparse.ArgumentParser) -> None:
         type=number_type("crater_depth"),
         default=None,
         metavar="K",
-        help="near-surface (crater) region in calibers: the resistance rises linearly from "
-        "0 at a layer's top face to full at K projectile diameters (Forrestal: K = 2; "
-        "default: each medium's own, 0 = off)",
+        help="near-surface (crater) region in calibers: Forrestal's axial force F = c z "
+        "from a layer's top face to K projectile diameters (K = 2 there; at least the "
+        "nose length; default: each medium's own, 0 = off)",
     )
     p.add_argument(
         "--free-surface-depth",

@@ -193,7 +193,7 @@ LIMITS: dict[str, Limit] = {
         0.0,
         100.0,
         kind="physical / guard",
-        why=">= 0 (0: off); near-surface resistance ramp, Forrestal k = 2",
+        why=">= 0 (0: off); Forrestal's crater region (F = c z), k = 2 there",
     ),
     "free_surface_depth": Limit(
         "free-surface depth",

@@ -15,28 +15,30 @@ Friction law: Coulomb friction ``mu(V_tau) sigma_n`` opposing sliding, with ``mu
 piecewise-linear function of the sliding speed ``V_tau`` (m/s), given as a table
 (a single row is a constant coefficient). Zero by default.
 
-Depth windows (both off by default; the paper's model has neither). The stress of an
-element at depth ``zeta`` (m) below the top face of its layer, and at distance ``delta``
-(m) from the nearest *free* face of the layer (the target's front face, a face next to
-an air gap, the rear face of the last plate), is multiplied by::
+Near-surface options (both off by default; the paper's model has neither).
 
-    g(zeta, delta) = min(1, zeta / (k_c d)) * min(1, delta / (k_f d))
+* ``crater_depth`` (``k_c``, calibers): the near-surface (crater) region of Forrestal et
+  al., "An empirical equation for penetration depth of ogive-nose projectiles into
+  concrete targets", IJIE 15 (1994) 395-405, and Frew et al., "A spherical
+  cavity-expansion penetration model for concrete targets", Int. J. Solids Struct. 35
+  (1998) 4235-4250: there the axial force on the nose rises linearly with tip depth,
+  ``F = c z``, over a crater of ``k_c d`` (k = 2; Li & Chen, IJIE 28 (2003) 93-116, give
+  ``k = 0.707 + H/d``, H the nose length), and takes the cavity-expansion value below.
+  pencore multiplies every element's load in the layer by one factor chosen so that the
+  axial force is exactly Forrestal's ``c z`` (with ``c`` read off the present depth and
+  speed, see :mod:`pencore.kernels.crater`); the depth in normal impact is then
+  :func:`pencore.closedform.forrestal_crater_depth`. ``k_c d`` must be at least the nose
+  length (the crater ends with the nose embedded).
 
-with ``d`` the projectile diameter, ``k_c = crater_depth`` and ``k_f =
-free_surface_depth`` (calibers; a factor is 1 when its ``k`` is 0).
+The free-surface option multiplies the stress of an element at depth ``zeta`` (m) below
+the top face of its layer and at distance ``delta`` (m) from the nearest *free* face of
+the layer (the target's front face, a face next to an air gap, the rear face of the last
+plate) by::
 
-* ``crater_depth``: the near-surface (crater) region of Forrestal et al., "An empirical
-  equation for penetration depth of ogive-nose projectiles into concrete targets",
-  IJIE 15 (1994) 395-405, and Frew et al., "A spherical cavity-expansion penetration
-  model for concrete targets", Int. J. Solids Struct. 35 (1998) 4235-4250: there the
-  axial force on the nose rises linearly with tip depth, ``F = c z``, over a crater of
-  ``k`` calibers (k = 2), and takes the cavity-expansion value below; Li & Chen, IJIE 28
-  (2003) 93-116, give ``k = 0.707 + H/d`` (H: nose length). pencore's reading applies the
-  linear ramp to each surface element's stress instead of to the total force: it has the
-  two features of those models (no resistance at the surface, the full law from ``k d``
-  on) but the total force is ``c z`` only approximately (exactly for a flat nose). It
-  is an approximation, not those models' formula; :func:`pencore.closedform.depth`
-  gives the exact 1-D depth of pencore's form.
+    g(delta) = min(1, delta / (k_f d))
+
+with ``d`` the projectile diameter and ``k_f = free_surface_depth`` (calibers; 1 when 0).
+
 * ``free_surface_depth``: cavity-expansion trajectory codes reduce the stress on
   elements near a free surface (Warren & Poormon, IJIE 25 (2001) 993-1022; Warren,
   Hanchak & Poormon, IJIE 30 (2004) 1307-1331; Longcope's PENCRV3D). pencore's form is
@@ -44,8 +46,9 @@ free_surface_depth`` (calibers; a factor is 1 when its ``k`` is 0).
   functions of those codes could not be read for this implementation): off by default,
   and a limit test checks that it changes nothing away from free faces.
 
-The ring kernel evaluates ``g`` at the centre of each surface ring (exact for a ring
-parallel to the surface, i.e. normal incidence); the load-point kernels at each point.
+The ring kernel evaluates the free-surface factor at the centre of each surface ring
+(exact for a ring parallel to the surface, i.e. normal incidence); the load-point kernels
+at each point.
 """
 
 from __future__ import annotations
@@ -274,39 +277,71 @@ class Target:
         )
         return Target(self.name, layers)
 
-    def kernel_arrays(self, diameter: float | None = None) -> tuple[np.ndarray, ...]:
+    def kernel_arrays(
+        self,
+        diameter: float | None = None,
+        mass: float | None = None,
+        nose_length: float | None = None,
+    ) -> tuple[np.ndarray, ...]:
         """Arrays for the compiled kernel.
 
         ``diameter`` (m) of the projectile scales the depth windows (needed only when a
-        medium has ``crater_depth`` or ``free_surface_depth``).
+        medium has ``crater_depth`` or ``free_surface_depth``); the crater also needs the
+        projectile's ``mass`` (kg) and ``nose_length`` (m).
 
         Gaps are left out (their elements carry no load), so consecutive rows need not
         touch.
 
         Returns
         -------
-        bounds : (n, 2) or (n, 5) float
+        bounds : (n, 2), (n, 5) or (n, 6) float
             ``y_top, y_bottom`` of each layer of a medium (m); the last bottom is
             ``-inf`` for a semi-infinite target, the rear face otherwise. With a depth
             window on, three more columns (m): crater depth ``k_c d``, free-surface zone
             ``k_f d`` at the top face if it is free (else 0), and at the bottom face if it
-            is free (else 0); see :func:`pencore.kernels.windows.depth_factor`.
+            is free (else 0); see :func:`pencore.kernels.windows.depth_factor`. With a
+            crater on, a sixth: the projectile mass (kg), for
+            :func:`pencore.kernels.crater.crater_factor`.
         coef : (n, p) float
             Resistance coefficients, zero-padded.
         fric : (n, k, 2) float
             Friction tables (speed, mu), padded by repeating the last row.
+
+        Raises
+        ------
+        TargetError
+            A window without ``diameter``, a crater without ``mass`` and ``nose_length``,
+            or a crater shorter than the nose (Forrestal's crater ends with the nose
+            embedded: ``k d >= L_n``).
         """
         solid = self.solid_layers
         n = len(solid)
         p = max(len(lay.medium.coefficients) for lay in solid)
         k = max(len(lay.medium.friction_speeds) for lay in solid)
         windowed = any(lay.medium.windowed for lay in solid)
+        crater = any(lay.medium.crater_depth > 0.0 for lay in solid)
         if windowed and not (diameter is not None and diameter > 0.0):
             raise TargetError(
                 f"target {self.name!r}: crater_depth/free_surface_depth need the projectile "
                 "diameter (pass diameter= to kernel_arrays)"
             )
-        bounds = np.zeros((n, 5 if windowed else 2))
+        if crater:
+            if mass is None or nose_length is None or not mass > 0.0:
+                raise TargetError(
+                    f"target {self.name!r}: crater_depth needs the projectile mass and nose "
+                    "length (pass mass= and nose_length= to kernel_arrays)"
+                )
+            for lay in solid:
+                kc = lay.medium.crater_depth
+                if 0.0 < kc * diameter < nose_length * (1.0 - 1e-12):
+                    raise TargetError(
+                        f"medium {lay.medium.name!r}: crater_depth {kc!r} calibers is shorter "
+                        f"than the nose ({nose_length / diameter:.4g} calibers); Forrestal's "
+                        "crater region ends with the nose embedded, so crater_depth must be "
+                        f">= {nose_length / diameter:.4g} (Forrestal et al. 1994: 2; Li & "
+                        "Chen 2003: 0.707 + nose length / d)"
+                    )
+        bounds = np.zeros((n, 6 if crater else 5 if windowed else 2))
         coef = np.zeros((n, p))
         fric = np.empty((n, k, 2))
         top = 0.0
@@ -326,6 +361,8 @@ class Target:
                 bounds[j, 2] = lay.medium.crater_depth * diameter
                 bounds[j, 3] = zone if free_top else 0.0
                 bounds[j, 4] = zone if free_bottom and math.isfinite(bottom) else 0.0
+            if crater:
+                bounds[j, 5] = mass
             c = lay.medium.coefficients
             coef[j, : len(c)] = c
             sp, mu = lay.medium.friction_speeds, lay.medium.friction_mu
