@@ -95,3 +95,56 @@ def test_yaml_keys_and_their_limits():
         target_from_dict({"name": "t", "layers": [{"medium": "concrete", "crater_depth": -1}]})
     with pytest.raises(InputError, match="free-surface depth"):
         replace(CONCRETE, free_surface_depth=1e3)
+
+
+def test_finite_sphere_factor_is_hill_and_tends_to_one():
+    from pencore.kernels.windows import finite_sphere_factor
+
+    a, ratio = 0.01, 5.0
+    denom = 1.0 + 3.0 * math.log(ratio)
+    assert finite_sphere_factor(0.0, a, ratio) == 0.0
+    # plastic zone just reaching the face (b = c): 3 ln(c/a) / (1 + 3 ln(c/a))
+    assert finite_sphere_factor((ratio - 1.0) * a, a, ratio) == pytest.approx(
+        3.0 * math.log(ratio) / denom, rel=1e-14
+    )
+    # fully plastic shell, b < c: 2 Y ln(b/a) over the infinite medium's pressure
+    b = 2.0 * a
+    assert finite_sphere_factor(b - a, a, ratio) == pytest.approx(
+        3.0 * math.log(2.0) / denom, rel=1e-14
+    )
+    d = np.linspace(0.0, 40.0 * ratio * a, 400)
+    f = np.array([finite_sphere_factor(x, a, ratio) for x in d])
+    assert np.all(np.diff(f) > 0.0) and f[-1] < 1.0
+    # far from the face the deficit is (c/b)^3 / (1 + 3 ln(c/a))
+    bb = a + d[-1]
+    assert 1.0 - f[-1] == pytest.approx((ratio * a / bb) ** 3 / denom, rel=1e-9)
+
+
+def test_finite_sphere_far_from_every_face_is_the_half_space_law():
+    ratio = 5.0
+    slab = Target("slab", (Layer(replace(CONCRETE, plastic_zone_ratio=ratio), 40.0),))
+    plain = Target("plain", (Layer(CONCRETE, 40.0),))
+    mp = P2.mass_properties()
+    on = slab.kernel_arrays(P2.diameter, mp.mass, P2.nose_length)
+    off = plain.kernel_arrays(P2.diameter)
+    rings = P2.rings(48, 24, 4).as_array()
+    y = initial_state(P2, rings, 300.0, math.radians(20.0), 0.0, 0.0, None, 0.0, "cm")
+    y[1] -= 20.0  # about 20 m from both faces, c = 0.24 m
+    f_on = contact_loads(y, rings, *on, 1e-3, 0)
+    f_off = contact_loads(y, rings, *off, 1e-3, 0)
+    a, c = 0.5 * P2.diameter, ratio * 0.5 * P2.diameter
+    bound = (c / 19.0) ** 3 / (1.0 + 3.0 * math.log(ratio))  # nearest element >= 19 m away
+    assert bound < 1e-5
+    np.testing.assert_allclose(f_on[0], f_off[0], rtol=bound, atol=bound * abs(f_off[0][0]))
+    assert not np.array_equal(f_on[0], f_off[0])  # reduced, by less than the bound
+    # near the rear face the load falls
+    y[1] -= 20.0 - 0.05
+    assert abs(contact_loads(y, rings, *on, 1e-3, 0)[0][0]) < abs(
+        contact_loads(y, rings, *off, 1e-3, 0)[0][0]
+    )
+    assert a < c
+
+
+def test_plastic_zone_ratio_must_exceed_one():
+    with pytest.raises(TargetError, match="plastic_zone_ratio"):
+        replace(CONCRETE, plastic_zone_ratio=0.5)

@@ -63,11 +63,16 @@ from pencore.errors import InputError, TargetError
 from pencore.inputs.limits import number
 
 __all__ = [
+    "WINDOW_COLUMNS",
     "Medium",
     "Layer",
     "Target",
 ]
 
+
+#: Columns of the layer array when a near-surface option is on
+#: (:meth:`Target.kernel_arrays`).
+WINDOW_COLUMNS = 9
 
 #: Most resistance coefficients a medium may have: the compiled kernels hold the stress
 #: polynomial, its smoothed step (one degree more) and the Jacobian's moments (three
@@ -103,7 +108,12 @@ class Medium:
         Near-surface (crater) region in projectile calibers (0: off); see the module
         docstring.
     free_surface_depth : float
-        Free-surface reduction zone in calibers (0: off); see the module docstring.
+        Free-surface reduction zone in calibers (0: off); pencore's own linear ramp, see
+        the module docstring.
+    plastic_zone_ratio : float
+        Free-surface reduction from the spherical cavity in a finite sphere (Hill 1950):
+        the plastic-zone radius over the cavity radius, ``c/a`` of the half-space law
+        (0: off; otherwise > 1); see the module docstring.
     """
 
     name: str
@@ -114,11 +124,17 @@ class Medium:
     source: str = ""
     crater_depth: float = 0.0
     free_surface_depth: float = 0.0
+    plastic_zone_ratio: float = 0.0
 
     def __post_init__(self) -> None:
         what = f"medium {self.name!r}"
-        for key in ("crater_depth", "free_surface_depth"):
+        for key in ("crater_depth", "free_surface_depth", "plastic_zone_ratio"):
             object.__setattr__(self, key, _check(key, getattr(self, key), what))
+        if 0.0 < self.plastic_zone_ratio <= 1.0:
+            raise TargetError(
+                f"{what}: plastic_zone_ratio must be 0 (off) or > 1 (the plastic zone "
+                f"encloses the cavity), got {self.plastic_zone_ratio!r}"
+            )
         if isinstance(self.coefficients, str) or not hasattr(self.coefficients, "__iter__"):
             raise TargetError(f"{what}: coefficients must be a list [a0, a1, a2, ...]")
         c = tuple(_check("coefficient", x, f"{what} a{i}") for i, x in enumerate(self.coefficients))
@@ -169,8 +185,13 @@ class Medium:
 
     @property
     def windowed(self) -> bool:
-        """True when a crater or free-surface depth window is on."""
-        return self.crater_depth > 0.0 or self.free_surface_depth > 0.0
+        """True when a crater or a free-surface reduction is on."""
+        return self.crater_depth > 0.0 or self.free_surface_depth > 0.0 or self.free_sphere
+
+    @property
+    def free_sphere(self) -> bool:
+        """True when the finite-sphere free-surface reduction is on."""
+        return self.plastic_zone_ratio > 0.0
 
 
 @dataclass(frozen=True)
@@ -262,15 +283,20 @@ class Target:
         return -self.thickness
 
     def with_windows(
-        self, crater_depth: float | None = None, free_surface_depth: float | None = None
+        self,
+        crater_depth: float | None = None,
+        free_surface_depth: float | None = None,
+        plastic_zone_ratio: float | None = None,
     ) -> Target:
         """A copy whose media all have the given ``crater_depth`` / ``free_surface_depth``
-        (calibers; None keeps each medium's own)."""
+        (calibers) / ``plastic_zone_ratio`` (None keeps each medium's own)."""
         kw = {}
         if crater_depth is not None:
             kw["crater_depth"] = crater_depth
         if free_surface_depth is not None:
             kw["free_surface_depth"] = free_surface_depth
+        if plastic_zone_ratio is not None:
+            kw["plastic_zone_ratio"] = plastic_zone_ratio
         layers = tuple(
             lay if lay.is_gap else Layer(replace(lay.medium, **kw), lay.thickness)
             for lay in self.layers
@@ -294,13 +320,15 @@ class Target:
 
         Returns
         -------
-        bounds : (n, 2), (n, 5) or (n, 6) float
+        bounds : (n, 2) or (n, 9) float
             ``y_top, y_bottom`` of each layer of a medium (m); the last bottom is
-            ``-inf`` for a semi-infinite target, the rear face otherwise. With a depth
-            window on, three more columns (m): crater depth ``k_c d``, free-surface zone
-            ``k_f d`` at the top face if it is free (else 0), and at the bottom face if it
-            is free (else 0); see :func:`pencore.kernels.windows.depth_factor`. With a
-            crater on, a sixth: the projectile mass (kg), for
+            ``-inf`` for a semi-infinite target, the rear face otherwise. With a
+            near-surface option on, seven more: crater depth ``k_c d`` (m), free-surface
+            zone ``k_f d`` (m) at the top face if it is free (else 0) and at the bottom
+            face if it is free (else 0), the projectile mass (kg; 0 without a crater),
+            the plastic-zone ratio ``c/a`` at the top face if it is free (else 0) and at
+            the bottom face if it is free (else 0), and the projectile radius (m); see
+            :func:`pencore.kernels.windows.depth_factor` and
             :func:`pencore.kernels.crater.crater_factor`.
         coef : (n, p) float
             Resistance coefficients, zero-padded.
@@ -341,7 +369,7 @@ class Target:
                         f">= {nose_length / diameter:.4g} (Forrestal et al. 1994: 2; Li & "
                         "Chen 2003: 0.707 + nose length / d)"
                     )
-        bounds = np.zeros((n, 6 if crater else 5 if windowed else 2))
+        bounds = np.zeros((n, WINDOW_COLUMNS if windowed else 2))
         coef = np.zeros((n, p))
         fric = np.empty((n, k, 2))
         top = 0.0
@@ -361,8 +389,11 @@ class Target:
                 bounds[j, 2] = lay.medium.crater_depth * diameter
                 bounds[j, 3] = zone if free_top else 0.0
                 bounds[j, 4] = zone if free_bottom and math.isfinite(bottom) else 0.0
-            if crater:
-                bounds[j, 5] = mass
+                bounds[j, 5] = mass if crater else 0.0
+                ratio = lay.medium.plastic_zone_ratio
+                bounds[j, 6] = ratio if free_top else 0.0
+                bounds[j, 7] = ratio if free_bottom and math.isfinite(bottom) else 0.0
+                bounds[j, 8] = 0.5 * diameter
             c = lay.medium.coefficients
             coef[j, : len(c)] = c
             sp, mu = lay.medium.friction_speeds, lay.medium.friction_mu

@@ -47,12 +47,19 @@ import math
 
 import numba as nb
 
-__all__ = ["CRATER_COLUMNS", "crater_shape", "crater_factor"]
+__all__ = ["has_crater", "crater_shape", "crater_factor"]
 
-#: Columns of the layer array with the crater on: ``y_top, y_bottom, k_c d, free-surface
-#: top zone, free-surface bottom zone, projectile mass`` (see
-#: :meth:`pencore.inputs.target.Target.kernel_arrays`).
-CRATER_COLUMNS = 6
+
+@nb.njit(cache=True)
+def has_crater(bounds):
+    """True when a layer of ``bounds`` (:meth:`pencore.inputs.target.Target.kernel_arrays`)
+    has a crater region (column 2 > 0, present only with the near-surface columns)."""
+    if bounds.shape[1] < 6:
+        return False
+    for lay in range(bounds.shape[0]):
+        if bounds[lay, 2] > 0.0:
+            return True
+    return False
 
 
 @nb.njit(cache=True)

@@ -26,7 +26,7 @@ import numpy as np
 from pencore.inputs.geometry import Projectile, Rings
 from pencore.inputs.models import SHANK_CAVITY, SURFACE_PANELS, Emulation, ShankModel
 from pencore.kernels.contact_points import point_loads
-from pencore.kernels.crater import CRATER_COLUMNS, crater_factor
+from pencore.kernels.crater import crater_factor, has_crater
 from pencore.kernels.dynamics import contact_loads, equations_of_motion, quat_to_matrix
 from pencore.kernels.panels import N_COLUMNS, panel_points, ring_points
 
@@ -37,11 +37,11 @@ __all__ = ["rhs_model", "model_loads", "kernel_model", "default_model"]
 def model_loads(y, rings, bounds, coef, fric, eps, n_gauss, model):
     """Contact force and moment (body frame) and clearance under ``model``.
 
-    With the crater columns in ``bounds`` (:data:`pencore.kernels.crater.CRATER_COLUMNS`),
-    each layer's loads are computed alone and multiplied by its crater factor
+    With a crater in ``bounds`` (:func:`pencore.kernels.crater.has_crater`), each layer's
+    loads are computed alone and multiplied by its crater factor
     (:func:`pencore.kernels.crater.crater_factor`); otherwise this is the plain sum.
     """
-    if bounds.shape[1] < CRATER_COLUMNS:
+    if not has_crater(bounds):
         return _plain_loads(y, rings, bounds, coef, fric, eps, n_gauss, model)
     rot = quat_to_matrix(y[3:7])
     fb = np.zeros(3)
