@@ -72,7 +72,7 @@ __all__ = [
 
 #: Columns of the layer array when a near-surface option is on
 #: (:meth:`Target.kernel_arrays`).
-WINDOW_COLUMNS = 9
+WINDOW_COLUMNS = 10
 
 #: Most resistance coefficients a medium may have: the compiled kernels hold the stress
 #: polynomial, its smoothed step (one degree more) and the Jacobian's moments (three
@@ -308,26 +308,29 @@ class Target:
         diameter: float | None = None,
         mass: float | None = None,
         nose_length: float | None = None,
+        tip: float | None = None,
     ) -> tuple[np.ndarray, ...]:
         """Arrays for the compiled kernel.
 
         ``diameter`` (m) of the projectile scales the depth windows (needed only when a
         medium has ``crater_depth`` or ``free_surface_depth``); the crater also needs the
-        projectile's ``mass`` (kg) and ``nose_length`` (m).
+        projectile's ``mass`` (kg), ``nose_length`` (m) and ``tip`` (m: axial coordinate
+        of the nose tip from the centre of mass).
 
         Gaps are left out (their elements carry no load), so consecutive rows need not
         touch.
 
         Returns
         -------
-        bounds : (n, 2) or (n, 9) float
+        bounds : (n, 2) or (n, 10) float
             ``y_top, y_bottom`` of each layer of a medium (m); the last bottom is
             ``-inf`` for a semi-infinite target, the rear face otherwise. With a
             near-surface option on, seven more: crater depth ``k_c d`` (m), free-surface
             zone ``k_f d`` (m) at the top face if it is free (else 0) and at the bottom
             face if it is free (else 0), the projectile mass (kg; 0 without a crater),
             the plastic-zone ratio ``c/a`` at the top face if it is free (else 0) and at
-            the bottom face if it is free (else 0), and the projectile radius (m); see
+            the bottom face if it is free (else 0), the projectile radius (m) and the
+            tip's axial coordinate (m; 0 without a crater); see
             :func:`pencore.kernels.windows.depth_factor` and
             :func:`pencore.kernels.crater.crater_factor`.
         coef : (n, p) float
@@ -354,10 +357,10 @@ class Target:
                 "diameter (pass diameter= to kernel_arrays)"
             )
         if crater:
-            if mass is None or nose_length is None or not mass > 0.0:
+            if mass is None or nose_length is None or tip is None or not mass > 0.0:
                 raise TargetError(
-                    f"target {self.name!r}: crater_depth needs the projectile mass and nose "
-                    "length (pass mass= and nose_length= to kernel_arrays)"
+                    f"target {self.name!r}: crater_depth needs the projectile mass, nose "
+                    "length and tip (pass mass=, nose_length=, tip= to kernel_arrays)"
                 )
             for lay in solid:
                 kc = lay.medium.crater_depth
@@ -394,6 +397,7 @@ class Target:
                 bounds[j, 6] = ratio if free_top else 0.0
                 bounds[j, 7] = ratio if free_bottom and math.isfinite(bottom) else 0.0
                 bounds[j, 8] = 0.5 * diameter
+                bounds[j, 9] = tip if crater else 0.0
             c = lay.medium.coefficients
             coef[j, : len(c)] = c
             sp, mu = lay.medium.friction_speeds, lay.medium.friction_mu

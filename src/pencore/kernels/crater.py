@@ -20,20 +20,21 @@ a force of the present depth and speed only, equal to ``c z`` on every normal tr
 (``g(0) = 0``, ``g(1) = 1``). The depth is then Forrestal's closed form exactly
 (:func:`pencore.closedform.forrestal_crater_depth`).
 
-Element by element: the loads of the layer are computed as without a crater (every
-element's stress from its own normal velocity, the DAFL), and all of them are multiplied by
-one factor ``lam = g(s) F_full(V_a) / R``, with ``R`` the DAFL axial resistance of the
-embedded part, ``V_a`` the velocity component along the body axis, and ``s`` the depth of
-the body's deepest point below the layer's top face over ``k d``. So:
+Element by element: every element's stress is the DAFL's (its own normal velocity and
+normal) times one factor of the layer, ``lam(z, V_a) = g(s) F_full(V_a) / R_ref(z, V_a)``,
+with ``z`` the tip's depth below the layer's top face (``s = z / (k d)``), ``V_a`` the
+velocity component along the body axis, and ``R_ref`` the DAFL axial resistance of the
+same body in *normal* entry at tip depth ``z`` and speed ``V_a`` (evaluated by the kernel
+itself on that reference state). So:
 
-* normal entry: the axial force is ``g(s) F_full(V) = c z``, Forrestal's law, whatever part
-  of the nose is embedded;
-* oblique or yawed entry: the axial resistance is still Forrestal's ``c z`` in the axial
-  speed and the deepest point's depth, and the lateral force and the moment keep the
-  ratio to it that the DAFL gives for the embedded elements (the distribution over the
-  elements, hence the direction of the load and its centre of pressure, is the DAFL's);
-* ``s >= 1``: ``lam = 1`` (the DAFL unchanged); ``s <= 0``: ``lam = 0``. If the embedded
-  part has no axial resistance (``R <= 0``, e.g. a side slap), ``lam = g(s)``.
+* normal entry: the reference state is the state, and the axial force is
+  ``g(s) F_full(V) = c z``, Forrestal's law, whatever part of the nose is embedded;
+* oblique or yawed entry: each element carries the factor it would carry in normal
+  entry at the same tip depth and axial speed; the distribution of the load over the
+  elements (its direction, its centre of pressure) is the DAFL's; the axial load is not
+  ``c z`` (a tilted nose has a different part of itself below a given tip depth);
+* ``s >= 1``: ``lam = 1`` (the DAFL unchanged); tip above the face: the deepest point's
+  depth stands in for ``z`` (a body touching side-first); ``z <= 0``: ``lam = 0``.
 
 ``F_full`` and ``N*`` are the full-nose moments ``B_k = sum 2 pi w na^(k+1)`` over the
 rings of the kernel (``na > 0``), so that at full embedment ``lam`` tends to ``g``. ``beta``
@@ -47,7 +48,13 @@ import math
 
 import numba as nb
 
-__all__ = ["has_crater", "crater_shape", "crater_factor"]
+__all__ = [
+    "has_crater",
+    "crater_shape",
+    "crater_depth_and_speed",
+    "reference_state",
+    "crater_factor",
+]
 
 
 @nb.njit(cache=True)
@@ -74,24 +81,58 @@ def crater_shape(s, beta):
 
 
 @nb.njit(cache=True)
-def crater_factor(y, rot, rings, bounds, coef, lay, axial_force, clearance):
+def crater_depth_and_speed(y, rot, bounds, lay, clearance):
+    """Tip depth ``z`` (m) below the top face of layer ``lay`` (the deepest point's depth
+    when the tip is above the face) and the axial speed ``V_a >= 0`` (m/s)."""
+    tip = y[1] + rot[1, 0] * bounds[lay, 9]
+    z = bounds[lay, 0] - tip
+    if z <= 0.0:
+        z = bounds[lay, 0] - clearance
+    va = rot[0, 0] * y[7] + rot[1, 0] * y[8] + rot[2, 0] * y[9]
+    return z, max(va, 0.0)
+
+
+@nb.njit(cache=True)
+def reference_state(y, bounds, lay, z, va):
+    """The normal-entry state with the tip ``z`` (m) below the top face of layer ``lay``,
+    moving along its axis (``-y``) at ``va`` (m/s), no rotation; other entries of ``y``
+    (the work) kept."""
+    yr = y.copy()
+    yr[0] = 0.0
+    yr[1] = bounds[lay, 0] - z + bounds[lay, 9]
+    yr[2] = 0.0
+    # body axis along -y: a quarter turn about z (exact zeros, as the initial state)
+    h = math.sqrt(0.5)
+    yr[3] = h
+    yr[4] = 0.0
+    yr[5] = 0.0
+    yr[6] = -h
+    yr[7] = 0.0
+    yr[8] = -va
+    yr[9] = 0.0
+    yr[10] = 0.0
+    yr[11] = 0.0
+    yr[12] = 0.0
+    return yr
+
+
+@nb.njit(cache=True)
+def crater_factor(y, rings, bounds, coef, lay, z, va, ref_axial_force):
     """Factor ``lam`` on every load of layer ``lay`` (module docstring).
 
-    ``axial_force`` (N) is the body-frame axial component of the layer's loads without the
-    crater (negative when it resists), ``clearance`` (m) the height of the body's deepest
-    point, ``rot`` the rotation matrix of the state ``y``. 1 when the layer has no crater.
+    ``z`` (m) and ``va`` (m/s) from :func:`crater_depth_and_speed`; ``ref_axial_force``
+    (N) is the body-frame axial load of the layer on :func:`reference_state` without the
+    crater (negative when it resists). 1 when the layer has no crater or ``z >= k d``.
     """
     kd = bounds[lay, 2]
     if kd <= 0.0:
         return 1.0
-    s = (bounds[lay, 0] - clearance) / kd
+    s = z / kd
     if s >= 1.0:
         return 1.0
     if s <= 0.0:
         return 0.0
     mass = bounds[lay, 5]
-    va = rot[0, 0] * y[7] + rot[1, 0] * y[8] + rot[2, 0] * y[9]
-    va = max(va, 0.0)
     ncoef = coef.shape[1]
     full = 0.0
     b2 = 0.0
@@ -99,8 +140,7 @@ def crater_factor(y, rot, rings, bounds, coef, lay, axial_force, clearance):
         na = rings[i, 2]
         if na <= 0.0:
             continue
-        base = 2.0 * math.pi * rings[i, 4] * na
-        term = base
+        term = 2.0 * math.pi * rings[i, 4] * na
         vk = 1.0
         for k in range(ncoef):
             full += coef[lay, k] * vk * term
@@ -108,12 +148,9 @@ def crater_factor(y, rot, rings, bounds, coef, lay, axial_force, clearance):
                 b2 += term
             term *= na
             vk *= va
-    if ncoef > 2:
-        beta = kd * coef[lay, 2] * b2 / mass
-    else:
-        beta = 0.0
+    beta = kd * coef[lay, 2] * b2 / mass if ncoef > 2 else 0.0
     g = crater_shape(s, beta)
-    resist = -axial_force
+    resist = -ref_axial_force
     if not resist > 0.0:
         return g
     return g * full / resist

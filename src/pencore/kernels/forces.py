@@ -26,7 +26,12 @@ import numpy as np
 from pencore.inputs.geometry import Projectile, Rings
 from pencore.inputs.models import SHANK_CAVITY, SURFACE_PANELS, Emulation, ShankModel
 from pencore.kernels.contact_points import point_loads
-from pencore.kernels.crater import crater_factor, has_crater
+from pencore.kernels.crater import (
+    crater_depth_and_speed,
+    crater_factor,
+    has_crater,
+    reference_state,
+)
 from pencore.kernels.dynamics import contact_loads, equations_of_motion, quat_to_matrix
 from pencore.kernels.panels import N_COLUMNS, panel_points, ring_points
 
@@ -50,8 +55,18 @@ def model_loads(y, rings, bounds, coef, fric, eps, n_gauss, model):
     for lay in range(bounds.shape[0]):
         b = bounds[lay : lay + 1]
         c = coef[lay : lay + 1]
-        f1, m1, c1 = _plain_loads(y, rings, b, c, fric[lay : lay + 1], eps, n_gauss, model)
-        lam = crater_factor(y, rot, rings, b, c, 0, f1[0], c1)
+        fr = fric[lay : lay + 1]
+        f1, m1, c1 = _plain_loads(y, rings, b, c, fr, eps, n_gauss, model)
+        lam = 1.0
+        if b[0, 2] > 0.0:
+            z, va = crater_depth_and_speed(y, rot, b, 0, c1)
+            if z < b[0, 2]:
+                yr = reference_state(y, b, 0, z, va)
+                if np.array_equal(yr[1:13], y[1:13]):
+                    ref = f1[0]  # the state is its own normal-entry reference
+                else:
+                    ref = _plain_loads(yr, rings, b, c, fr, eps, n_gauss, model)[0][0]
+                lam = crater_factor(y, rings, b, c, 0, z, va, ref)
         for k in range(3):
             fb[k] += lam * f1[k]
             mb[k] += lam * m1[k]
