@@ -183,7 +183,8 @@ def forrestal_crater_depth(
     defined; the same constant of the motion that makes the model local
     (:mod:`pencore.kernels.crater`), ``c k d (1 + beta) = pi a^2 (a0 + N* a2 V0^2)`` with
     ``beta = k d pi a^2 N* a2 / m``, gives ``z = sqrt(m V0^2 / c)`` (continuous with the
-    ``V1 = 0`` case). Assumes the nose is embedded at ``z = k d`` (``k d >= L_n``)."""
+    ``V1 = 0`` case; it is Li & Chen's shallow-penetration formula, IJIE 28 (2003) 93-116,
+    Eq. 15a, in dimensional form). Assumes the nose is embedded at ``z = k d`` (``k d >= L_n``)."""
     a0, a2 = _coeffs(medium)
     a = projectile.radius
     kd = k * projectile.diameter

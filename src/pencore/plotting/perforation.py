@@ -129,7 +129,8 @@ def plot_ballistic_map(bl_map: xr.Dataset, cmp: xr.Dataset | None = None) -> Fig
     """Ballistic-limit map and the obliquity ratio, with the line-of-sight rule.
 
     Left: ``v_bl`` against plate thickness (calibers) for each obliquity, the paper's
-    model (first option), with the line-of-sight rule ``v_bl(0) sec(theta)`` dashed.
+    model (option ``none``, else the first), with the line-of-sight rule
+    ``v_bl(0) sec(theta)`` dashed.
     Right: ``v_bl(theta) / v_bl(0)`` against obliquity at the map's thickness nearest
     the measured plates' median, one line per near-surface option, ``sec(theta)``
     dashed, and the measured ratios (``cmp``, :func:`pencore.studies.obliquity.
@@ -137,7 +138,8 @@ def plot_ballistic_map(bl_map: xr.Dataset, cmp: xr.Dataset | None = None) -> Fig
     """
     fig = new_figure(11.0, 4.6)
     ax, bx = fig.subplots(1, 2)
-    first = str(bl_map["option"].values[0])
+    names = [str(o) for o in bl_map["option"].values]
+    first = "none" if "none" in names else names[0]
     base = bl_map.sel(option=first)
     tod = base["t_over_d"].values
     for k, o in enumerate(base["obliquity"].values):

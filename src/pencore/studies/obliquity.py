@@ -32,12 +32,15 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from pencore.errors import InputError
+from pencore.errors import InputError, SolverError
 from pencore.inputs.library import get_projectile
 from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.search.perforation import ballistic_limit
+from pencore.search.threshold import CriticalResult
 from pencore.studies.common import _attrs
+from pencore.studies.fig08_vcr import _search_vars
 from pencore.studies.measurements import error_statistics
-from pencore.studies.perforation import ballistic_limit_map
+from pencore.studies.perforation import slab_target
 
 __all__ = [
     "OPTION_KEYS",
@@ -136,7 +139,8 @@ def ballistic_map(
     ``t_over_d`` are plate thicknesses in calibers of ``projectile``; ``options`` maps a
     name to near-surface settings (:data:`OPTION_KEYS`; ``{}`` is the paper's model).
     Adds ``v_bl_los`` (the option's normal-incidence ``V_bl`` times ``sec(theta)``) and
-    ``ratio`` (``V_bl(theta) / V_bl(0)``).
+    ``ratio`` (``V_bl(theta) / V_bl(0)``). A cell whose search hit a solver failure has
+    status ``solver_error``, NaN values and the error in ``message``.
     """
     sets = _option_sets(options)
     d = get_projectile(projectile).diameter
@@ -147,12 +151,28 @@ def ballistic_map(
     num = resolve_numerics(numerics)
     maps = []
     for name, opt in sets.items():
-        ds = ballistic_limit_map(
-            projectile, medium, tod * d, obl, lo=lo, hi=hi, tol=tol, scan=scan, numerics=num,
-            **opt,
-        )  # fmt: skip
-        ds = ds[["v_bl", "v_bl_lo", "v_bl_hi", "status", "n_evals"]]
-        ds = ds.assign_coords(thickness=("thickness", tod)).rename(thickness="t_over_d")
+        res = np.empty((tod.size, obl.size), dtype=object)
+        for i, x in enumerate(tod):
+            t = slab_target(medium, float(x * d), **opt)
+            for j, o in enumerate(obl):
+                try:
+                    res[i, j] = ballistic_limit(
+                        projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan, numerics=num
+                    )
+                except SolverError as exc:
+                    # a run of the search failed (e.g. a rebound chattering on the face):
+                    # the cell is recorded as failed, not guessed
+                    res[i, j] = CriticalResult(
+                        math.nan, math.nan, math.nan, 0, True, "solver_error", str(exc), (), tol
+                    )
+        dims = ("t_over_d", "obliquity")
+        ds = xr.Dataset(
+            _search_vars(
+                res, "v_bl", "m s-1", "ballistic limit (lowest speed that perforates)", dims
+            ),  # fmt: skip
+            coords={"t_over_d": tod, "obliquity": obl},
+        )
+        ds = ds[["v_bl", "v_bl_lo", "v_bl_hi", "status", "n_evals", "message"]]
         maps.append(ds.expand_dims(option=[name]))
     out = xr.concat(maps, dim="option")
     sec = 1.0 / np.cos(np.radians(obl))
