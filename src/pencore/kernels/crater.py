@@ -60,8 +60,8 @@ __all__ = [
 @nb.njit(cache=True)
 def has_crater(bounds):
     """True when a layer of ``bounds`` (:meth:`pencore.inputs.target.Target.kernel_arrays`)
-    has a crater region (column 2 > 0, present only with the near-surface columns)."""
-    if bounds.shape[1] < 6:
+    has a crater region (column 2 > 0; the crater needs all 10 near-surface columns)."""
+    if bounds.shape[1] < 10:
         return False
     for lay in range(bounds.shape[0]):
         if bounds[lay, 2] > 0.0:

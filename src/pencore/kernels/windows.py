@@ -60,6 +60,8 @@ def depth_factor(height, bounds, lay):
     zbot = bounds[lay, 4]
     if zbot > 0.0:
         g *= min(1.0, max(height - bounds[lay, 1], 0.0) / zbot)
+    if bounds.shape[1] < 9:
+        return g  # the ramp columns only (older layer arrays, tests)
     rtop = bounds[lay, 6]
     if rtop > 0.0:
         g *= finite_sphere_factor(top - height, bounds[lay, 8], rtop)
