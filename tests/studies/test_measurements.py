@@ -4,6 +4,7 @@ checks, error statistics, predictions that are the solver's own results."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -116,7 +117,8 @@ def test_predictions_are_the_solver_results(tmp_path):
 def test_statistics_by_option_on_the_soil_shots():
     from pencore.studies.measurements import statistics_by_option
 
-    entry = {"name": "soil", "csv": "config/table2.csv", "projectile": "p2", "target": "soil"}
+    csv = Path(__file__).resolve().parents[2] / "config" / "table2.csv"
+    entry = {"name": "soil", "csv": str(csv), "projectile": "p2", "target": "soil"}
     ds = statistics_by_option([entry], {"none": {}, "crater_2": {"crater_depth": 2.0}})
     assert list(ds["group"].values) == ["soil/penetration_depth"]
     plain = measured_vs_predicted([entry])

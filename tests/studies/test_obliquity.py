@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -16,7 +17,7 @@ from pencore.studies.obliquity import (
     obliquity_summary,
 )
 
-CSV = "config/oblique_ballistic_limits.csv"
+CSV = Path(__file__).resolve().parents[2] / "config" / "oblique_ballistic_limits.csv"
 
 
 def test_shipped_file_loads_with_sources_and_ratios():
@@ -29,7 +30,7 @@ def test_shipped_file_loads_with_sources_and_ratios():
 
 
 def test_bad_rows_are_named(tmp_path):
-    text = open(CSV).read()
+    text = CSV.read_text()
     p = tmp_path / "x.csv"
     p.write_text(text.replace("Gallardy, ARL-MR-0930 (2016)", ""))
     with pytest.raises(InputError, match="no source"):
