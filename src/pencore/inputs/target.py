@@ -15,7 +15,7 @@ Friction law: Coulomb friction ``mu(V_tau) sigma_n`` opposing sliding, with ``mu
 piecewise-linear function of the sliding speed ``V_tau`` (m/s), given as a table
 (a single row is a constant coefficient). Zero by default.
 
-Near-surface options (both off by default; the paper's model has neither).
+Near-surface options (all off by default; the paper's model has none).
 
 * ``crater_depth`` (``k_c``, calibers): the near-surface (crater) region of Forrestal et
   al., "An empirical equation for penetration depth of ogive-nose projectiles into
@@ -30,21 +30,26 @@ Near-surface options (both off by default; the paper's model has neither).
   :func:`pencore.closedform.forrestal_crater_depth`. ``k_c d`` must be at least the nose
   length (the crater ends with the nose embedded).
 
-The free-surface option multiplies the stress of an element at depth ``zeta`` (m) below
-the top face of its layer and at distance ``delta`` (m) from the nearest *free* face of
-the layer (the target's front face, a face next to an air gap, the rear face of the last
-plate) by::
+Two free-surface reductions multiply the stress of an element at distance ``delta`` (m)
+from a *free* face of its layer (the target's front face, a face next to an air gap, the
+rear face of the last plate), one factor per free face:
 
-    g(delta) = min(1, delta / (k_f d))
+* ``plastic_zone_ratio`` (``c/a``): the quasi-static pressure of a spherical cavity of
+  radius ``a`` (the projectile radius) in an elastic-perfectly-plastic sphere whose free
+  outer surface is ``b = a + delta`` away, over that in an infinite medium (Hill, *The
+  Mathematical Theory of Plasticity*, 1950, ch. V)::
 
-with ``d`` the projectile diameter and ``k_f = free_surface_depth`` (calibers; 1 when 0).
+      F = (3 ln(min(c, b)/a) + 1 - min(c, b)^3 / b^3) / (1 + 3 ln(c/a))
 
-* ``free_surface_depth``: cavity-expansion trajectory codes reduce the stress on
-  elements near a free surface (Warren & Poormon, IJIE 25 (2001) 993-1022; Warren,
-  Hanchak & Poormon, IJIE 30 (2004) 1307-1331; Longcope's PENCRV3D). pencore's form is
-  the linear ramp above in the distance to the free face, its own simple choice (the
-  functions of those codes could not be read for this implementation): off by default,
-  and a limit test checks that it changes nothing away from free faces.
+  with ``c/a`` the infinite medium's plastic-zone ratio, ``(E / (3 (1 - nu) Y))^(1/3)``
+  for an elastic-perfectly-plastic solid. 0 at the face; far from every face it tends to
+  1 as ``(c/b)^3`` (the half-space law). Trajectory codes of this family reduce the stress
+  near free faces (Warren & Poormon, IJIE 25 (2001) 993-1022; Warren, Hanchak & Poormon,
+  IJIE 30 (2004) 1307-1331); their functions could not be read for this work, so this is
+  the textbook finite-target cavity solution, not theirs, applied to the whole normal
+  stress (pencore's choice: Hill's solution is the static term's).
+* ``free_surface_depth`` (``k_f``, calibers): pencore's own linear ramp
+  ``min(1, delta / (k_f d))``, with no source; kept as a simple, documented knob.
 
 The ring kernel evaluates the free-surface factor at the centre of each surface ring
 (exact for a ring parallel to the surface, i.e. normal incidence); the load-point kernels
