@@ -31,7 +31,9 @@ def finite_sphere_factor(distance, radius, ratio):
 
     ``radius`` is ``a`` (m), ``ratio`` is ``c/a`` (> 1; the infinite medium's, e.g.
     ``(E / (3 (1 - nu) Y))^(1/3)``). ``F`` is 0 at the face, rises monotonically and
-    tends to 1 as ``(c/b)^3`` far from it.
+    tends to 1 as ``(c/b)^3`` far from it. (Hill's formulas were written from the
+    textbook solution, not re-read from the book for this work; their two limits, the
+    infinite medium and the fully plastic shell, agree at ``b = c``, which the tests check.)
     """
     b = radius + max(distance, 0.0)
     c = ratio * radius
