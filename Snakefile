@@ -54,6 +54,7 @@ include: "workflow/rules/ensemble.smk"
 include: "workflow/rules/tables.smk"
 # Perforation of finite slabs (beyond the paper)
 include: "workflow/rules/perforation.smk"
+include: "workflow/rules/near_surface.smk"
 include: "workflow/rules/archive.smk"
 
 

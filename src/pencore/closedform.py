@@ -35,7 +35,7 @@ __all__ = [
     "nose_entry_speed",
     "depth",
     "speed_at_depth",
-    "crater_entry_speed",
+    "forrestal_crater_depth",
 ]
 
 
@@ -133,51 +133,16 @@ def _advance(v2, a, b, a0, a2, m, dz):
     return new, None
 
 
-def crater_entry_speed(
-    projectile: Projectile, medium: Medium, velocity: float, n: int = 2000
-) -> tuple[float, float]:
-    """Speed (m/s) and tip depth (m) at the end of the near-surface region, with the
-    crater ramp of :mod:`pencore.inputs.target` (``medium.crater_depth`` calibers, ``c = k d``):
-    a band of the nose at depth ``zeta`` carries ``min(1, zeta / c)`` of its stress, so
-
-        m d(V^2)/dz = -2 (a0 A_c(z) + a2 B_c(z) V^2),
-        A_c(z) = sum dA_j min(1, (z - s_j)^+ / c),  B_c likewise,
-
-    (``s_j`` a band's distance from the tip), still linear in ``V^2``: integrated exactly
-    on ``n`` intervals of tip depth with the midpoint values of ``A_c``, ``B_c`` (error
-    O(1/n^2)), up to ``z = L_n + c``, past which every band carries the full stress.
-    Returns ``(0, z_stop)`` if the body stops before.
-    """
-    a0, a2 = _coeffs(medium)
-    c = medium.crater_depth * projectile.diameter
-    if c <= 0.0:
-        return nose_entry_speed(projectile, medium, velocity)
-    m = projectile.mass_properties().mass
-    s, area, b2 = _entry_profile(projectile)
-    da = np.diff(area, prepend=0.0)
-    db = np.diff(b2, prepend=0.0)
-    zend = projectile.nose_length + c
-    dz = zend / n
-    v2 = velocity * velocity
-    for i in range(n):
-        zm = (i + 0.5) * dz
-        g = np.clip((zm - s) / c, 0.0, 1.0)
-        v2, stopped_at = _advance(v2, float(da @ g), float(db @ g), a0, a2, m, dz)
-        if stopped_at is not None:
-            return 0.0, i * dz + stopped_at
-    return math.sqrt(v2), zend
-
-
 def depth(projectile: Projectile, medium: Medium, velocity: float) -> float:
     """Tip depth (m) at rest for normal, zero-yaw, frictionless impact: exact nose-entry
-    phase (:func:`nose_entry_speed`, or :func:`crater_entry_speed` with a crater region)
-    plus the tunnel-phase closed form."""
+    phase (:func:`nose_entry_speed`) plus the tunnel-phase closed form; with a crater region
+    (``medium.crater_depth`` calibers) Forrestal's form (:func:`forrestal_crater_depth`),
+    which is pencore's crater (:mod:`pencore.kernels.crater`) in this limit."""
     if medium.free_surface_depth > 0.0:
         raise ValueError("closed forms have no free-surface reduction")
     if medium.crater_depth > 0.0:
-        v1, z = crater_entry_speed(projectile, medium, velocity)
-    else:
-        v1, z = nose_entry_speed(projectile, medium, velocity)
+        return forrestal_crater_depth(projectile, medium, velocity, medium.crater_depth)
+    v1, z = nose_entry_speed(projectile, medium, velocity)
     if v1 == 0.0:
         return z
     return z + tunnel_depth(projectile, medium, v1)
@@ -213,17 +178,24 @@ def forrestal_crater_depth(
 
         V1^2 = (m V0^2 - k d pi a^2 a0) / (m + k d pi a^2 N* a2)
 
-    For comparison with pencore's per-element ramp (:func:`crater_entry_speed`); it
-    assumes the nose is embedded at ``z = k d`` (``k d >= L_n``)."""
+    and the depth ``k d`` plus the tunnel-phase depth from ``V1`` (Forrestal's Eq. for
+    ``P``). When ``V1^2 <= 0`` the body stops in the crater, where Forrestal's ``c`` is not
+    defined; the same constant of the motion that makes the model local
+    (:mod:`pencore.kernels.crater`), ``c k d (1 + beta) = pi a^2 (a0 + N* a2 V0^2)`` with
+    ``beta = k d pi a^2 N* a2 / m``, gives ``z = sqrt(m V0^2 / c)`` (continuous with the
+    ``V1 = 0`` case; it is Li & Chen's shallow-penetration formula, IJIE 28 (2003) 93-116,
+    Eq. 15a, in dimensional form). Assumes the nose is embedded at ``z = k d`` (``k d >= L_n``)."""
     a0, a2 = _coeffs(medium)
     a = projectile.radius
     kd = k * projectile.diameter
-    if kd < projectile.nose_length:
+    if kd < projectile.nose_length * (1.0 - 1e-12):
         raise ValueError(f"k d = {kd!r} m is shorter than the nose ({projectile.nose_length!r} m)")
     m = projectile.mass_properties().mass
+    ns = projectile.nose_factor()
     area = math.pi * a * a * kd
-    v1sq = (m * velocity**2 - area * a0) / (m + area * projectile.nose_factor() * a2)
+    v1sq = (m * velocity**2 - area * a0) / (m + area * ns * a2)
     if v1sq <= 0.0:
-        # stops in the crater: m V0^2 / 2 = c z^2 / 2 with c from the V1 = 0 limit
-        return math.sqrt(m * velocity**2 * kd / (math.pi * a * a * a0))
+        beta = area * ns * a2 / m
+        c = math.pi * a * a * (a0 + ns * a2 * velocity**2) / (kd * (1.0 + beta))
+        return math.sqrt(m * velocity**2 / c)
     return kd + tunnel_depth(projectile, medium, math.sqrt(v1sq))

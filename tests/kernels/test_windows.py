@@ -1,11 +1,8 @@
-"""Near-surface (crater) and free-surface resistance ramps.
+"""Free-surface resistance ramps and the window columns (the crater: test_crater.py).
 
 * off (the default) changes nothing, to the last bit;
-* with a crater the 1-D depth is the closed form of the ramp
-  (:func:`pencore.closedform.crater_entry_speed`), grows with k, and tends to the
-  reference as k -> 0;
 * the free-surface ramp leaves elements far from a free face unchanged, and on a thick
-  slab (rear face never reached) it is exactly the crater ramp of the front face.
+  slab (rear face never reached) it is the half-space's front-face ramp.
 """
 
 from __future__ import annotations
@@ -16,7 +13,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from pencore import closedform, get_projectile, get_target, simulate
+from pencore import get_projectile, get_target, simulate
 from pencore.errors import TargetError
 from pencore.inputs.library import target_from_dict
 from pencore.inputs.target import Layer, Target
@@ -37,38 +34,6 @@ def test_off_is_bit_identical():
     for v in ("tip_x", "tip_y", "vel_x", "vel_y", "omega_3", "work"):
         assert np.array_equal(a[v].values, b[v].values)
     assert half_space().kernel_arrays(P2.diameter)[0].shape[1] == 2
-
-
-@pytest.mark.parametrize("k", [0.5, 2.0, 0.707 + P2.nose_length / P2.diameter])
-def test_crater_depth_matches_the_1d_closed_form(k):
-    t = half_space(crater_depth=k)
-    ds = simulate("p2", t, 400.0)
-    ref = closedform.depth(P2, t.medium, 400.0)
-    # same 2e-3 as the half-space check of test_physics (ring discretisation, rtol);
-    # the ramp itself is integrated to O(1/n^2) = 2.5e-7 by the closed form
-    assert float(ds.penetration_depth) == pytest.approx(ref, rel=2e-3)
-
-
-def test_crater_depth_increases_with_k_and_tends_to_the_reference():
-    depths = [float(simulate("p2", half_space(crater_depth=k), 400.0).penetration_depth)
-              for k in (0.0, 0.01, 0.5, 1.0, 2.0)]  # fmt: skip
-    assert all(b > a for a, b in zip(depths, depths[1:], strict=False))
-    # k -> 0: the work lost over the ramp is O(k d) of a ~1 m depth
-    assert depths[1] == pytest.approx(depths[0], rel=2e-3)
-    # closed form: the depth gain is continuous at k = 0 and grows with k
-    gains = [closedform.depth(P2, replace(CONCRETE, crater_depth=k), 400.0) for k in (1e-3, 2.0)]
-    assert gains[0] == pytest.approx(closedform.depth(P2, CONCRETE, 400.0), rel=1e-3)
-    assert gains[1] > gains[0]
-
-
-def test_pencore_ramp_versus_forrestal_linear_force():
-    # Forrestal's F = c z crater (k = 2) and pencore's per-element ramp differ: the ramp
-    # acts until the nose base is k d deep, F = c z only to k d. Both exceed the no-crater
-    # depth; pencore's exceeds Forrestal's. (A comparison, not a calibration.)
-    d0 = closedform.depth(P2, CONCRETE, 400.0)
-    df = closedform.forrestal_crater_depth(P2, CONCRETE, 400.0, 2.0)
-    dp = closedform.depth(P2, replace(CONCRETE, crater_depth=2.0), 400.0)
-    assert d0 < df < dp
 
 
 def test_free_surface_far_from_faces_is_unchanged():
@@ -92,12 +57,12 @@ def test_free_surface_far_from_faces_is_unchanged():
     )
 
 
-def test_free_surface_on_a_thick_slab_is_the_front_crater_ramp():
-    # the rear face is never reached, so only the front-face ramp acts: the same factor
-    # min(1, zeta / (k d)) as the crater ramp, hence the same trajectory to round-off
+def test_free_surface_on_a_thick_slab_is_the_half_space_front_ramp():
+    # the rear face is never reached, so only the front-face ramp acts, as on a
+    # half-space with the same zone: the same trajectory to round-off
     slab = Target("slab", (Layer(replace(CONCRETE, free_surface_depth=1.5), 3.0),))
     a = simulate("p2", slab, 400.0, 15.0)
-    b = simulate("p2", half_space(crater_depth=1.5), 400.0, 15.0)
+    b = simulate("p2", half_space(free_surface_depth=1.5), 400.0, 15.0)
     np.testing.assert_allclose(a.tip_y.values, b.tip_y.values, rtol=1e-12, atol=0)
 
 
@@ -112,6 +77,8 @@ def test_free_surface_raises_the_residual_speed():
 def test_windows_need_the_diameter():
     with pytest.raises(TargetError, match="diameter"):
         half_space(crater_depth=2.0).kernel_arrays()
+    with pytest.raises(TargetError, match="mass, nose"):
+        half_space(crater_depth=2.0).kernel_arrays(P2.diameter)
 
 
 def test_yaml_keys_and_their_limits():
@@ -128,3 +95,56 @@ def test_yaml_keys_and_their_limits():
         target_from_dict({"name": "t", "layers": [{"medium": "concrete", "crater_depth": -1}]})
     with pytest.raises(InputError, match="free-surface depth"):
         replace(CONCRETE, free_surface_depth=1e3)
+
+
+def test_finite_sphere_factor_is_hill_and_tends_to_one():
+    from pencore.kernels.windows import finite_sphere_factor
+
+    a, ratio = 0.01, 5.0
+    denom = 1.0 + 3.0 * math.log(ratio)
+    assert finite_sphere_factor(0.0, a, ratio) == 0.0
+    # plastic zone just reaching the face (b = c): 3 ln(c/a) / (1 + 3 ln(c/a))
+    assert finite_sphere_factor((ratio - 1.0) * a, a, ratio) == pytest.approx(
+        3.0 * math.log(ratio) / denom, rel=1e-14
+    )
+    # fully plastic shell, b < c: 2 Y ln(b/a) over the infinite medium's pressure
+    b = 2.0 * a
+    assert finite_sphere_factor(b - a, a, ratio) == pytest.approx(
+        3.0 * math.log(2.0) / denom, rel=1e-14
+    )
+    d = np.linspace(0.0, 40.0 * ratio * a, 400)
+    f = np.array([finite_sphere_factor(x, a, ratio) for x in d])
+    assert np.all(np.diff(f) > 0.0) and f[-1] < 1.0
+    # far from the face the deficit is (c/b)^3 / (1 + 3 ln(c/a))
+    bb = a + d[-1]
+    assert 1.0 - f[-1] == pytest.approx((ratio * a / bb) ** 3 / denom, rel=1e-9)
+
+
+def test_finite_sphere_far_from_every_face_is_the_half_space_law():
+    ratio = 5.0
+    slab = Target("slab", (Layer(replace(CONCRETE, plastic_zone_ratio=ratio), 40.0),))
+    plain = Target("plain", (Layer(CONCRETE, 40.0),))
+    mp = P2.mass_properties()
+    on = slab.kernel_arrays(P2.diameter, mp.mass, P2.nose_length, mp.lc)
+    off = plain.kernel_arrays(P2.diameter)
+    rings = P2.rings(48, 24, 4).as_array()
+    y = initial_state(P2, rings, 300.0, math.radians(20.0), 0.0, 0.0, None, 0.0, "cm")
+    y[1] -= 20.0  # about 20 m from both faces, c = 0.24 m
+    f_on = contact_loads(y, rings, *on, 1e-3, 0)
+    f_off = contact_loads(y, rings, *off, 1e-3, 0)
+    a, c = 0.5 * P2.diameter, ratio * 0.5 * P2.diameter
+    bound = (c / 19.0) ** 3 / (1.0 + 3.0 * math.log(ratio))  # nearest element >= 19 m away
+    assert bound < 1e-5
+    np.testing.assert_allclose(f_on[0], f_off[0], rtol=bound, atol=bound * abs(f_off[0][0]))
+    assert not np.array_equal(f_on[0], f_off[0])  # reduced, by less than the bound
+    # near the rear face the load falls
+    y[1] -= 20.0 - 0.05
+    assert abs(contact_loads(y, rings, *on, 1e-3, 0)[0][0]) < abs(
+        contact_loads(y, rings, *off, 1e-3, 0)[0][0]
+    )
+    assert a < c
+
+
+def test_plastic_zone_ratio_must_exceed_one():
+    with pytest.raises(TargetError, match="plastic_zone_ratio"):
+        replace(CONCRETE, plastic_zone_ratio=0.5)

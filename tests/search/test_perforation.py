@@ -183,6 +183,8 @@ def test_cli_ballistic_limit(tmp_path, capsys):
         (["--lo", "500", "--hi", "400"], "--lo 500 must be below --hi 400"),
         (["--tol", "-1"], "--tol"),
         (["--crater-depth", "-2"], "crater depth"),
+        (["--crater-depth", "1"], "shorter than the nose"),
+        (["--plastic-zone-ratio", "0.5"], "plastic_zone_ratio must be 0 (off) or > 1"),
         (["--obliquity", "95"], "--obliquity"),
     ],
 )

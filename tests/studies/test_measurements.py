@@ -4,6 +4,7 @@ checks, error statistics, predictions that are the solver's own results."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -111,3 +112,22 @@ def test_predictions_are_the_solver_results(tmp_path):
     got = float(ds.stat_rms_rel_error.sel(quantity="penetration_depth"))
     assert got == pytest.approx(expect["rms_rel_error"], rel=1e-15)
     assert np.allclose(ds.rel_error, ds.predicted / ds.measured - 1.0, equal_nan=True)
+
+
+def test_statistics_by_option_on_the_soil_shots():
+    from pencore.studies.measurements import statistics_by_option
+
+    csv = Path(__file__).resolve().parents[2] / "config" / "table2.csv"
+    entry = {"name": "soil", "csv": str(csv), "projectile": "p2", "target": "soil"}
+    ds = statistics_by_option([entry], {"none": {}, "crater_2": {"crater_depth": 2.0}})
+    assert list(ds["group"].values) == ["soil/penetration_depth"]
+    plain = measured_vs_predicted([entry])
+    # the paper's model is the measurements study, shot by shot
+    np.testing.assert_array_equal(
+        ds["predicted"].sel(option="none").values, plain["predicted"].values
+    )
+    # a crater takes less work near the surface: every shot goes deeper
+    assert np.all(ds["predicted"].sel(option="crater_2") > ds["predicted"].sel(option="none"))
+    assert float(ds["stat_n"].sel(option="none", group="soil/penetration_depth")) == 5
+    with pytest.raises(InputError, match="unknown key"):
+        statistics_by_option([entry], {"x": {"crater": 2.0}})

@@ -97,6 +97,26 @@ rule measurements:
         "../scripts/measurements.py"
 
 
+rule measurements_options:
+    input:
+        csv=[entry["csv"] for entry in VALIDATION["measurements"]],
+    output:
+        nc="results/validation/measurements_options.nc",
+    log:
+        "results/logs/validation/measurements_options.log",
+    benchmark:
+        "results/benchmarks/validation/measurements_options.tsv"
+    conda:
+        "../envs/pencore.yaml"
+    params:
+        study=canonical(VALIDATION["measurements"]),
+        options=canonical(VALIDATION["measurement_options"]),
+        numerics=canonical(config["numerics"]),
+        code=PHYSICS_CODE,
+    script:
+        "../scripts/measurements_options.py"
+
+
 # Figures: separate rules, so restyling a plot does not rerun the solver.
 rule table2_figure:
     input:
@@ -228,4 +248,5 @@ rule measurements_figure:
 
 
 ALL_TARGETS.extend(f"results/validation/measurements.{ext}" for ext in ("nc", "png", "pdf"))
+ALL_TARGETS.append("results/validation/measurements_options.nc")
 ARCHIVE_DATASETS.append("results/validation/measurements.nc")

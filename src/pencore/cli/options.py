@@ -168,7 +168,8 @@ def numerics_option(text: str) -> tuple[str, Any]:
 
 
 def add_window_options(p: argparse.ArgumentParser) -> None:
-    """Add ``--crater-depth K`` and ``--free-surface-depth K`` to a subcommand.
+    """Add ``--crater-depth K``, ``--free-surface-depth K`` and ``--plastic-zone-ratio C_A``
+    to a subcommand.
 
     Parameters
     ----------
@@ -182,9 +183,9 @@ def add_window_options(p: argparse.ArgumentParser) -> None:
         type=number_type("crater_depth"),
         default=None,
         metavar="K",
-        help="near-surface (crater) region in calibers: the resistance rises linearly from "
-        "0 at a layer's top face to full at K projectile diameters (Forrestal: K = 2; "
-        "default: each medium's own, 0 = off)",
+        help="near-surface (crater) region in calibers: Forrestal's axial force F = c z "
+        "from a layer's top face to K projectile diameters (K = 2 there; at least the "
+        "nose length; default: each medium's own, 0 = off)",
     )
     p.add_argument(
         "--free-surface-depth",
@@ -194,6 +195,15 @@ def add_window_options(p: argparse.ArgumentParser) -> None:
         help="free-surface reduction in calibers: the resistance falls linearly to 0 at a "
         "free face (front face, rear face, faces next to a gap) over K projectile "
         "diameters (default: each medium's own, 0 = off)",
+    )
+    p.add_argument(
+        "--plastic-zone-ratio",
+        type=number_type("plastic_zone_ratio"),
+        default=None,
+        metavar="C_A",
+        help="free-surface reduction of a spherical cavity in a finite sphere (Hill 1950): "
+        "plastic-zone over cavity radius of the half-space law, > 1 (default: each "
+        "medium's own, 0 = off)",
     )
 
 
@@ -214,9 +224,10 @@ def with_windows(target: Any, args: argparse.Namespace) -> Any:
         ``target`` with both windows set on every medium, or ``target`` itself when
         neither option was given.
     """
-    if args.crater_depth is None and args.free_surface_depth is None:
+    ratio = getattr(args, "plastic_zone_ratio", None)
+    if args.crater_depth is None and args.free_surface_depth is None and ratio is None:
         return target
-    return target.with_windows(args.crater_depth, args.free_surface_depth)
+    return target.with_windows(args.crater_depth, args.free_surface_depth, ratio)
 
 
 def check_output(out: str) -> Path:

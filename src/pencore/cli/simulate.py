@@ -34,8 +34,9 @@ simulate options (all SI, angles in degrees):
   --omega RAD_S           initial angular velocity about +z (rad/s)
   --start X Y Z           initial nose-tip position (m)
   --stop-at-reversal      end the run at the first trajectory reversal
-  --crater-depth K        near-surface (crater) resistance ramp over K calibers
+  --crater-depth K        Forrestal's crater region (F = c z) over K calibers
   --free-surface-depth K  resistance ramp within K calibers of a free face
+  --plastic-zone-ratio C  finite-sphere free-surface reduction (Hill), c/a > 1
   --numerics KEY=VALUE    numerical parameter override (repeatable), e.g. rtol=1e-6
   --out FILE.nc           write the full trajectory as NetCDF
 Run 'pencore simulate --help' for details; 'pencore list' for the named projectiles

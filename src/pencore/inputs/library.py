@@ -353,9 +353,10 @@ _MEDIUM_KEYS = (
     "source",
     "crater_depth",
     "free_surface_depth",
+    "plastic_zone_ratio",
 )
 #: Depth-window keys (calibers) a layer may set on a named medium.
-_WINDOW_KEYS = ("crater_depth", "free_surface_depth")
+_WINDOW_KEYS = ("crater_depth", "free_surface_depth", "plastic_zone_ratio")
 
 
 def _medium_from(x: Any, what: str) -> Medium:

@@ -192,7 +192,7 @@ LIMITS: dict[str, Limit] = {
         0.0,
         100.0,
         kind="physical / guard",
-        why=">= 0 (0: off); near-surface resistance ramp, Forrestal k = 2",
+        why=">= 0 (0: off); Forrestal's crater region (F = c z), k = 2 there",
     ),
     "free_surface_depth": Limit(
         "free-surface depth",
@@ -201,6 +201,14 @@ LIMITS: dict[str, Limit] = {
         100.0,
         kind="physical / guard",
         why=">= 0 (0: off); resistance ramp next to a free face",
+    ),
+    "plastic_zone_ratio": Limit(
+        "plastic-zone ratio",
+        "",
+        0.0,
+        1e3,
+        kind="physical / guard",
+        why="0 (off) or > 1: plastic-zone over cavity radius, (E / (3 (1 - nu) Y))^(1/3)",
     ),
     "medium_density": Limit(
         "medium density", "kg/m^3", 0.0, _RHO_MAX, lo_open=True, why="> 0 (for reference only)"

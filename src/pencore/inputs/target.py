@@ -15,37 +15,45 @@ Friction law: Coulomb friction ``mu(V_tau) sigma_n`` opposing sliding, with ``mu
 piecewise-linear function of the sliding speed ``V_tau`` (m/s), given as a table
 (a single row is a constant coefficient). Zero by default.
 
-Depth windows (both off by default; the paper's model has neither). The stress of an
-element at depth ``zeta`` (m) below the top face of its layer, and at distance ``delta``
-(m) from the nearest *free* face of the layer (the target's front face, a face next to
-an air gap, the rear face of the last plate), is multiplied by::
+Near-surface options (all off by default; the paper's model has none).
 
-    g(zeta, delta) = min(1, zeta / (k_c d)) * min(1, delta / (k_f d))
+* ``crater_depth`` (``k_c``, calibers): the near-surface (crater) region of Forrestal et
+  al., "An empirical equation for penetration depth of ogive-nose projectiles into
+  concrete targets", IJIE 15 (1994) 395-405, and Frew et al., "A spherical
+  cavity-expansion penetration model for concrete targets", Int. J. Solids Struct. 35
+  (1998) 4235-4250: there the axial force on the nose rises linearly with tip depth,
+  ``F = c z``, over a crater of ``k_c d`` (k = 2; Li & Chen, IJIE 28 (2003) 93-116, give
+  ``k = 0.707 + H/d``, H the nose length), and takes the cavity-expansion value below.
+  pencore multiplies every element's load in the layer by one factor chosen so that the
+  axial force is exactly Forrestal's ``c z`` (with ``c`` read off the present depth and
+  speed, see :mod:`pencore.kernels.crater`); the depth in normal impact is then
+  :func:`pencore.closedform.forrestal_crater_depth`. ``k_c d`` must be at least the nose
+  length (the crater ends with the nose embedded).
 
-with ``d`` the projectile diameter, ``k_c = crater_depth`` and ``k_f =
-free_surface_depth`` (calibers; a factor is 1 when its ``k`` is 0).
+Two free-surface reductions multiply the stress of an element at distance ``delta`` (m)
+from a *free* face of its layer (the target's front face, a face next to an air gap, the
+rear face of the last plate), one factor per free face:
 
-* ``crater_depth``: the near-surface (crater) region of Forrestal et al., "An empirical
-  equation for penetration depth of ogive-nose projectiles into concrete targets",
-  IJIE 15 (1994) 395-405, and Frew et al., "A spherical cavity-expansion penetration
-  model for concrete targets", Int. J. Solids Struct. 35 (1998) 4235-4250: there the
-  axial force on the nose rises linearly with tip depth, ``F = c z``, over a crater of
-  ``k`` calibers (k = 2), and takes the cavity-expansion value below; Li & Chen, IJIE 28
-  (2003) 93-116, give ``k = 0.707 + H/d`` (H: nose length). pencore's reading applies the
-  linear ramp to each surface element's stress instead of to the total force: it has the
-  two features of those models (no resistance at the surface, the full law from ``k d``
-  on) but the total force is ``c z`` only approximately (exactly for a flat nose). It
-  is an approximation, not those models' formula; :func:`pencore.closedform.depth`
-  gives the exact 1-D depth of pencore's form.
-* ``free_surface_depth``: cavity-expansion trajectory codes reduce the stress on
-  elements near a free surface (Warren & Poormon, IJIE 25 (2001) 993-1022; Warren,
-  Hanchak & Poormon, IJIE 30 (2004) 1307-1331; Longcope's PENCRV3D). pencore's form is
-  the linear ramp above in the distance to the free face, its own simple choice (the
-  functions of those codes could not be read for this implementation): off by default,
-  and a limit test checks that it changes nothing away from free faces.
+* ``plastic_zone_ratio`` (``c/a``): the quasi-static pressure of a spherical cavity of
+  radius ``a`` (the projectile radius) in an elastic-perfectly-plastic sphere whose free
+  outer surface is ``b = a + delta`` away, over that in an infinite medium (Hill, *The
+  Mathematical Theory of Plasticity*, 1950, ch. V)::
 
-The ring kernel evaluates ``g`` at the centre of each surface ring (exact for a ring
-parallel to the surface, i.e. normal incidence); the load-point kernels at each point.
+      F = (3 ln(min(c, b)/a) + 1 - min(c, b)^3 / b^3) / (1 + 3 ln(c/a))
+
+  with ``c/a`` the infinite medium's plastic-zone ratio, ``(E / (3 (1 - nu) Y))^(1/3)``
+  for an elastic-perfectly-plastic solid. 0 at the face; far from every face it tends to
+  1 as ``(c/b)^3`` (the half-space law). Trajectory codes of this family reduce the stress
+  near free faces (Warren & Poormon, IJIE 25 (2001) 993-1022; Warren, Hanchak & Poormon,
+  IJIE 30 (2004) 1307-1331); their functions could not be read for this work, so this is
+  the textbook finite-target cavity solution, not theirs, applied to the whole normal
+  stress (pencore's choice: Hill's solution is the static term's).
+* ``free_surface_depth`` (``k_f``, calibers): pencore's own linear ramp
+  ``min(1, delta / (k_f d))``, with no source; kept as a simple, documented knob.
+
+The ring kernel evaluates the free-surface factor at the centre of each surface ring
+(exact for a ring parallel to the surface, i.e. normal incidence); the load-point kernels
+at each point.
 """
 
 from __future__ import annotations
@@ -60,11 +68,16 @@ from pencore.errors import InputError, TargetError
 from pencore.inputs.limits import number
 
 __all__ = [
+    "WINDOW_COLUMNS",
     "Medium",
     "Layer",
     "Target",
 ]
 
+
+#: Columns of the layer array when a near-surface option is on
+#: (:meth:`Target.kernel_arrays`).
+WINDOW_COLUMNS = 10
 
 #: Most resistance coefficients a medium may have: the compiled kernels hold the stress
 #: polynomial, its smoothed step (one degree more) and the Jacobian's moments (three
@@ -100,7 +113,12 @@ class Medium:
         Near-surface (crater) region in projectile calibers (0: off); see the module
         docstring.
     free_surface_depth : float
-        Free-surface reduction zone in calibers (0: off); see the module docstring.
+        Free-surface reduction zone in calibers (0: off); pencore's own linear ramp, see
+        the module docstring.
+    plastic_zone_ratio : float
+        Free-surface reduction from the spherical cavity in a finite sphere (Hill 1950):
+        the plastic-zone radius over the cavity radius, ``c/a`` of the half-space law
+        (0: off; otherwise > 1); see the module docstring.
     """
 
     name: str
@@ -111,11 +129,17 @@ class Medium:
     source: str = ""
     crater_depth: float = 0.0
     free_surface_depth: float = 0.0
+    plastic_zone_ratio: float = 0.0
 
     def __post_init__(self) -> None:
         what = f"medium {self.name!r}"
-        for key in ("crater_depth", "free_surface_depth"):
+        for key in ("crater_depth", "free_surface_depth", "plastic_zone_ratio"):
             object.__setattr__(self, key, _check(key, getattr(self, key), what))
+        if 0.0 < self.plastic_zone_ratio <= 1.0:
+            raise TargetError(
+                f"{what}: plastic_zone_ratio must be 0 (off) or > 1 (the plastic zone "
+                f"encloses the cavity), got {self.plastic_zone_ratio!r}"
+            )
         if isinstance(self.coefficients, str) or not hasattr(self.coefficients, "__iter__"):
             raise TargetError(f"{what}: coefficients must be a list [a0, a1, a2, ...]")
         c = tuple(_check("coefficient", x, f"{what} a{i}") for i, x in enumerate(self.coefficients))
@@ -166,8 +190,13 @@ class Medium:
 
     @property
     def windowed(self) -> bool:
-        """True when a crater or free-surface depth window is on."""
-        return self.crater_depth > 0.0 or self.free_surface_depth > 0.0
+        """True when a crater or a free-surface reduction is on."""
+        return self.crater_depth > 0.0 or self.free_surface_depth > 0.0 or self.free_sphere
+
+    @property
+    def free_sphere(self) -> bool:
+        """True when the finite-sphere free-surface reduction is on."""
+        return self.plastic_zone_ratio > 0.0
 
 
 @dataclass(frozen=True)
@@ -259,54 +288,96 @@ class Target:
         return -self.thickness
 
     def with_windows(
-        self, crater_depth: float | None = None, free_surface_depth: float | None = None
+        self,
+        crater_depth: float | None = None,
+        free_surface_depth: float | None = None,
+        plastic_zone_ratio: float | None = None,
     ) -> Target:
         """A copy whose media all have the given ``crater_depth`` / ``free_surface_depth``
-        (calibers; None keeps each medium's own)."""
+        (calibers) / ``plastic_zone_ratio`` (None keeps each medium's own)."""
         kw = {}
         if crater_depth is not None:
             kw["crater_depth"] = crater_depth
         if free_surface_depth is not None:
             kw["free_surface_depth"] = free_surface_depth
+        if plastic_zone_ratio is not None:
+            kw["plastic_zone_ratio"] = plastic_zone_ratio
         layers = tuple(
             lay if lay.is_gap else Layer(replace(lay.medium, **kw), lay.thickness)
             for lay in self.layers
         )
         return Target(self.name, layers)
 
-    def kernel_arrays(self, diameter: float | None = None) -> tuple[np.ndarray, ...]:
+    def kernel_arrays(
+        self,
+        diameter: float | None = None,
+        mass: float | None = None,
+        nose_length: float | None = None,
+        tip: float | None = None,
+    ) -> tuple[np.ndarray, ...]:
         """Arrays for the compiled kernel.
 
         ``diameter`` (m) of the projectile scales the depth windows (needed only when a
-        medium has ``crater_depth`` or ``free_surface_depth``).
+        medium has ``crater_depth`` or ``free_surface_depth``); the crater also needs the
+        projectile's ``mass`` (kg), ``nose_length`` (m) and ``tip`` (m: axial coordinate
+        of the nose tip from the centre of mass).
 
         Gaps are left out (their elements carry no load), so consecutive rows need not
         touch.
 
         Returns
         -------
-        bounds : (n, 2) or (n, 5) float
+        bounds : (n, 2) or (n, 10) float
             ``y_top, y_bottom`` of each layer of a medium (m); the last bottom is
-            ``-inf`` for a semi-infinite target, the rear face otherwise. With a depth
-            window on, three more columns (m): crater depth ``k_c d``, free-surface zone
-            ``k_f d`` at the top face if it is free (else 0), and at the bottom face if it
-            is free (else 0); see :func:`pencore.kernels.windows.depth_factor`.
+            ``-inf`` for a semi-infinite target, the rear face otherwise. With a
+            near-surface option on, seven more: crater depth ``k_c d`` (m), free-surface
+            zone ``k_f d`` (m) at the top face if it is free (else 0) and at the bottom
+            face if it is free (else 0), the projectile mass (kg; 0 without a crater),
+            the plastic-zone ratio ``c/a`` at the top face if it is free (else 0) and at
+            the bottom face if it is free (else 0), the projectile radius (m) and the
+            tip's axial coordinate (m; 0 without a crater); see
+            :func:`pencore.kernels.windows.depth_factor` and
+            :func:`pencore.kernels.crater.crater_factor`.
         coef : (n, p) float
             Resistance coefficients, zero-padded.
         fric : (n, k, 2) float
             Friction tables (speed, mu), padded by repeating the last row.
+
+        Raises
+        ------
+        TargetError
+            A window without ``diameter``, a crater without ``mass`` and ``nose_length``,
+            or a crater shorter than the nose (Forrestal's crater ends with the nose
+            embedded: ``k d >= L_n``).
         """
         solid = self.solid_layers
         n = len(solid)
         p = max(len(lay.medium.coefficients) for lay in solid)
         k = max(len(lay.medium.friction_speeds) for lay in solid)
         windowed = any(lay.medium.windowed for lay in solid)
+        crater = any(lay.medium.crater_depth > 0.0 for lay in solid)
         if windowed and not (diameter is not None and diameter > 0.0):
             raise TargetError(
                 f"target {self.name!r}: crater_depth/free_surface_depth need the projectile "
                 "diameter (pass diameter= to kernel_arrays)"
             )
-        bounds = np.zeros((n, 5 if windowed else 2))
+        if crater:
+            if mass is None or nose_length is None or tip is None or not mass > 0.0:
+                raise TargetError(
+                    f"target {self.name!r}: crater_depth needs the projectile mass, nose "
+                    "length and tip (pass mass=, nose_length=, tip= to kernel_arrays)"
+                )
+            for lay in solid:
+                kc = lay.medium.crater_depth
+                if 0.0 < kc * diameter < nose_length * (1.0 - 1e-12):
+                    raise TargetError(
+                        f"medium {lay.medium.name!r}: crater_depth {kc!r} calibers is shorter "
+                        f"than the nose ({nose_length / diameter:.4g} calibers); Forrestal's "
+                        "crater region ends with the nose embedded, so crater_depth must be "
+                        f">= {nose_length / diameter:.4g} (Forrestal et al. 1994: 2; Li & "
+                        "Chen 2003: 0.707 + nose length / d)"
+                    )
+        bounds = np.zeros((n, WINDOW_COLUMNS if windowed else 2))
         coef = np.zeros((n, p))
         fric = np.empty((n, k, 2))
         top = 0.0
@@ -326,6 +397,12 @@ class Target:
                 bounds[j, 2] = lay.medium.crater_depth * diameter
                 bounds[j, 3] = zone if free_top else 0.0
                 bounds[j, 4] = zone if free_bottom and math.isfinite(bottom) else 0.0
+                bounds[j, 5] = mass if crater else 0.0
+                ratio = lay.medium.plastic_zone_ratio
+                bounds[j, 6] = ratio if free_top else 0.0
+                bounds[j, 7] = ratio if free_bottom and math.isfinite(bottom) else 0.0
+                bounds[j, 8] = 0.5 * diameter
+                bounds[j, 9] = tip if crater else 0.0
             c = lay.medium.coefficients
             coef[j, : len(c)] = c
             sp, mu = lay.medium.friction_speeds, lay.medium.friction_mu

@@ -67,6 +67,7 @@ from pencore.integrators.driver import (
 )
 from pencore.integrators.problem import Problem
 from pencore.kernels.contact_points import MAX_SAMPLES_PER_STEP, push_path
+from pencore.kernels.crater import has_crater
 from pencore.kernels.forces import rhs_model
 from pencore.kernels.jacobian import analytic_jacobian_applies, velocity_jacobian
 from pencore.kernels.state import (
@@ -418,7 +419,8 @@ def integrate(
     entered = clear <= 0.0
     sf = np.array([0.0, h_init, 0.0 if entered else math.nan, clear, 0.0])
     si = np.array([int(entered), 0, 1, 0, 0], dtype=np.int64)
-    analytic = num.jacobian == "analytic" and analytic_jacobian_applies(eps, n_gauss)
+    crater = has_crater(bounds)
+    analytic = num.jacobian == "analytic" and analytic_jacobian_applies(eps, n_gauss, crater)
     ts_parts = [np.zeros(1)]
     ys_parts = [y[None, :].copy()]
     n_saved = 0

@@ -30,6 +30,7 @@ from pencore.plotting.depth import plot_fig5, plot_table2, plot_verification
 from pencore.plotting.ensemble import plot_ensemble
 from pencore.plotting.perforation import (
     plot_ballistic_limit,
+    plot_ballistic_map,
     plot_measurements,
     plot_residual_velocity,
 )
@@ -62,6 +63,7 @@ __all__ = [
     "plot_start_height",
     "plot_fig18",
     "plot_ballistic_limit",
+    "plot_ballistic_map",
     "plot_residual_velocity",
     "plot_measurements",
     "plot_attribution",

@@ -11,7 +11,12 @@ from matplotlib.figure import Figure
 from pencore.plotting.critical import _search_errorbars
 from pencore.plotting.style import _MARKERS, _VI, _c, _pname, new_figure, styled
 
-__all__ = ["plot_ballistic_limit", "plot_residual_velocity", "plot_measurements"]
+__all__ = [
+    "plot_ballistic_limit",
+    "plot_residual_velocity",
+    "plot_measurements",
+    "plot_ballistic_map",
+]
 
 
 @styled
@@ -116,4 +121,60 @@ def plot_measurements(ds: xr.Dataset) -> Figure:
         ax.set_aspect("equal")
         ax.grid(alpha=0.3)
         ax.legend(fontsize=7, frameon=False, loc="lower right")
+    return fig
+
+
+@styled
+def plot_ballistic_map(bl_map: xr.Dataset, cmp: xr.Dataset | None = None) -> Figure:
+    """Ballistic-limit map and the obliquity ratio, with the line-of-sight rule.
+
+    Left: ``v_bl`` against plate thickness (calibers) for each obliquity, the paper's
+    model (option ``none``, else the first), with the line-of-sight rule
+    ``v_bl(0) sec(theta)`` dashed.
+    Right: ``v_bl(theta) / v_bl(0)`` against obliquity at the map's thickness nearest
+    the measured plates' median, one line per near-surface option, ``sec(theta)``
+    dashed, and the measured ratios (``cmp``, :func:`pencore.studies.obliquity.
+    compare_obliquity`) as points.
+    """
+    fig = new_figure(11.0, 4.6)
+    ax, bx = fig.subplots(1, 2)
+    names = [str(o) for o in bl_map["option"].values]
+    first = "none" if "none" in names else names[0]
+    base = bl_map.sel(option=first)
+    tod = base["t_over_d"].values
+    for k, o in enumerate(base["obliquity"].values):
+        c = _c(k)
+        ax.plot(tod, base["v_bl"].sel(obliquity=o), "-", color=c,
+                marker=_MARKERS[k % len(_MARKERS)], label=f"{o:g}°")  # fmt: skip
+        if o > 0:
+            ax.plot(tod, base["v_bl_los"].sel(obliquity=o), "--", color=c, lw=1)
+    ax.plot([], [], "k--", lw=1, label=r"line of sight $v_{bl}(0)\,\sec\theta$")
+    ax.set_xlabel("Plate thickness / projectile diameter")
+    ax.set_ylabel(r"Ballistic limit $v_{bl}$ (m/s)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8, frameon=False, title="obliquity", title_fontsize=8)
+    ax.set_title(
+        f"{_pname(bl_map.attrs.get('projectile', ''))} into {bl_map.attrs.get('medium', '')}"
+        f" ({first})",
+        fontsize=9,
+    )
+    x0 = float(np.median(cmp["t_over_d"].values)) if cmp is not None else float(np.median(tod))
+    t_pick = float(tod[np.argmin(np.abs(tod - x0))])
+    obl = bl_map["obliquity"].values
+    for k, o in enumerate(bl_map["option"].values):
+        bx.plot(obl, bl_map["ratio"].sel(option=o, t_over_d=t_pick), "-", color=_c(k),
+                marker=_MARKERS[k % len(_MARKERS)], label=f"pencore, {o}")  # fmt: skip
+    th = np.linspace(0.0, float(obl.max()), 61)
+    bx.plot(th, 1.0 / np.cos(np.radians(th)), "k--", lw=1, label=r"line of sight $\sec\theta$")
+    if cmp is not None:
+        alu = np.char.startswith(cmp["material"].values.astype(str), "AA")
+        for sel, mk, lab in ((alu, "o", "measured, aluminium"), (~alu, "s", "measured, steel")):
+            if sel.any():
+                bx.plot(cmp["obliquity"].values[sel], cmp["measured_ratio"].values[sel], mk,
+                        mfc="none", color="k", label=lab)  # fmt: skip
+    bx.set_xlabel("Obliquity θ (deg)")
+    bx.set_ylabel(r"$v_{bl}(\theta)\,/\,v_{bl}(0)$")
+    bx.grid(alpha=0.3)
+    bx.legend(fontsize=7, frameon=False)
+    bx.set_title(f"obliquity ratio, pencore at t/d = {t_pick:g}", fontsize=9)
     return fig

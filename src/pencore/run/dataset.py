@@ -34,7 +34,7 @@ def _layer_dict(lay: Any) -> dict[str, Any]:
             # the depth windows only when on (default runs record what they always did)
             **{
                 k: getattr(lay.medium, k)
-                for k in ("crater_depth", "free_surface_depth")
+                for k in ("crater_depth", "free_surface_depth", "plastic_zone_ratio")
                 if getattr(lay.medium, k) > 0.0
             },
         },

@@ -49,7 +49,17 @@ from pencore.run.impact import prepare, simulate
 from pencore.studies.common import t_half_width
 from pencore.studies.perforation import slab_target
 
-__all__ = ["QUANTITIES", "load_measurements", "measured_vs_predicted", "error_statistics"]
+__all__ = [
+    "QUANTITIES",
+    "NEAR_SURFACE_KEYS",
+    "load_measurements",
+    "measured_vs_predicted",
+    "error_statistics",
+    "statistics_by_option",
+]
+
+#: Near-surface option keys of :func:`statistics_by_option` (calibers, calibers, ``c/a``).
+NEAR_SURFACE_KEYS = ("crater_depth", "free_surface_depth", "plastic_zone_ratio")
 
 #: Measured column -> (quantity name, units, long name).
 QUANTITIES: dict[str, tuple[str, str, str]] = {
@@ -150,19 +160,23 @@ def load_measurements(entry: Mapping[str, Any]) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def _slab(target: str, thickness: float) -> Target:
+def _slab(target: str, thickness: float, options: Mapping[str, float] | None = None) -> Target:
     t = get_target(target)
-    if not math.isfinite(thickness):
-        return t
-    if len(t.layers) != 1:
-        raise InputError(f"a slab of {target!r} needs a single-medium target")
-    return slab_target(target, thickness)
+    if math.isfinite(thickness):
+        if len(t.layers) != 1:
+            raise InputError(f"a slab of {target!r} needs a single-medium target")
+        t = slab_target(target, thickness)
+    if options:
+        t = t.with_windows(**options)
+    return t
 
 
-def _predict(row: pd.Series, num: Numerics, cache: dict) -> tuple[float, str]:
+def _predict(
+    row: pd.Series, num: Numerics, cache: dict, options: Mapping[str, float] | None = None
+) -> tuple[float, str]:
     key = (row["projectile"], row["target"], row["thickness_m"])
     if key not in cache:
-        target = _slab(row["target"], row["thickness_m"])
+        target = _slab(row["target"], row["thickness_m"], options)
         cache[key] = (target, prepare(row["projectile"], target, num))
     target, pr = cache[key]
     ds = simulate(
@@ -288,6 +302,81 @@ def measured_vs_predicted(
     ds.attrs.update(
         title="pencore against published measurements",
         entries_json=json.dumps([_entry(e) for e in entries], sort_keys=True),
+        numerics_json=json.dumps(asdict(num), sort_keys=True),
+    )
+    return ds
+
+
+def statistics_by_option(
+    entries: Sequence[Mapping[str, Any]],
+    options: Mapping[str, Mapping[str, float]],
+    numerics: Numerics | Mapping | None = None,
+) -> xr.Dataset:
+    """Error statistics per near-surface option, material and kind of measurement.
+
+    Every shot of every data file is run once per option set (``options``: name ->
+    settings of :data:`NEAR_SURFACE_KEYS` applied to every medium of the target; ``{}``
+    is the paper's model). Groups are ``material`` (the target's name) and ``quantity``
+    (:data:`QUANTITIES`).
+
+    Returns
+    -------
+    xarray.Dataset
+        ``predicted`` and ``rel_error`` on ``(option, shot)``, ``measured`` on ``shot``,
+        and the :func:`error_statistics` on ``(option, group)``, ``group`` labelled
+        ``material/quantity``.
+    """
+    if not entries:
+        raise InputError("measurements: no data files configured")
+    if not options:
+        raise InputError("statistics_by_option: no option sets (give at least 'none: {}')")
+    for name, opt in options.items():
+        bad = [k for k in opt if k not in NEAR_SURFACE_KEYS]
+        if bad:
+            raise InputError(
+                f"option set {name!r}: unknown key(s) {bad}; use {list(NEAR_SURFACE_KEYS)}"
+            )
+    df = pd.concat([load_measurements(e) for e in entries], ignore_index=True)
+    num = resolve_numerics(numerics)
+    names = [str(n) for n in options]
+    pred = np.empty((len(names), len(df)))
+    for i, name in enumerate(names):
+        cache: dict = {}
+        opt = {k: float(v) for k, v in options[name].items()}
+        for j, (_, r) in enumerate(df.iterrows()):
+            pred[i, j] = _predict(r, num, cache, opt)[0]
+    measured = df["measured"].to_numpy()
+    rel = np.full(pred.shape, np.nan)
+    pos = measured > 0
+    rel[:, pos] = pred[:, pos] / measured[pos] - 1.0
+    groups = sorted({f"{t}/{q}" for t, q in zip(df["target"], df["quantity"], strict=True)})
+    key = np.array([f"{t}/{q}" for t, q in zip(df["target"], df["quantity"], strict=True)])
+    stats: dict[str, np.ndarray] = {}
+    for i in range(len(names)):
+        for g, grp in enumerate(groups):
+            sel = key == grp
+            for k, v in error_statistics(measured[sel], pred[i, sel]).items():
+                stats.setdefault(k, np.full((len(names), len(groups)), np.nan))[i, g] = v
+    ds = xr.Dataset(
+        {
+            "measured": ("shot", measured, {"long_name": "measured value"}),
+            "predicted": (("option", "shot"), pred, {"long_name": "pencore"}),
+            "rel_error": (("option", "shot"), rel, {"units": "1", "long_name": "rel. error"}),
+            "source": ("shot", df["source"].to_numpy().astype(str)),
+            **{
+                f"stat_{k}": (("option", "group"), v, {"long_name": k.replace("_", " ")})
+                for k, v in stats.items()
+            },
+        },
+        coords={
+            "option": names,
+            "shot": df["shot"].to_numpy().astype(str),
+            "group": groups,
+        },
+    )
+    ds.attrs.update(
+        title="pencore against published measurements, per near-surface option",
+        options_json=json.dumps({n: dict(options[n]) for n in names}, sort_keys=True),
         numerics_json=json.dumps(asdict(num), sort_keys=True),
     )
     return ds

@@ -33,14 +33,18 @@ __all__ = ["slab_target", "ballistic_limit_map", "residual_velocity_curve"]
 
 
 def slab_target(
-    medium: str, thickness: float, crater_depth: float = 0.0, free_surface_depth: float = 0.0
+    medium: str,
+    thickness: float,
+    crater_depth: float = 0.0,
+    free_surface_depth: float = 0.0,
+    plastic_zone_ratio: float = 0.0,
 ) -> Target:
-    """A single slab of the named medium, ``thickness`` m, with the depth windows
-    (calibers; 0 = off)."""
+    """A single slab of the named medium, ``thickness`` m, with the near-surface options
+    (calibers, and the finite-sphere ratio ``c/a``; 0 = off)."""
     t = get_target(medium)
     slab = Target(f"{medium} slab {thickness:g} m", (Layer(t.medium, float(thickness)),))
-    if crater_depth or free_surface_depth:
-        slab = slab.with_windows(crater_depth, free_surface_depth)
+    if crater_depth or free_surface_depth or plastic_zone_ratio:
+        slab = slab.with_windows(crater_depth, free_surface_depth, plastic_zone_ratio)
     return slab
 
 
@@ -56,6 +60,7 @@ def ballistic_limit_map(
     scan: int | None = 5,
     crater_depth: float = 0.0,
     free_surface_depth: float = 0.0,
+    plastic_zone_ratio: float = 0.0,
     numerics: Numerics | Mapping[str, Any] | None = None,
 ) -> xr.Dataset:
     """Ballistic limit (m/s) on ``(thickness m, obliquity deg)``: one search per cell."""
@@ -64,7 +69,7 @@ def ballistic_limit_map(
     num = resolve_numerics(numerics)
     res = np.empty((th.size, obl.size), dtype=object)
     for i, h in enumerate(th):
-        t = slab_target(medium, h, crater_depth, free_surface_depth)
+        t = slab_target(medium, h, crater_depth, free_surface_depth, plastic_zone_ratio)
         for j, o in enumerate(obl):
             res[i, j] = ballistic_limit(
                 projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan, numerics=num
@@ -82,6 +87,7 @@ def ballistic_limit_map(
             "medium": medium,
             "crater_depth_calibers": float(crater_depth),
             "free_surface_depth_calibers": float(free_surface_depth),
+            **({"plastic_zone_ratio": float(plastic_zone_ratio)} if plastic_zone_ratio else {}),
             "search_lo_m_s": float(lo),
             "search_hi_m_s": float(hi),
             "search_tol_m_s": float(tol),

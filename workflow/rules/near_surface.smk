@@ -1,0 +1,62 @@
+# Near-surface options against measured oblique ballistic limits (beyond the paper),
+# pencore.studies.obliquity.
+#   near_surface_map     ballistic-limit map (t/d x obliquity x option) with the
+#                        line-of-sight rule, and the measured obliquity ratios against it
+#   near_surface_figure  the map and the ratio figure
+NEAR_SURFACE = config["near_surface"]
+
+
+rule near_surface_map:
+    input:
+        csv=NEAR_SURFACE["csv"],
+    output:
+        map="results/near_surface/ballistic_map.nc",
+        cmp="results/near_surface/obliquity_ratio.nc",
+    log:
+        "results/logs/near_surface/map.log",
+    benchmark:
+        "results/benchmarks/near_surface/map.tsv"
+    conda:
+        "../envs/pencore.yaml"
+    params:
+        study=canonical(NEAR_SURFACE),
+        numerics=canonical(config["numerics"]),
+        code=PHYSICS_CODE,
+    script:
+        "../scripts/near_surface.py"
+
+
+rule near_surface_figure:
+    input:
+        map="results/near_surface/ballistic_map.nc",
+        cmp="results/near_surface/obliquity_ratio.nc",
+    output:
+        png=report(
+            "results/near_surface/ballistic_map.png",
+            caption="../report/near_surface.rst",
+            category="4 Beyond the paper",
+            subcategory="Near-surface options",
+            labels={"name": "ballistic-limit map", "type": "figure"},
+        ),
+        pdf="results/near_surface/ballistic_map.pdf",
+    log:
+        "results/logs/near_surface/figure.log",
+    benchmark:
+        "results/benchmarks/near_surface/figure.tsv"
+    localrule: True
+    conda:
+        "../envs/pencore.yaml"
+    params:
+        code=PLOTTING_CODE,
+    script:
+        "../scripts/near_surface_figure.py"
+
+
+ALL_TARGETS.extend(
+    [
+        "results/near_surface/ballistic_map.nc",
+        "results/near_surface/obliquity_ratio.nc",
+        "results/near_surface/ballistic_map.png",
+        "results/near_surface/ballistic_map.pdf",
+    ]
+)
