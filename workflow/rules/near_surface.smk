@@ -1,14 +1,40 @@
 # Near-surface options against measured oblique ballistic limits (beyond the paper),
 # pencore.studies.obliquity.
-#   near_surface_map     ballistic-limit map (t/d x obliquity x option) with the
+#   near_surface_part    ballistic-limit map (t/d x obliquity) of one option set
+#   near_surface_map     the parts joined (option x t/d x obliquity) with the
 #                        line-of-sight rule, and the measured obliquity ratios against it
 #   near_surface_figure  the map and the ratio figure
 NEAR_SURFACE = config["near_surface"]
 
 
+rule near_surface_part:
+    # one job per option set, so the map's searches run in parallel
+    input:
+        csv=NEAR_SURFACE["csv"],
+    output:
+        "results/near_surface/parts/{option}.nc",
+    log:
+        "results/logs/near_surface/part_{option}.log",
+    benchmark:
+        "results/benchmarks/near_surface/part_{option}.tsv"
+    wildcard_constraints:
+        option="|".join(NEAR_SURFACE["options"]),
+    conda:
+        "../envs/pencore.yaml"
+    params:
+        study=lambda wc: canonical(
+            {**NEAR_SURFACE, "options": {wc.option: NEAR_SURFACE["options"][wc.option]}}
+        ),
+        numerics=canonical(config["numerics"]),
+        code=PHYSICS_CODE,
+    script:
+        "../scripts/near_surface_part.py"
+
+
 rule near_surface_map:
     input:
         csv=NEAR_SURFACE["csv"],
+        parts=expand("results/near_surface/parts/{option}.nc", option=NEAR_SURFACE["options"]),
     output:
         map="results/near_surface/ballistic_map.nc",
         cmp="results/near_surface/obliquity_ratio.nc",

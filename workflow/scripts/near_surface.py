@@ -1,10 +1,11 @@
-"""Rule near_surface_map: thin adapter to pencore.studies.obliquity."""
+"""Rule near_surface_map: thin adapter to pencore.studies.obliquity (the option sets' maps
+joined, and the measured obliquity ratios against them)."""
 
 from _common import start_log
 
-from pencore.io.netcdf import file_sha256, write_netcdf
+from pencore.io.netcdf import file_sha256, read_netcdf, write_netcdf
 from pencore.studies.obliquity import (
-    ballistic_map,
+    combine_maps,
     compare_obliquity,
     load_oblique,
     obliquity_summary,
@@ -14,18 +15,9 @@ smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], "near_surface_map")
 
 study = dict(smk.params.study)
-bl_map = ballistic_map(
-    study["projectile"],
-    study["medium"],
-    study["t_over_d"],
-    study["obliquity_deg"],
-    {k: dict(v) for k, v in dict(study["options"]).items()},
-    lo=study["search_m_s"]["min"],
-    hi=study["search_m_s"]["max"],
-    tol=study["velocity_tol_m_s"],
-    scan=study["scan_points"],
-    numerics=smk.params.numerics,
-)
+# in the configured order of the option sets
+parts = {p.rsplit("/", 1)[-1].removesuffix(".nc"): p for p in smk.input.parts}
+bl_map = combine_maps([read_netcdf(parts[name]) for name in study["options"]])
 cmp = compare_obliquity(load_oblique(smk.input.csv), bl_map)
 config_slice = {
     "near_surface": study,

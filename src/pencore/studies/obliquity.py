@@ -194,6 +194,27 @@ def ballistic_map(
     return out
 
 
+def combine_maps(parts: Sequence[xr.Dataset]) -> xr.Dataset:
+    """One map from maps of single option sets (:func:`ballistic_map` run per option, as
+    the workflow's parallel jobs do): concatenated on ``option``, in the order given, with
+    the option sets of all of them in ``options_json``. Every part must share the grid,
+    projectile, medium and numerics."""
+    if not parts:
+        raise InputError("combine_maps needs at least one map")
+    keys = ("projectile", "medium", "diameter_m", "search_tol_m_s", "numerics_json")
+    first = parts[0]
+    for part in parts[1:]:
+        for key in keys:
+            if part.attrs.get(key) != first.attrs.get(key):
+                raise InputError(f"maps differ in {key}: cannot combine them")
+    out = xr.concat(list(parts), dim="option")
+    sets: dict[str, Any] = {}
+    for part in parts:
+        sets.update(json.loads(part.attrs["options_json"]))
+    out.attrs = {**first.attrs, "options_json": json.dumps(sets, sort_keys=True)}
+    return out
+
+
 def compare_obliquity(rows: pd.DataFrame, bl_map: xr.Dataset) -> xr.Dataset:
     """Measured obliquity ratios against pencore's (per option) and ``sec(theta)``.
 
