@@ -18,7 +18,7 @@ import sys
 from collections.abc import Callable, Sequence
 
 from pencore.cli import ballistic, library, simulate
-from pencore.cli.options import PROG, CommandFailure, Parser, one_line
+from pencore.cli.options import INTERRUPTED, PROG, CommandFailure, Parser, one_line
 from pencore.errors import InputError, SolverError
 from pencore.version import __version__
 
@@ -97,7 +97,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except InputError as exc:
         msg, status = str(exc), 2
     except KeyboardInterrupt:
-        msg, status = "interrupted (Ctrl-C); nothing was written", 130
+        msg, status = INTERRUPTED, 130
     except SolverError as exc:
         msg, status = f"solver failed: {exc}", 1
     print(f"{PROG}: error: {one_line(msg)}", file=sys.stderr)

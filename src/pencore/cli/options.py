@@ -26,6 +26,8 @@ from pencore.io.atomic import describe_os_error
 
 __all__ = [
     "PROG",
+    "INTERRUPTED",
+    "exit_at_once_on_interrupt",
     "CommandFailure",
     "Parser",
     "one_line",
@@ -41,6 +43,19 @@ __all__ = [
 ]
 
 PROG = "pencore"
+
+#: What the command line says when Ctrl-C ends it (exit status 130).
+INTERRUPTED = "interrupted (Ctrl-C); nothing was written"
+
+
+def exit_at_once_on_interrupt() -> None:
+    """Make Ctrl-C during an integration end the command at once: one line on stderr,
+    exit status 130, whatever the numerics (the subcommands that integrate call this
+    before their runs; they write their output files only after the runs). See
+    :mod:`pencore.integrators.driver`."""
+    from pencore.integrators.driver import exit_on_interrupt
+
+    exit_on_interrupt(f"{PROG}: error: {INTERRUPTED}", 130)
 
 
 class CommandFailure(Exception):

@@ -12,6 +12,7 @@ from pencore.cli.options import (
     add_window_options,
     check_output,
     cli_inputs,
+    exit_at_once_on_interrupt,
     number_type,
     numerics_option,
     obliquity,
@@ -149,6 +150,7 @@ def run(args: argparse.Namespace) -> int:
     from pencore.io.netcdf import write_netcdf
     from pencore.run.impact import simulate
 
+    exit_at_once_on_interrupt()
     out = check_output(args.out) if args.out is not None else None
     projectile = resolve("projectile", args.projectile, get_projectile)
     target = with_windows(resolve("target", args.target, get_target), args)
