@@ -9,7 +9,6 @@ every value checked against :data:`pencore.inputs.limits.LIMITS`.
 from __future__ import annotations
 
 import difflib
-import math
 from collections.abc import Mapping
 from dataclasses import dataclass, fields, replace
 from typing import Any
@@ -17,7 +16,14 @@ from typing import Any
 from pencore.errors import InputError
 from pencore.inputs.limits import check_keys, integer, number
 
-__all__ = ["Numerics", "DEFAULT_NUMERICS", "METHODS", "JACOBIANS", "resolve_numerics"]
+__all__ = [
+    "Numerics",
+    "DEFAULT_NUMERICS",
+    "DEFAULT_MAX_WALL",
+    "METHODS",
+    "JACOBIANS",
+    "resolve_numerics",
+]
 
 #: Integration methods: the compiled Rosenbrock pair (default) and scipy's implicit
 #: ``solve_ivp`` methods on the same right-hand side (reference; much slower).
@@ -26,6 +32,9 @@ METHODS = ("rosenbrock", "Radau", "BDF")
 #: Jacobians of the Rosenbrock integrator: closed form where the model allows it
 #: (:func:`pencore.kernels.jacobian.analytic_jacobian_applies`), or finite differences.
 JACOBIANS = ("analytic", "finite_difference")
+
+#: Default wall-time budget of one run (s); see :attr:`Numerics.max_wall`.
+DEFAULT_MAX_WALL = 600.0
 
 _INT_FIELDS = ("n_nose", "n_shank", "n_face", "max_steps", "n_gauss", "jacobian_age")
 
@@ -55,8 +64,16 @@ class Numerics:
     max_steps : int
         Step budget: accepted steps before the run fails with ``step_limit``.
     max_wall : float
-        Wall-time budget (s) of one run, ``inf`` (default) for none: results then do
-        not depend on the machine's speed.
+        Wall-time budget (s) of one run; the run fails with ``wall_limit`` when it is
+        used up (looked at on a time basis, not between chunks of steps). Default
+        :data:`DEFAULT_MAX_WALL` = 600 s, so that no accepted input runs for hours
+        unannounced: the limits allow numerics (``n_nose = n_shank = 10 000``,
+        ``n_gauss = 64``, long friction tables) whose steps cost a second each, times
+        ``max_steps`` = 400 000. 600 s is over 300 times the slowest single run
+        measured here (scipy's BDF on the reference case, 1.8 s; the default
+        integrator takes 0.07 s), so it does not end a sane run even on a slow,
+        loaded machine; ``inf`` turns the budget
+        off (results then never depend on the machine's speed).
     h_min : float
         Smallest time step (s): a step the error control would make shorter fails the
         run as stiff or chattering (``step_underflow``).
@@ -92,7 +109,7 @@ class Numerics:
     v_stop: float = 1.0
     t_max: float = 1.0
     max_steps: int = 400_000
-    max_wall: float = math.inf
+    max_wall: float = DEFAULT_MAX_WALL
     h_min: float = 1e-12
     n_gauss: int = 4
     jacobian_age: int = 6
