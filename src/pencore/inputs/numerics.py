@@ -14,6 +14,7 @@ from dataclasses import dataclass, fields, replace
 from typing import Any
 
 from pencore.errors import InputError
+from pencore.inputs.gate import brief
 from pencore.inputs.limits import check_keys, integer, number
 
 __all__ = [
@@ -129,16 +130,17 @@ class Numerics:
             object.__setattr__(self, f.name, checked)
         if self.method not in METHODS:
             hint = difflib.get_close_matches(str(self.method), METHODS, n=1)
-            tip = f"; did you mean {hint[0]!r}?" if hint else ""
+            tip = f"; did you mean {brief(hint[0])}?" if hint else ""
             raise InputError(
-                f"numerics method must be one of {', '.join(METHODS)}, got {self.method!r}{tip}"
+                f"numerics method must be one of {', '.join(METHODS)}, "
+                f"got {brief(self.method)}{tip}"
             )
         if self.jacobian not in JACOBIANS:
             hint = difflib.get_close_matches(str(self.jacobian), JACOBIANS, n=1)
-            tip = f"; did you mean {hint[0]!r}?" if hint else ""
+            tip = f"; did you mean {brief(hint[0])}?" if hint else ""
             raise InputError(
                 f"numerics jacobian must be one of {', '.join(JACOBIANS)}, "
-                f"got {self.jacobian!r}{tip}"
+                f"got {brief(self.jacobian)}{tip}"
             )
 
 
@@ -166,7 +168,7 @@ def resolve_numerics(
         base = _apply(DEFAULT_NUMERICS, numerics)
     else:
         raise InputError(
-            f"numerics must be a pencore.Numerics or a mapping of options, got {numerics!r:.80}"
+            f"numerics must be a pencore.Numerics or a mapping of options, got {brief(numerics)}"
         )
     return _apply(base, overrides) if overrides else base
 

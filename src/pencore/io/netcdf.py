@@ -149,8 +149,12 @@ def write_netcdf(
     *,
     config_slice: Mapping[str, Any],
     study: str,
+    protect: Sequence[str | os.PathLike[str]] = (),
 ) -> Path:
     """Write ``ds`` to ``path`` with provenance, compression and an atomic replace.
+
+    Only a regular file (or nothing) at ``path`` is replaced, and never one of
+    ``protect`` (the run's own input files): :func:`pencore.io.atomic.check_replaceable`.
 
     Parameters
     ----------
@@ -189,7 +193,7 @@ def write_netcdf(
     for name in out.variables:
         out[name].attrs = _netcdf_safe_attrs(out[name].attrs)
     out, encoding = cf_encoding(out)
-    with atomic_path(path) as tmp:
+    with atomic_path(path, protect=protect) as tmp:
         out.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
     return path
 
