@@ -21,7 +21,7 @@ from pathlib import Path
 from typing import Any, NoReturn
 
 from pencore.errors import InputError, WriteError
-from pencore.inputs.gate import brief, load_yaml_text
+from pencore.inputs.gate import brief, brief_path, load_yaml_text
 from pencore.inputs.limits import number
 from pencore.io.atomic import check_replaceable, describe_os_error
 
@@ -262,9 +262,11 @@ def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
     """
     path = Path(out)
     if path.suffix != ".nc":
-        raise CommandFailure(f"output file {brief(out)} must end in .nc", 2)
+        raise CommandFailure(f"output file {brief_path(out)} must end in .nc", 2)
     if path.is_dir():
-        raise CommandFailure(f"output file {brief(out)} is a directory; give a FILE.nc path", 2)
+        raise CommandFailure(
+            f"output file {brief_path(out)} is a directory; give a FILE.nc path", 2
+        )
     try:
         check_replaceable(path, [p for p in inputs if os.path.isfile(p)])
     except WriteError as exc:
@@ -272,7 +274,7 @@ def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
     parent = path.parent
     if not parent.is_dir():
         raise CommandFailure(
-            f"output directory {brief(str(parent))} of {brief(out)} does not exist; "
+            f"output directory {brief_path(parent)} of {brief_path(out)} does not exist; "
             "create it first",
             2,
         )
@@ -284,7 +286,7 @@ def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
     except OSError as exc:
         cause = describe_os_error(exc)
         raise CommandFailure(
-            f"output directory {brief(str(parent))} of {brief(out)} is not writable: {cause} "
+            f"output directory {brief_path(parent)} of {brief_path(out)} is not writable: {cause} "
             f"({exc.strerror})",
             1 if exc.errno in (errno.ENOSPC, errno.EDQUOT) else 2,
         ) from None
@@ -340,6 +342,8 @@ def resolve(kind: str, spec: str, getter: Callable[[str], Any]) -> Any:
     except InputError:
         raise
     except UnicodeDecodeError:
-        raise InputError(f"{kind} file {brief(spec)} is not a text (UTF-8) YAML file") from None
+        raise InputError(
+            f"{kind} file {brief_path(spec)} is not a text (UTF-8) YAML file"
+        ) from None
     except (ValueError, TypeError, KeyError, AttributeError, IndexError) as exc:
-        raise InputError(f"invalid {kind} {brief(spec)}: {exc}") from None
+        raise InputError(f"invalid {kind} {brief_path(spec)}: {exc}") from None

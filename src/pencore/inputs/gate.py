@@ -31,6 +31,7 @@ from pencore.errors import InputError
 
 __all__ = [
     "brief",
+    "brief_path",
     "read_yaml",
     "load_yaml_text",
     "MAX_YAML_BYTES",
@@ -67,6 +68,15 @@ def brief(value: Any, limit: int = MAX_QUOTE) -> str:
     if len(text) <= limit:
         return text
     return f"{text[: limit - 3]}... ({len(text)} characters)"
+
+
+def brief_path(path: Any, limit: int = 200) -> str:
+    """A path quoted for a message: whole up to ``limit`` characters, else its end
+    (where the file name is)."""
+    text = str(path)
+    if len(text) <= limit:
+        return repr(text)
+    return repr("..." + text[-(limit - 3) :])
 
 
 def _int_digits(value: int) -> int:
@@ -187,7 +197,7 @@ def read_yaml(path: str | os.PathLike[str], what: str) -> Any:
     InputError
         One line naming the file (quoted short) and why it is refused.
     """
-    name = f"{what} file {brief(str(path))}"
+    name = f"{what} file {brief_path(path)}"
     try:
         st = os.stat(path)
     except OSError as exc:

@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from pencore.errors import InputError
-from pencore.inputs.gate import brief, read_yaml
+from pencore.inputs.gate import brief, brief_path, read_yaml
 from pencore.inputs.geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
 from pencore.inputs.limits import check_keys, number
 from pencore.inputs.target import Layer, Medium, Target
@@ -429,7 +429,7 @@ def _load_yaml(path: Path, what: str) -> dict[str, Any]:
     alias expansion, no repeated keys)."""
     data = read_yaml(path, what)
     if not isinstance(data, dict):
-        raise InputError(f"{what} file {brief(str(path))} must contain a mapping")
+        raise InputError(f"{what} file {brief_path(path)} must contain a mapping")
     return data
 
 
@@ -439,7 +439,7 @@ def _from_yaml_file(spec: str, what: str, build: Any) -> Any:
     try:
         return build(data)
     except InputError as exc:
-        raise InputError(f"{what} file {brief(spec)}: {exc}") from None
+        raise InputError(f"{what} file {brief_path(spec)}: {exc}") from None
 
 
 def _looks_like_path(s: str) -> bool:

@@ -115,7 +115,7 @@ def check_replaceable(
     """
     try:
         st = os.stat(path)
-    except FileNotFoundError:
+    except (FileNotFoundError, NotADirectoryError):  # nothing there to replace
         return
     except OSError as exc:
         raise WriteError(f"cannot write {_quote(path)}: {describe_os_error(exc)}") from None
@@ -140,7 +140,7 @@ def check_replaceable(
 
 def _quote(path: str | os.PathLike[str]) -> str:
     text = str(path)
-    return repr(text) if len(text) <= 80 else repr(text[:77] + "...")
+    return repr(text) if len(text) <= 200 else repr("..." + text[-197:])
 
 
 def _kind(mode: int) -> str:
