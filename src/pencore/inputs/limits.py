@@ -377,7 +377,7 @@ def as_float(value: Any, allow_str: bool) -> float | None:
         try:
             return float(value)
         except OverflowError:  # an integer no float can hold: out of every range
-            return math.copysign(math.inf, value)
+            return math.inf if value > 0 else -math.inf
     if allow_str and isinstance(value, str):
         try:
             return float(value)
@@ -387,7 +387,7 @@ def as_float(value: Any, allow_str: bool) -> float | None:
         try:
             return float(value)
         except OverflowError:
-            return math.copysign(math.inf, int(value))
+            return math.inf if value > 0 else -math.inf
     try:  # 0-d numpy arrays
         import numpy as np
 
