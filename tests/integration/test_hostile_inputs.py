@@ -491,3 +491,85 @@ def test_valid_numerics_at_the_limits_accepted(kwargs):
     pr = pencore.prepare("p2", "soil", kwargs)
     for key, value in kwargs.items():
         assert getattr(pr.numerics, key) == value
+
+
+# ------------------------------------------------------------ workflow configuration
+
+REPO = Path(__file__).resolve().parents[2]
+
+
+def _config() -> dict:
+    import yaml
+
+    return yaml.safe_load((REPO / "config" / "config.yaml").read_text())
+
+
+def _edit(cfg: dict, path: str, value) -> dict:
+    node = cfg
+    keys = path.split(".")
+    for k in keys[:-1]:
+        node = node[int(k)] if isinstance(node, list) else node[k]
+    if isinstance(node, list):
+        node[int(keys[-1])] = value
+    else:
+        node[keys[-1]] = value
+    return cfg
+
+
+BAD_CONFIG = [
+    ("numerics", {"rtol": 0.5}, "rtol"),
+    ("numerics", {"max_steps": HUGE}, "max_steps"),
+    ("numerics", {"n_gauss": 0}, "n_gauss"),
+    ("numerics", {"method": "RK45"}, "method"),
+    ("numerics", {"rtoll": 1e-6}, "did you mean"),
+    ("ensemble.cases.0.projectile", "p9", "unknown projectile"),
+    ("ensemble.cases.0.target", "mud", "unknown target"),
+    ("ensemble.cases.0.target", "missing/target.yaml", "No such file"),
+    ("validation.measurements.0.projectile", "p7", "unknown projectile"),
+    ("validation.measurements.0.target", "sand", "unknown target"),
+    ("validation.fig5.cases.0.projectile", "concrete_crh9", "unknown projectile"),
+    ("perforation.projectile", "p0", "unknown projectile"),
+    ("perforation.medium", "steel", "unknown medium"),
+    ("ensemble.cases.0.velocity_m_s", {"dist": "normal", "mean": 9000, "sd": 800}, "velocity"),
+    ("ensemble.cases.0.yaw_deg", {"dist": "uniform", "min": -95, "max": 5}, "yaw"),
+    ("ensemble.cases.0.yaw_deg", {"dist": "normal", "mean": 0, "sd": 10}, "90 deg"),
+    ("ensemble.cases.0.omega_rad_s", {"dist": "normal", "mean": 0, "sd": 5000}, "omega"),
+    ("ensemble.cases.0.azimuth_deg", {"dist": "uniform", "min": 0, "max": 720}, "azimuth"),
+    ("perforation.ballistic_limit.thickness_m", [0.5, 0.0], "thickness"),
+    ("perforation.ballistic_limit.thickness_m", [0.5, float("nan")], "thickness"),
+    ("perforation.residual_velocity.thickness_m", -1.0, "thickness"),
+    ("perforation.residual_velocity.thickness_m", HUGE, "thickness"),
+    ("perforation.scan_points", 10**9, "scan_points"),
+    ("perforation.scan_points", 1, "scan_points"),
+    ("perforation.scan_points", 2.5, "scan_points"),
+    ("validation.fig5.cases.0.v_min", 1500.0, "v_min"),
+    ("validation.fig5.cases.2.v_min", 5000.0, "misses"),
+    ("validation.fig5.cases.0.v_max", -10.0, "v_max"),
+]
+
+
+@pytest.mark.parametrize("path, value, word", BAD_CONFIG, ids=lambda x: str(x)[:40])
+def test_workflow_config_refused_at_parse_time(path, value, word):
+    from pencore.errors import ConfigError
+    from pencore.studies.config_check import check_config
+
+    cfg = _edit(_config(), path, value)
+    t0 = time.monotonic()
+    with pytest.raises(ConfigError) as info:
+        check_config(cfg, REPO)
+    assert time.monotonic() - t0 < HANG_GUARD_S
+    text = str(info.value)
+    assert "\n" not in text
+    _check_line(text)
+    assert word in text, text
+
+
+def test_shipped_workflow_configs_pass():
+    import yaml
+
+    from pencore.studies.config_check import check_config
+
+    check_config(_config(), REPO)
+    large = _config()
+    large.update(yaml.safe_load((REPO / "config" / "ensemble_large.yaml").read_text()))
+    check_config(large, REPO)
