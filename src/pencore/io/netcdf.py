@@ -26,7 +26,9 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from pencore.errors import ResultError
 from pencore.io.atomic import atomic_path
+from pencore.io.results import unreadable_message
 from pencore.version import __version__
 
 __all__ = [
@@ -244,12 +246,24 @@ def cf_encoding(ds: xr.Dataset) -> tuple[xr.Dataset, dict[str, dict[str, Any]]]:
 
 
 def read_netcdf(path: str | os.PathLike[str]) -> xr.Dataset:
-    """Read a netCDF file fully into memory (the file is closed on return)."""
+    """Read a netCDF file fully into memory (the file is closed on return).
+
+    Raises
+    ------
+    FileNotFoundError
+        No file at ``path``.
+    pencore.errors.ResultError
+        The file cannot be read (corrupt or truncated): one line naming it and how to
+        make it again.
+    """
     path = Path(path)
     if not path.is_file():
         raise FileNotFoundError(f"no netCDF file at {str(path)!r}")
-    with xr.open_dataset(path, engine="netcdf4") as ds:
-        return ds.load()
+    try:
+        with xr.open_dataset(path, engine="netcdf4") as ds:
+            return ds.load()
+    except (OSError, RuntimeError, ValueError, KeyError) as exc:
+        raise ResultError(unreadable_message(path, exc)) from None
 
 
 def downsample(
