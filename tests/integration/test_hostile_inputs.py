@@ -573,3 +573,30 @@ def test_shipped_workflow_configs_pass():
     large = _config()
     large.update(yaml.safe_load((REPO / "config" / "ensemble_large.yaml").read_text()))
     check_config(large, REPO)
+
+
+# ------------------------------------------------------------ messages that name the cause
+
+
+def test_slow_impact_from_the_default_start_is_run():
+    # the nose tip reaches 1.45 mm below the outermost ring: from the touching start a
+    # speed of 1 mm/s reaches the target within t_max
+    ds = pencore.simulate("p2", "soil", 1e-3)
+    assert ds.attrs["outcome"] == "stopped"
+
+
+def test_tiny_t_max_from_the_default_start_names_t_max():
+    text = _api(lambda: pencore.simulate("p2", "soil", 300.0, t_max=1e-12))
+    assert "t_max = 1e-12 s ends before the body touches" in text
+    assert "start height" not in text
+
+
+def test_thin_layer_failure_names_the_thin_layer_not_chatter():
+    from pencore.errors import SolverError
+
+    foil = {"name": "foil", "layers": [{"medium": "aluminium", "thickness": 1e-6}]}
+    with pytest.raises(SolverError) as info:
+        pencore.simulate("p2", foil, 300.0)
+    text = str(info.value)
+    assert "thinnest layer" in text and "chatters" not in text
+    assert "\n" not in text
