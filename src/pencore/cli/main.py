@@ -116,6 +116,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         msg, status = f"solver failed: {exc}", 1
     finally:
         sys.stdout = real_stdout
+        driver = sys.modules.get("pencore.integrators.driver")
+        if driver is not None:  # main() called in-process: Ctrl-C behaves as before
+            driver.exit_on_interrupt(None)
     print(f"{PROG}: error: {one_line(msg)}", file=sys.stderr)
     return status
 

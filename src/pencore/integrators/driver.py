@@ -158,15 +158,16 @@ def _on_sigint(signum: int, frame: object) -> None:
         guard.stop[0] = STOP_INTERRUPT
 
 
-def exit_on_interrupt(line: str, status: int = 130) -> None:
+def exit_on_interrupt(line: str | None, status: int = 130) -> None:
     """Make Ctrl-C during a run end the process at once (for the command line).
 
     The watcher thread writes ``line`` and a newline to stderr and ends the process with
     ``status`` (:func:`os._exit`, without unwinding: call this only where nothing is
     being written while a run is integrated). A Ctrl-C outside a run is an ordinary
-    ``KeyboardInterrupt``.
+    ``KeyboardInterrupt``. ``line=None`` restores the default (``KeyboardInterrupt``
+    after the step in progress).
     """
-    _EXIT_LINE[:] = [f"{line}\n", str(int(status))]
+    _EXIT_LINE[:] = [] if line is None else [f"{line}\n", str(int(status))]
 
 
 def _start_watcher() -> bool:
