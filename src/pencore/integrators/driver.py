@@ -137,7 +137,8 @@ class RunGuard:
         return self.stop[0] == STOP_WALL or time.monotonic() > self.deadline
 
 
-_LOCK = threading.Lock()
+#: Reentrant: the SIGINT handler takes it in the main thread, which may hold it already.
+_LOCK = threading.RLock()
 _ACTIVE: set[RunGuard] = set()
 #: The watcher's pipe (read end, write end) and the wakeup fd it replaced (-1: none).
 _PIPE: list[int] = []
