@@ -9,7 +9,7 @@ traceback and no file left behind.
 The time bounds say what the mechanism guarantees (:mod:`pencore.integrators.driver`),
 with room for a loaded machine: on the command line the watcher thread ends the process
 as soon as the signal arrives (bound 3 s, measured ~0.04 s); from the API the run stops
-after the step in progress (bound 10 s, measured 0.4-0.9 s). A check made only between
+after the step in progress (bound 10 s, measured 0.66-0.84 s). A check made only between
 500-step chunks misses both bounds by minutes.
 """
 
