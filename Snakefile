@@ -4,11 +4,14 @@
 #   python -m snakemake --cores 2 archive              # refresh results/archive/
 #   python -m snakemake --report results/report.html
 # Physics lives in the pencore package; rules call it through thin workflow/scripts/.
+import sys
+
 import yaml
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
 from pencore.errors import ConfigError
+from pencore.io.results import set_aside_unreadable
 from pencore.studies.config_check import check_config, schema_error_message
 from pencore.studies.sources import physics_source_hash, plotting_source_hash
 
@@ -29,6 +32,16 @@ except Exception:
     with open(workflow.source_path("workflow/schemas/config.schema.yaml")) as f:
         schema = yaml.safe_load(f)
     raise WorkflowError(schema_error_message(config, schema)) from None
+
+
+# a result that cannot be opened (corrupt, truncated by a crash or a full disk) would
+# pass as up to date: set it aside, so that this run makes it again
+for _path, _reason in set_aside_unreadable("results"):
+    print(
+        f"pencore: {_path} cannot be read ({_reason}); set aside as {_path.name}.corrupt "
+        "and made again",
+        file=sys.stderr,
+    )
 
 
 report: "workflow/report/workflow.rst"

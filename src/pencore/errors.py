@@ -13,6 +13,7 @@ TargetError        a target definition cannot be used
 ConfigError        a workflow configuration cannot be run
 SolverError        an integration could not finish
 WriteError         a file could not be written (nothing was left behind)
+ResultError        a result file cannot be read (corrupt or truncated)
 =================  ==========================================================
 """
 
@@ -25,6 +26,7 @@ __all__ = [
     "ConfigError",
     "SolverError",
     "WriteError",
+    "ResultError",
 ]
 
 
@@ -55,3 +57,8 @@ class WriteError(OSError):
     def __init__(self, message: str, code: int | None = None) -> None:
         super().__init__(message)
         self.errno = code
+
+
+class ResultError(RuntimeError):
+    """A result file that cannot be read (corrupt or truncated); the message is one line
+    naming the file and how to make it again."""

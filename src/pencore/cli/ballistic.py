@@ -8,6 +8,7 @@ import math
 
 from pencore.cli.options import (
     add_window_options,
+    exit_at_once_on_interrupt,
     number_type,
     numerics_option,
     obliquity,
@@ -77,6 +78,7 @@ def run(args: argparse.Namespace) -> int:
     from pencore.inputs.library import get_projectile, get_target
     from pencore.search.perforation import ballistic_limit
 
+    exit_at_once_on_interrupt()
     if not args.lo < args.hi:
         raise InputError(f"--lo {args.lo:g} must be below --hi {args.hi:g} (m/s)")
     projectile = resolve("projectile", args.projectile, get_projectile)

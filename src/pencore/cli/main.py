@@ -18,8 +18,9 @@ import sys
 from collections.abc import Callable, Sequence
 
 from pencore.cli import ballistic, library, simulate
-from pencore.cli.options import PROG, CommandFailure, Parser, one_line
+from pencore.cli.options import INTERRUPTED, PROG, CommandFailure, Parser, one_line
 from pencore.errors import InputError, SolverError
+from pencore.io.atomic import describe_os_error
 from pencore.version import __version__
 
 __all__ = ["main", "build_parser"]
@@ -82,6 +83,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help, --version, usage errors
         return exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 2)
+    if sys.stdout is None:  # started with standard output closed (`pencore ... >&-`)
+        print(f"{PROG}: error: standard output is closed; nothing was run", file=sys.stderr)
+        return 1
+    real_stdout = sys.stdout
+    sys.stdout = _GuardedStdout(real_stdout)  # type: ignore[assignment]
     try:
         status = COMMANDS[args.command](args)
         sys.stdout.flush()
@@ -89,19 +95,76 @@ def main(argv: Sequence[str] | None = None) -> int:
     except BrokenPipeError:
         # the reader went away (`pencore list | head`): stop quietly, as Unix tools do;
         # point stdout at devnull so the interpreter's final flush does not fail again
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
+        _silence_stdout(real_stdout)
         return 141  # 128 + SIGPIPE, what a shell reports for a tool killed by SIGPIPE
+    except _StdoutFailed as exc:
+        # a full device (`> /dev/full`) or an unusable descriptor; output files are
+        # written completely before the summary is printed, and are kept
+        _silence_stdout(real_stdout)
+        msg = (
+            f"cannot write to standard output: {describe_os_error(exc.cause)}; "
+            "files written before are kept"
+        )
+        status = 1
     except CommandFailure as exc:
         msg, status = str(exc), exc.status
     except InputError as exc:
         msg, status = str(exc), 2
     except KeyboardInterrupt:
-        msg, status = "interrupted (Ctrl-C); nothing was written", 130
+        msg, status = INTERRUPTED, 130
     except SolverError as exc:
         msg, status = f"solver failed: {exc}", 1
+    finally:
+        sys.stdout = real_stdout
+        driver = sys.modules.get("pencore.integrators.driver")
+        if driver is not None:  # main() called in-process: Ctrl-C behaves as before
+            driver.exit_on_interrupt(None)
     print(f"{PROG}: error: {one_line(msg)}", file=sys.stderr)
     return status
+
+
+class _StdoutFailed(Exception):
+    """Writing to standard output failed (other than a broken pipe)."""
+
+    def __init__(self, cause: OSError) -> None:
+        super().__init__(str(cause))
+        self.cause = cause
+
+
+class _GuardedStdout:
+    """Standard output whose write failures are told apart from other ``OSError``."""
+
+    def __init__(self, stream: object) -> None:
+        self._stream = stream
+
+    def write(self, text: str) -> int:
+        try:
+            return self._stream.write(text)  # type: ignore[attr-defined]
+        except BrokenPipeError:
+            raise
+        except OSError as exc:
+            raise _StdoutFailed(exc) from None
+
+    def flush(self) -> None:
+        try:
+            self._stream.flush()  # type: ignore[attr-defined]
+        except BrokenPipeError:
+            raise
+        except OSError as exc:
+            raise _StdoutFailed(exc) from None
+
+    def __getattr__(self, name: str) -> object:
+        return getattr(self._stream, name)
+
+
+def _silence_stdout(stream: object) -> None:
+    """Point standard output at the null device, so that the interpreter's final flush
+    of what is still buffered does not fail again."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, stream.fileno())  # type: ignore[attr-defined]
+    except (OSError, ValueError, AttributeError):
+        pass
 
 
 if __name__ == "__main__":

@@ -16,16 +16,19 @@ import errno
 import math
 import os
 import tempfile
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any, NoReturn
 
-from pencore.errors import InputError
+from pencore.errors import InputError, WriteError
+from pencore.inputs.gate import brief, brief_path, load_yaml_text
 from pencore.inputs.limits import number
-from pencore.io.atomic import describe_os_error
+from pencore.io.atomic import check_replaceable, describe_os_error
 
 __all__ = [
     "PROG",
+    "INTERRUPTED",
+    "exit_at_once_on_interrupt",
     "CommandFailure",
     "Parser",
     "one_line",
@@ -41,6 +44,19 @@ __all__ = [
 ]
 
 PROG = "pencore"
+
+#: What the command line says when Ctrl-C ends it (exit status 130).
+INTERRUPTED = "interrupted (Ctrl-C); nothing was written"
+
+
+def exit_at_once_on_interrupt() -> None:
+    """Make Ctrl-C during an integration end the command at once: one line on stderr,
+    exit status 130, whatever the numerics (the subcommands that integrate call this
+    before their runs; they write their output files only after the runs). See
+    :mod:`pencore.integrators.driver`."""
+    from pencore.integrators.driver import exit_on_interrupt
+
+    exit_on_interrupt(f"{PROG}: error: {INTERRUPTED}", 130)
 
 
 class CommandFailure(Exception):
@@ -114,7 +130,7 @@ def number_type(key: str, ok: Callable[[float], bool] = lambda v: True, allowed:
         except ValueError:
             v = math.nan
         if allowed and not (math.isfinite(v) and ok(v)):
-            raise argparse.ArgumentTypeError(f"must be {allowed}, got {text!r}")
+            raise argparse.ArgumentTypeError(f"must be {allowed}, got {brief(text)}")
         try:
             return number(text, key, allow_str=True)
         except InputError as exc:
@@ -152,12 +168,10 @@ def numerics_option(text: str) -> tuple[str, Any]:
     """
     key, sep, value = text.partition("=")
     if not sep or not key:
-        raise argparse.ArgumentTypeError(f"must be KEY=VALUE (e.g. rtol=1e-6), got {text!r}")
-    import yaml
-
+        raise argparse.ArgumentTypeError(f"must be KEY=VALUE (e.g. rtol=1e-6), got {brief(text)}")
     try:
-        parsed = yaml.safe_load(value)
-    except yaml.YAMLError:
+        parsed = load_yaml_text(value, f"--numerics value of {brief(key)}")
+    except InputError:
         parsed = value
     if isinstance(parsed, str):  # YAML reads 1e-6 (no decimal point) as text
         try:
@@ -230,7 +244,7 @@ def with_windows(target: Any, args: argparse.Namespace) -> Any:
     return target.with_windows(args.crater_depth, args.free_surface_depth, ratio)
 
 
-def check_output(out: str) -> Path:
+def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
     """Check that ``out`` can be written, before any computation.
 
     A temporary file is created and removed in the output directory (``os.access`` is
@@ -239,8 +253,12 @@ def check_output(out: str) -> Path:
     Parameters
     ----------
     out : str
-        The ``--out`` path; must end in ``.nc``, not be a directory, and lie in an
-        existing, writable directory.
+        The ``--out`` path; must end in ``.nc``, be a regular file if it exists (not a
+        directory, device or FIFO), not be one of ``inputs``, and lie in an existing,
+        writable directory.
+    inputs : sequence of str
+        The run's input files (``--projectile``, ``--target``; names that are not files
+        are skipped): the output must not replace them.
 
     Returns
     -------
@@ -255,23 +273,31 @@ def check_output(out: str) -> Path:
     """
     path = Path(out)
     if path.suffix != ".nc":
-        raise CommandFailure(f"output file {out!r} must end in .nc", 2)
+        raise CommandFailure(f"output file {brief_path(out)} must end in .nc", 2)
     if path.is_dir():
-        raise CommandFailure(f"output file {out!r} is a directory; give a FILE.nc path", 2)
+        raise CommandFailure(
+            f"output file {brief_path(out)} is a directory; give a FILE.nc path", 2
+        )
+    try:
+        check_replaceable(path, [p for p in inputs if os.path.isfile(p)])
+    except WriteError as exc:
+        raise CommandFailure(str(exc), 2) from None
     parent = path.parent
     if not parent.is_dir():
         raise CommandFailure(
-            f"output directory {str(parent)!r} of {out!r} does not exist; create it first", 2
+            f"output directory {brief_path(parent)} of {brief_path(out)} does not exist; "
+            "create it first",
+            2,
         )
     # a real probe: os.access alone is fooled by root, read-only mounts, ACLs
     try:
-        fd, probe = tempfile.mkstemp(dir=parent, prefix=f".{path.name}.", suffix=".probe")
+        fd, probe = tempfile.mkstemp(dir=parent, prefix=".pencore-probe-", suffix=".probe")
         os.close(fd)
         os.unlink(probe)
     except OSError as exc:
         cause = describe_os_error(exc)
         raise CommandFailure(
-            f"output directory {str(parent)!r} of {out!r} is not writable: {cause} "
+            f"output directory {brief_path(parent)} of {brief_path(out)} is not writable: {cause} "
             f"({exc.strerror})",
             1 if exc.errno in (errno.ENOSPC, errno.EDQUOT) else 2,
         ) from None
@@ -327,6 +353,8 @@ def resolve(kind: str, spec: str, getter: Callable[[str], Any]) -> Any:
     except InputError:
         raise
     except UnicodeDecodeError:
-        raise InputError(f"{kind} file {spec!r} is not a text (UTF-8) YAML file") from None
+        raise InputError(
+            f"{kind} file {brief_path(spec)} is not a text (UTF-8) YAML file"
+        ) from None
     except (ValueError, TypeError, KeyError, AttributeError, IndexError) as exc:
-        raise InputError(f"invalid {kind} {spec!r}: {exc}") from None
+        raise InputError(f"invalid {kind} {brief_path(spec)}: {exc}") from None

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import time
 
 from pencore.cli.options import (
@@ -12,6 +13,7 @@ from pencore.cli.options import (
     add_window_options,
     check_output,
     cli_inputs,
+    exit_at_once_on_interrupt,
     number_type,
     numerics_option,
     obliquity,
@@ -150,7 +152,9 @@ def run(args: argparse.Namespace) -> int:
     from pencore.io.netcdf import write_netcdf
     from pencore.run.impact import simulate
 
-    out = check_output(args.out) if args.out is not None else None
+    exit_at_once_on_interrupt()
+    inputs = [args.projectile, args.target]
+    out = check_output(args.out, inputs) if args.out is not None else None
     projectile = resolve("projectile", args.projectile, get_projectile)
     target = with_windows(resolve("target", args.target, get_target), args)
     t0 = time.perf_counter()
@@ -168,7 +172,13 @@ def run(args: argparse.Namespace) -> int:
     total = time.perf_counter() - t0
     if out is not None:
         try:
-            write_netcdf(ds, out, config_slice={"cli": cli_inputs(args)}, study="cli/simulate")
+            write_netcdf(
+                ds,
+                out,
+                config_slice={"cli": cli_inputs(args)},
+                study="cli/simulate",
+                protect=[p for p in inputs if os.path.isfile(p)],
+            )
         except WriteError as exc:  # one line naming the path and the cause; nothing left
             raise CommandFailure(str(exc), 1) from None
     a = ds.attrs

@@ -25,6 +25,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from pencore.errors import GeometryError, InputError
+from pencore.inputs.gate import brief
 from pencore.inputs.limits import number
 
 __all__ = [
@@ -108,7 +109,9 @@ class ConeNose:
 
     def __post_init__(self) -> None:
         if isinstance(self.half_angle, bool) or not isinstance(self.half_angle, int | float):
-            raise GeometryError(f"cone half-angle must be a number of rad, got {self.half_angle!r}")
+            raise GeometryError(
+                f"cone half-angle must be a number of rad, got {brief(self.half_angle)}"
+            )
         _check("half_angle_deg", math.degrees(self.half_angle))
         _check("density", self.density)
 

@@ -14,9 +14,9 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-import yaml
 
 from pencore.errors import InputError
+from pencore.inputs.gate import brief, brief_path, read_yaml
 from pencore.inputs.geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
 from pencore.inputs.limits import check_keys, number
 from pencore.inputs.target import Layer, Medium, Target
@@ -284,13 +284,13 @@ def _num(
     """``d[key]`` as a number within ``LIMITS[limit or key]`` (YAML's ``1e6`` string
     form accepted unless ``allow_str`` is False)."""
     if key not in d:
-        raise InputError(f"{what}: missing key {key!r}")
+        raise InputError(f"{what}: missing key {brief(key)}")
     return number(d[key], limit or key, what, allow_str=allow_str)
 
 
 def _mapping(x: Any, what: str) -> dict[str, Any]:
     if not isinstance(x, dict):
-        raise InputError(f"{what} must be a mapping, got {x!r}")
+        raise InputError(f"{what} must be a mapping, got {brief(x)}")
     return x
 
 
@@ -310,16 +310,16 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
     if not isinstance(d, dict):
         raise InputError(f"projectile definition must be a mapping, got {type(d).__name__}")
     name = str(d.get("name", "projectile"))
-    what = f"projectile {name!r}"
+    what = f"projectile {brief(name)}"
     check_keys(d, ("name", "diameter", "nose", "shank", "source"), what)
     diameter = _num(d, "diameter", what)
     nd = d.get("nose")
     if not isinstance(nd, dict):
-        raise InputError(f"{what}: 'nose' must be a mapping with a 'kind', got {nd!r}")
+        raise InputError(f"{what}: 'nose' must be a mapping with a 'kind', got {brief(nd)}")
     kind = nd.get("kind", "ogive")
     kind = kind.lower() if isinstance(kind, str) else kind
     if kind not in _NOSE_KEYS:
-        raise InputError(f"{what}: nose kind must be ogive, cone or flat, got {kind!r}")
+        raise InputError(f"{what}: nose kind must be ogive, cone or flat, got {brief(kind)}")
     check_keys(nd, _NOSE_KEYS[kind], f"{what} nose")
     rho = _num(nd, "density", what + " nose")
     if kind == "ogive":
@@ -333,7 +333,8 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
         shank = [shank]
     if not isinstance(shank, list) or not all(isinstance(c, dict) for c in shank):
         raise InputError(
-            f"{what}: 'shank' must be a list of mappings with length and density, got {shank!r}"
+            f"{what}: 'shank' must be a list of mappings with length and density, "
+            f"got {brief(shank)}"
         )
     cyl = []
     for k, c in enumerate(shank):
@@ -362,23 +363,23 @@ _WINDOW_KEYS = ("crater_depth", "free_surface_depth", "plastic_zone_ratio")
 def _medium_from(x: Any, what: str) -> Medium:
     if isinstance(x, str):
         if x not in MEDIA:
-            raise InputError(f"{what}: unknown medium {x!r}; known: {', '.join(MEDIA)}")
+            raise InputError(f"{what}: unknown medium {brief(x)}; known: {', '.join(MEDIA)}")
         return MEDIA[x]
     if not isinstance(x, dict):
-        raise InputError(f"{what}: medium must be a name or a mapping, got {x!r}")
+        raise InputError(f"{what}: medium must be a name or a mapping, got {brief(x)}")
     name = str(x.get("name", "medium"))
-    w = f"{what} medium {name!r}"
+    w = f"{what} medium {brief(name)}"
     check_keys(x, _MEDIUM_KEYS, w)
     coef = x.get("coefficients")
     if not isinstance(coef, list | tuple) or not coef:
-        raise InputError(f"{w}: needs a list 'coefficients' [a0, a1, a2, ...], got {coef!r}")
+        raise InputError(f"{w}: needs a list 'coefficients' [a0, a1, a2, ...], got {brief(coef)}")
     coef_f = tuple(
         number(c, "coefficient", f"{w} a{i}", allow_str=True) for i, c in enumerate(coef)
     )
     fr = x.get("friction", 0.0)
     if isinstance(fr, list | tuple):
         if not fr or not all(isinstance(r, list | tuple) and len(r) == 2 for r in fr):
-            raise InputError(f"{w}: friction table must be [[speed_m_s, mu], ...], got {fr!r}")
+            raise InputError(f"{w}: friction table must be [[speed_m_s, mu], ...], got {brief(fr)}")
         sp = tuple(number(r[0], "friction_speed", w, allow_str=True) for r in fr)
         mu = tuple(number(r[1], "friction", w, allow_str=True) for r in fr)
     else:
@@ -399,12 +400,12 @@ def target_from_dict(d: dict[str, Any]) -> Target:
     if not isinstance(d, dict):
         raise InputError(f"target definition must be a mapping, got {type(d).__name__}")
     name = str(d.get("name", "target"))
-    what = f"target {name!r}"
+    what = f"target {brief(name)}"
     if "layers" not in d:
         return Target(name, (Layer(_medium_from(d, what)),))
     check_keys(d, ("name", "layers", "source"), what)
     if not isinstance(d["layers"], list) or not d["layers"]:
-        raise InputError(f"{what}: 'layers' must be a non-empty list, got {d['layers']!r}")
+        raise InputError(f"{what}: 'layers' must be a non-empty list, got {brief(d['layers'])}")
     layers = []
     for k, lay in enumerate(d["layers"]):
         w = f"{what} layer {k}"
@@ -424,19 +425,12 @@ def target_from_dict(d: dict[str, Any]) -> Target:
 
 
 def _load_yaml(path: Path, what: str) -> dict[str, Any]:
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise InputError(f"cannot read {what} file {str(path)!r}: {exc.strerror}") from None
-    except UnicodeDecodeError:
-        raise InputError(f"{what} file {str(path)!r} is not a UTF-8 text (YAML) file") from None
-    try:
-        data = yaml.safe_load(text)
-    except yaml.YAMLError as exc:
-        msg = str(exc).splitlines()[0]
-        raise InputError(f"{what} file {str(path)!r} is not valid YAML: {msg}") from None
+    """The mapping in the YAML file ``path``, read through the input gate
+    (:func:`pencore.inputs.gate.read_yaml`: regular files only, bounded size, depth and
+    alias expansion, no repeated keys)."""
+    data = read_yaml(path, what)
     if not isinstance(data, dict):
-        raise InputError(f"{what} file {str(path)!r} must contain a mapping")
+        raise InputError(f"{what} file {brief_path(path)} must contain a mapping")
     return data
 
 
@@ -446,7 +440,7 @@ def _from_yaml_file(spec: str, what: str, build: Any) -> Any:
     try:
         return build(data)
     except InputError as exc:
-        raise InputError(f"{what} file {spec!r}: {exc}") from None
+        raise InputError(f"{what} file {brief_path(spec)}: {exc}") from None
 
 
 def _looks_like_path(s: str) -> bool:
@@ -462,7 +456,7 @@ def get_projectile(spec: str | Projectile | dict[str, Any]) -> Projectile:
         return projectile_from_dict(spec)
     if not isinstance(spec, str):
         raise InputError(
-            f"projectile must be a name, a YAML file, a mapping or a Projectile, got {spec!r}"
+            f"projectile must be a name, a YAML file, a mapping or a Projectile, got {brief(spec)}"
         )
     named = _named_projectiles()
     if spec in named:
@@ -470,7 +464,7 @@ def get_projectile(spec: str | Projectile | dict[str, Any]) -> Projectile:
     if _looks_like_path(spec) or Path(spec).is_file():
         return _from_yaml_file(spec, "projectile", projectile_from_dict)
     raise InputError(
-        f"unknown projectile {spec!r}; use one of {', '.join(sorted(named))} or a YAML file"
+        f"unknown projectile {brief(spec)}; use one of {', '.join(sorted(named))} or a YAML file"
     )
 
 
@@ -484,9 +478,11 @@ def get_target(spec: str | Target | Medium | dict[str, Any]) -> Target:
     if isinstance(spec, dict):
         return target_from_dict(spec)
     if not isinstance(spec, str):
-        raise InputError(f"target must be a name, a YAML file, a mapping or a Target, got {spec!r}")
+        raise InputError(
+            f"target must be a name, a YAML file, a mapping or a Target, got {brief(spec)}"
+        )
     if spec in MEDIA:
         return Target.half_space(MEDIA[spec])
     if _looks_like_path(spec) or Path(spec).is_file():
         return _from_yaml_file(spec, "target", target_from_dict)
-    raise InputError(f"unknown target {spec!r}; use one of {', '.join(MEDIA)} or a YAML file")
+    raise InputError(f"unknown target {brief(spec)}; use one of {', '.join(MEDIA)} or a YAML file")

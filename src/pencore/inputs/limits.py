@@ -28,6 +28,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from pencore.errors import InputError
+from pencore.inputs.gate import brief
 
 __all__ = [
     "Limit",
@@ -367,10 +368,10 @@ def number(value: Any, key: str, what: str = "", *, allow_str: bool = False) -> 
     if v is None:
         raise InputError(
             f"{where}{lim.label} must be a number of{unit or ' (dimensionless)'}, "
-            f"got {value!r} ({_type_name(value)})"
+            f"got {brief(value)} ({_type_name(value)})"
         )
     if math.isnan(v) or (math.isinf(v) and v != lim.hi) or not lim.contains(v):
-        raise InputError(f"{where}{lim.label} must be {lim.describe()}, got {value!r}")
+        raise InputError(f"{where}{lim.label} must be {lim.describe()}, got {brief(value)}")
     return v
 
 
@@ -380,12 +381,20 @@ def as_float(value: Any, allow_str: bool) -> float | None:
     if isinstance(value, bool):
         return None
     if isinstance(value, numbers.Real):
-        return float(value)
+        try:
+            return float(value)
+        except OverflowError:  # an integer no float can hold: out of every range
+            return math.inf if value > 0 else -math.inf
     if allow_str and isinstance(value, str):
         try:
             return float(value)
         except ValueError:
             return None
+    if isinstance(value, numbers.Integral):  # numpy integers are Integral, not always Real
+        try:
+            return float(value)
+        except OverflowError:
+            return math.inf if value > 0 else -math.inf
     try:  # 0-d numpy arrays
         import numpy as np
 
@@ -401,10 +410,11 @@ def integer(value: Any, key: str, what: str = "") -> int:
     lim = LIMITS[key]
     where = f"{what}: " if what else ""
     v = as_float(value, allow_str=False)
-    if v is None or not math.isfinite(v) or v != math.floor(v):
-        raise InputError(f"{where}{lim.label} must be a whole number, got {value!r}")
+    huge = v is not None and math.isinf(v) and isinstance(value, numbers.Integral)
+    if v is None or not (math.isfinite(v) or huge) or (not huge and v != math.floor(v)):
+        raise InputError(f"{where}{lim.label} must be a whole number, got {brief(value)}")
     if not lim.contains(v):
-        raise InputError(f"{where}{lim.label} must be {lim.describe()}, got {value!r}")
+        raise InputError(f"{where}{lim.label} must be {lim.describe()}, got {brief(value)}")
     return int(v)
 
 
@@ -414,8 +424,10 @@ def check_keys(mapping: Mapping[str, Any], allowed: Iterable[str], what: str) ->
     for key in mapping:
         if key not in allowed:
             hint = difflib.get_close_matches(str(key), allowed, n=1, cutoff=0.6)
-            tip = f"; did you mean {hint[0]!r}?" if hint else ""
-            raise InputError(f"{what}: unknown key {key!r}{tip} (allowed: {', '.join(allowed)})")
+            tip = f"; did you mean {brief(hint[0])}?" if hint else ""
+            raise InputError(
+                f"{what}: unknown key {brief(key)}{tip} (allowed: {', '.join(allowed)})"
+            )
 
 
 def limits_markdown(group: str = "core") -> str:

@@ -81,6 +81,7 @@ from dataclasses import asdict, dataclass, fields
 from typing import Any
 
 from pencore.errors import InputError
+from pencore.inputs.gate import brief
 from pencore.inputs.limits import check_keys, integer, number
 
 __all__ = [
@@ -106,8 +107,8 @@ SURFACE_RINGS, SURFACE_PANELS = 0, 1
 def _choice(value: Any, allowed: tuple[str, ...], what: str) -> str:
     if not isinstance(value, str) or value not in allowed:
         hint = difflib.get_close_matches(str(value), allowed, n=1)
-        tip = f"; did you mean {hint[0]!r}?" if hint else ""
-        raise InputError(f"{what} must be one of {', '.join(allowed)}, got {value!r}{tip}")
+        tip = f"; did you mean {brief(hint[0])}?" if hint else ""
+        raise InputError(f"{what} must be one of {', '.join(allowed)}, got {brief(value)}{tip}")
     return value
 
 
@@ -220,7 +221,7 @@ def _from(cls: type, value: Any, what: str) -> Any:
         return cls(**value)
     raise InputError(
         f"{what} must be a pencore.inputs.models.{cls.__name__} or a mapping of its "
-        f"fields, got {value!r}"
+        f"fields, got {brief(value)}"
     )
 
 

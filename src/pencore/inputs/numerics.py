@@ -9,17 +9,18 @@ every value checked against :data:`pencore.inputs.limits.LIMITS`.
 from __future__ import annotations
 
 import difflib
-import math
 from collections.abc import Mapping
 from dataclasses import dataclass, fields, replace
 from typing import Any
 
 from pencore.errors import InputError
+from pencore.inputs.gate import brief
 from pencore.inputs.limits import check_keys, integer, number
 
 __all__ = [
     "Numerics",
     "DEFAULT_NUMERICS",
+    "DEFAULT_MAX_WALL",
     "METHODS",
     "JACOBIANS",
     "NUMERIC_FIELDS",
@@ -33,6 +34,9 @@ METHODS = ("rosenbrock", "Radau", "BDF")
 #: Jacobians of the Rosenbrock integrator: closed form where the model allows it
 #: (:func:`pencore.kernels.jacobian.analytic_jacobian_applies`), or finite differences.
 JACOBIANS = ("analytic", "finite_difference")
+
+#: Default wall-time budget of one run (s); see :attr:`Numerics.max_wall`.
+DEFAULT_MAX_WALL = 600.0
 
 _INT_FIELDS = ("n_nose", "n_shank", "n_face", "max_steps", "n_gauss", "jacobian_age")
 
@@ -62,8 +66,16 @@ class Numerics:
     max_steps : int
         Step budget: accepted steps before the run fails with ``step_limit``.
     max_wall : float
-        Wall-time budget (s) of one run, ``inf`` (default) for none: results then do
-        not depend on the machine's speed.
+        Wall-time budget (s) of one run; the run fails with ``wall_limit`` when it is
+        used up (looked at on a time basis, not between chunks of steps). Default
+        :data:`DEFAULT_MAX_WALL` = 600 s, so that no accepted input runs for hours
+        unannounced: the limits allow numerics (``n_nose = n_shank = 10 000``,
+        ``n_gauss = 64``, long friction tables) whose steps cost a second each, times
+        ``max_steps`` = 400 000. 600 s is over 300 times the slowest single run
+        measured here (scipy's BDF on the reference case, 1.8 s; the default
+        integrator takes 0.07 s), so it does not end a sane run even on a slow,
+        loaded machine; ``inf`` turns the budget
+        off (results then never depend on the machine's speed).
     h_min : float
         Smallest time step (s): a step the error control would make shorter fails the
         run as stiff or chattering (``step_underflow``).
@@ -99,7 +111,7 @@ class Numerics:
     v_stop: float = 1.0
     t_max: float = 1.0
     max_steps: int = 400_000
-    max_wall: float = math.inf
+    max_wall: float = DEFAULT_MAX_WALL
     h_min: float = 1e-12
     n_gauss: int = 4
     jacobian_age: int = 6
@@ -117,16 +129,17 @@ class Numerics:
             object.__setattr__(self, name, checked)
         if self.method not in METHODS:
             hint = difflib.get_close_matches(str(self.method), METHODS, n=1)
-            tip = f"; did you mean {hint[0]!r}?" if hint else ""
+            tip = f"; did you mean {brief(hint[0])}?" if hint else ""
             raise InputError(
-                f"numerics method must be one of {', '.join(METHODS)}, got {self.method!r}{tip}"
+                f"numerics method must be one of {', '.join(METHODS)}, "
+                f"got {brief(self.method)}{tip}"
             )
         if self.jacobian not in JACOBIANS:
             hint = difflib.get_close_matches(str(self.jacobian), JACOBIANS, n=1)
-            tip = f"; did you mean {hint[0]!r}?" if hint else ""
+            tip = f"; did you mean {brief(hint[0])}?" if hint else ""
             raise InputError(
                 f"numerics jacobian must be one of {', '.join(JACOBIANS)}, "
-                f"got {self.jacobian!r}{tip}"
+                f"got {brief(self.jacobian)}{tip}"
             )
 
 
@@ -161,7 +174,7 @@ def resolve_numerics(
         base = _apply(DEFAULT_NUMERICS, numerics)
     else:
         raise InputError(
-            f"numerics must be a pencore.Numerics or a mapping of options, got {numerics!r:.80}"
+            f"numerics must be a pencore.Numerics or a mapping of options, got {brief(numerics)}"
         )
     return _apply(base, overrides) if overrides else base
 

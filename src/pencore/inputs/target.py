@@ -59,12 +59,14 @@ at each point.
 from __future__ import annotations
 
 import math
+import numbers
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from pencore.errors import InputError, TargetError
+from pencore.inputs.gate import brief
 from pencore.inputs.limits import number
 
 __all__ = [
@@ -132,7 +134,7 @@ class Medium:
     plastic_zone_ratio: float = 0.0
 
     def __post_init__(self) -> None:
-        what = f"medium {self.name!r}"
+        what = f"medium {brief(self.name)}"
         for key in ("crater_depth", "free_surface_depth", "plastic_zone_ratio"):
             object.__setattr__(self, key, _check(key, getattr(self, key), what))
         if 0.0 < self.plastic_zone_ratio <= 1.0:
@@ -162,7 +164,7 @@ class Medium:
         if len(sp) != len(mu) or not sp:
             raise TargetError(f"{what}: friction table needs equal, non-empty speed and mu lists")
         if any(b <= a for a, b in zip(sp, sp[1:], strict=False)):
-            raise TargetError(f"{what}: friction speeds must increase, got {sp!r}")
+            raise TargetError(f"{what}: friction speeds must increase, got {brief(sp)}")
         if not math.isnan(self.density):
             _check("medium_density", self.density, what)
         object.__setattr__(self, "friction_speeds", sp)
@@ -183,8 +185,9 @@ class Medium:
 
     def with_friction(self, mu: float | Sequence[tuple[float, float]]) -> Medium:
         """A copy with constant friction ``mu`` or a table of (speed m/s, mu) pairs."""
-        if isinstance(mu, int | float):
-            return replace(self, friction_speeds=(0.0,), friction_mu=(float(mu),))
+        if isinstance(mu, numbers.Real) or (isinstance(mu, np.ndarray) and mu.ndim == 0):
+            # any real scalar (numpy's float32 too); checked against the limits on build
+            return replace(self, friction_speeds=(0.0,), friction_mu=(mu,))
         sp, m = zip(*mu, strict=True)
         return replace(self, friction_speeds=tuple(sp), friction_mu=tuple(m))
 
@@ -229,11 +232,11 @@ class Target:
     def __post_init__(self) -> None:
         layers = tuple(self.layers)
         if not layers:
-            raise TargetError(f"target {self.name!r} has no layers")
-        what = f"target {self.name!r}"
+            raise TargetError(f"target {brief(self.name)} has no layers")
+        what = f"target {brief(self.name)}"
         for k, lay in enumerate(layers):
             if not isinstance(lay, Layer):
-                raise TargetError(f"{what}: layer {k} must be a Layer, got {lay!r}")
+                raise TargetError(f"{what}: layer {k} must be a Layer, got {brief(lay)}")
             last = k == len(layers) - 1
             if lay.is_gap and (k == 0 or last):
                 raise TargetError(
@@ -358,7 +361,7 @@ class Target:
         crater = any(lay.medium.crater_depth > 0.0 for lay in solid)
         if windowed and not (diameter is not None and diameter > 0.0):
             raise TargetError(
-                f"target {self.name!r}: crater_depth/free_surface_depth need the projectile "
+                f"target {brief(self.name)}: crater_depth/free_surface_depth need the projectile "
                 "diameter (pass diameter= to kernel_arrays)"
             )
         if crater:

@@ -33,7 +33,6 @@ likewise for the moment), so that it balances the kinetic energy of the saved
 from __future__ import annotations
 
 import math
-import time
 
 import numba as nb
 import numpy as np
@@ -41,8 +40,8 @@ import numpy as np
 from pencore.inputs.models import SHANK_CAVITY
 from pencore.integrators.driver import (
     CHUNK_STEPS,
+    RunGuard,
     RunResult,
-    defer_sigint,
     path_of,
     reserve_path,
     start_path,
@@ -118,7 +117,7 @@ def _step(y, dt, first, mass, inertia, gravity, rings, bounds, coef, fric, n_gau
     return clear
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, nogil=True)
 def explicit_chunk(
     y,
     sf,
@@ -139,12 +138,14 @@ def explicit_chunk(
     fric,
     n_gauss,
     model,
+    stop=None,
 ):
     """Advance by at most ``n_max`` saved states (``stride`` steps each) or until
     ``max_steps`` steps in all. ``y``, ``sf``, ``si`` are updated in place (indices as
     :func:`pencore.integrators.rosenbrock.integrate_chunk`; ``si[SI_N_RHS]`` counts steps).
 
-    Returns ``ts, ys, code`` as :func:`pencore.integrators.rosenbrock.integrate_chunk`.
+    Returns ``ts, ys, code`` as :func:`pencore.integrators.rosenbrock.integrate_chunk`;
+    ``stop`` as there (read before every step).
     """
     ts = np.empty(n_max)
     ys = np.empty((n_max, NY))
@@ -157,9 +158,10 @@ def explicit_chunk(
     k = 0
     n = 0
     code = RUNNING
+    halt = np.zeros(1, dtype=np.int64) if stop is None else stop
     while k < n_max:
         code = stop_code(y, t, t_max, si[SI_ENTERED] == 1, clear, v_stop)
-        if code != RUNNING or si[SI_N_RHS] >= max_steps:
+        if code != RUNNING or si[SI_N_RHS] >= max_steps or halt[0] != 0:
             break
         if cavity and path.shape[0] - npath[0] <= MAX_SAMPLES_PER_STEP:
             break
@@ -221,9 +223,17 @@ def integrate_explicit(
     step cannot stall). ``RunResult.n_rhs`` is the number of steps (one load
     evaluation each); ``n_rejected`` is 0.
     """
+    with RunGuard(problem.numerics.max_wall) as guard:
+        return _integrate(problem, y0, stop_at_reversal, guard)
+
+
+def _integrate(
+    problem: Problem, y0: np.ndarray, stop_at_reversal: bool, guard: RunGuard
+) -> RunResult:
+    """The body of :func:`integrate_explicit`, under ``guard``."""
     num = problem.numerics
     dt, t_max, v_stop = problem.emulation.dt, num.t_max, num.v_stop
-    max_steps, max_wall = num.max_steps, num.max_wall
+    max_steps = num.max_steps
     mass, inertia, gravity, rings, bounds, coef, fric, _, n_gauss, model = problem.load_args()
     y = np.array(y0, dtype=float)
     normalise_quaternion(y)
@@ -235,15 +245,14 @@ def integrate_explicit(
     stride = max(1, int(round(RECORD_INTERVAL / dt)))
     ts_parts = [np.zeros(1)]
     ys_parts = [y[None, :].copy()]
-    start = time.monotonic()
     while True:
         model = reserve_path(model, 8192)  # the chunk returns early if it fills
-        with defer_sigint():
-            ts, ys, code = explicit_chunk(
-                y, sf, si, CHUNK_STEPS, stride, max_steps, dt, t_max, v_stop,
-                stop_at_reversal, mass, inertia, gravity, rings, bounds, coef, fric,
-                n_gauss, model,
-            )  # fmt: skip
+        ts, ys, code = explicit_chunk(
+            y, sf, si, CHUNK_STEPS, stride, max_steps, dt, t_max, v_stop,
+            stop_at_reversal, mass, inertia, gravity, rings, bounds, coef, fric,
+            n_gauss, model, guard.stop,
+        )  # fmt: skip
+        guard.check_interrupt()
         ts_parts.append(ts)
         ys_parts.append(ys)
         if code != RUNNING:
@@ -252,7 +261,7 @@ def integrate_explicit(
         if si[SI_N_RHS] >= max_steps:
             outcome = "step_limit"
             break
-        if time.monotonic() - start > max_wall:
+        if guard.out_of_time:
             outcome = "wall_limit"
             break
     ts_all = np.concatenate(ts_parts)

@@ -50,7 +50,6 @@ It fails with ``step_underflow`` when the step needed for the error tolerance fa
 from __future__ import annotations
 
 import math
-import time
 
 import numba as nb
 import numpy as np
@@ -58,8 +57,8 @@ import numpy as np
 from pencore.inputs.models import SHANK_CAVITY
 from pencore.integrators.driver import (
     CHUNK_STEPS,
+    RunGuard,
     RunResult,
-    defer_sigint,
     path_of,
     reserve_path,
     stalled,
@@ -221,7 +220,7 @@ def _next_step(h, err):
     return h * min(5.0, max(0.2, 0.8 * err ** (-1.0 / 3.0)))
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, nogil=True)
 def integrate_chunk(
     y,
     f0,
@@ -248,6 +247,7 @@ def integrate_chunk(
     model,
     jacobian_age=1,
     analytic=False,
+    stop=None,
 ):
     """Advance a trajectory by at most ``n_max`` accepted steps.
 
@@ -264,6 +264,11 @@ def integrate_chunk(
     target (the free-flight Jacobian has no force rows), and before retrying a rejected
     step with a held one; ``analytic`` selects the closed-form velocity Jacobian
     (see :func:`_jacobian`).
+
+    ``stop`` (int64 array of one, or None) is read before every step and every retried
+    step: when ``stop[0]`` is not 0 (Ctrl-C or the wall budget, set by another thread,
+    :class:`pencore.integrators.driver.RunGuard`) the chunk ends at once with ``RUNNING``
+    and the step in progress is dropped.
 
     Returns
     -------
@@ -285,9 +290,10 @@ def integrate_chunk(
     cavity = model[0][0] == SHANK_CAVITY
     path, npath = model[3], model[4]
     lc, spacing = model[1][2], model[1][3]
+    halt = np.zeros(1, dtype=np.int64) if stop is None else stop
     while True:
         code = stop_code(y, t, t_max, si[SI_ENTERED] == 1, clear, v_stop)
-        if code != RUNNING or k == n_max:
+        if code != RUNNING or k == n_max or halt[0] != 0:
             break
         if cavity and path.shape[0] - npath[0] <= MAX_SAMPLES_PER_STEP:
             break
@@ -328,8 +334,10 @@ def integrate_chunk(
                 h = 0.2 * h
             else:
                 h = h * max(0.2, 0.8 * err ** (-1.0 / 3.0))
-            if h < h_min:
+            if h < h_min or halt[0] != 0:
                 break
+        if halt[0] != 0 and not (err <= 1.0):
+            break
         if not (err <= 1.0):
             code = STEP_UNDERFLOW if math.isfinite(err) else NON_FINITE
             sf[SF_ERR] = err
@@ -380,9 +388,10 @@ def integrate(
     """Integrate one trajectory from state ``y0`` (SI units) with the Rosenbrock pair.
 
     Drives :func:`integrate_chunk` ``CHUNK_STEPS`` accepted steps at a time, so results
-    grow as needed, a pending signal (Ctrl-C) is handled between chunks, and the run is
-    bounded by ``max_steps`` accepted steps (outcome ``step_limit``) and ``max_wall``
-    seconds of wall time (outcome ``wall_limit``; ``inf`` for no limit). A chunk of
+    grow as needed; the run is bounded by ``max_steps`` accepted steps (outcome
+    ``step_limit``) and ``max_wall`` seconds of wall time (outcome ``wall_limit``, looked
+    at on a time basis, :class:`~pencore.integrators.driver.RunGuard`), and Ctrl-C raises
+    ``KeyboardInterrupt`` after the step in progress. A chunk of
     ``CHUNK_STEPS`` accepted steps that moves the centre of mass less than
     ``stall_distance`` (m) and changes its speed by less than 1 % ends the run as
     ``chatter``: the steps are accepted, but so small that the run would only end at
@@ -403,9 +412,17 @@ def integrate(
     RunResult
         ``outcome`` is one of :data:`OUTCOMES` (never ``running``) or ``wall_limit``.
     """
+    with RunGuard(problem.numerics.max_wall) as guard:
+        return _integrate(problem, y0, velocity, stop_at_reversal, guard)
+
+
+def _integrate(
+    problem: Problem, y0: np.ndarray, velocity: float, stop_at_reversal: bool, guard: RunGuard
+) -> RunResult:
+    """The body of :func:`integrate`, under ``guard``."""
     num = problem.numerics
     t_max, rtol, h_min, v_stop = num.t_max, num.rtol, num.h_min, num.v_stop
-    max_steps, max_wall = num.max_steps, num.max_wall
+    max_steps = num.max_steps
     atol = problem.atol(velocity)
     h_init = 1e-7
     max_travel = problem.max_travel
@@ -424,16 +441,15 @@ def integrate(
     ts_parts = [np.zeros(1)]
     ys_parts = [y[None, :].copy()]
     n_saved = 0
-    start = time.monotonic()
     while True:
         n_max = max(0, min(CHUNK_STEPS, max_steps - n_saved))
         model = reserve_path(model, (n_max + 1) * MAX_SAMPLES_PER_STEP)
-        with defer_sigint():
-            ts, ys, code = integrate_chunk(
-                y, f0, sf, si, n_max, t_max, rtol, atol, h_min, max_travel, v_stop,
-                stop_at_reversal, mass, inertia, gravity, rings, bounds, coef, fric, eps,
-                n_gauss, reach, model, num.jacobian_age, analytic,
-            )  # fmt: skip
+        ts, ys, code = integrate_chunk(
+            y, f0, sf, si, n_max, t_max, rtol, atol, h_min, max_travel, v_stop,
+            stop_at_reversal, mass, inertia, gravity, rings, bounds, coef, fric, eps,
+            n_gauss, reach, model, num.jacobian_age, analytic, guard.stop,
+        )  # fmt: skip
+        guard.check_interrupt()
         ts_parts.append(ts)
         ys_parts.append(ys)
         n_saved += ts.size
@@ -446,7 +462,7 @@ def integrate(
         if ts.size == CHUNK_STEPS and stalled(ys, stall_distance):
             outcome = "chatter"
             break
-        if time.monotonic() - start > max_wall:
+        if guard.out_of_time:
             outcome = "wall_limit"
             break
     return RunResult(

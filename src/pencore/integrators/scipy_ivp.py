@@ -22,13 +22,12 @@ not (its nose-tip path grows at accepted steps, which ``solve_ivp`` does not exp
 from __future__ import annotations
 
 import math
-import time
 from typing import Any
 
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from pencore.integrators.driver import RunResult
+from pencore.integrators.driver import RunGuard, RunResult
 from pencore.integrators.problem import Problem
 from pencore.kernels.forces import rhs_model
 from pencore.kernels.state import body_top
@@ -44,7 +43,9 @@ def integrate_scipy(
     Parameters are those of :func:`pencore.integrators.rosenbrock.integrate`; the method
     is ``problem.numerics.method`` (``"Radau"`` or ``"BDF"``); ``numerics.max_steps`` and
     ``numerics.max_wall`` bound the number of right-hand-side calls / 20 and the wall
-    time.
+    time (looked at before every call). Every compiled call holds SIGINT and is followed
+    by a look at the run's stop flag (:class:`~pencore.integrators.driver.RunGuard`), so
+    Ctrl-C raises ``KeyboardInterrupt`` after the call in progress.
 
     Returns
     -------
@@ -60,10 +61,15 @@ def integrate_scipy(
     # the 14th component is the work of the contact stresses (J): 1 % of rtol x KE0
     atol14 = np.append(atol, 1e-2 * rtol * 0.5 * mass * float(y0[7:10] @ y0[7:10]))
     calls = [0]
-    start = time.monotonic()
+    guard = RunGuard(max_wall)
 
     class _Budget(Exception):
         pass
+
+    def compiled(fun: Any, *fargs: Any) -> Any:
+        out = fun(*fargs)
+        guard.check_interrupt()
+        return out
 
     def state(y: np.ndarray) -> np.ndarray:
         yn = np.array(y, dtype=float)
@@ -74,12 +80,12 @@ def integrate_scipy(
         calls[0] += 1
         if calls[0] > 20 * max_steps:
             raise _Budget("step_limit")
-        if calls[0] % 256 == 0 and time.monotonic() - start > max_wall:
+        if guard.out_of_time:
             raise _Budget("wall_limit")
-        return rhs_model(state(y), *args)[0]
+        return compiled(rhs_model, state(y), *args)[0]
 
     def clearance(t: float, y: np.ndarray) -> float:
-        return float(rhs_model(state(y), *args)[1])
+        return float(compiled(rhs_model, state(y), *args)[1])
 
     def slow(t: float, y: np.ndarray) -> float:
         return math.sqrt(float(y[7:10] @ y[7:10])) - v_stop
@@ -91,7 +97,7 @@ def integrate_scipy(
 
     def cleared(t: float, y: np.ndarray) -> float:
         # > 0 once every ring is below the rear face of a finite target
-        return rear - float(body_top(state(y), rings))
+        return rear - float(compiled(body_top, state(y), rings))
 
     contact = _event(clearance, terminal=False, direction=-1.0)
     left = _event(clearance, terminal=True, direction=1.0)
@@ -99,7 +105,7 @@ def integrate_scipy(
     reversal = _event(rising, terminal=stop_at_reversal, direction=1.0)
     speed0 = math.sqrt(float(y0[7:10] @ y0[7:10]))
     try:
-        with np.errstate(over="ignore"):  # scipy's numerical Jacobian probes wide steps
+        with guard, np.errstate(over="ignore"):  # scipy's numerical Jacobian probes wide steps
             sol = solve_ivp(
                 f,
                 (0.0, t_max),
@@ -111,13 +117,13 @@ def integrate_scipy(
                 events=(contact, left, stopped, reversal)
                 + ((_event(cleared, terminal=True, direction=1.0),) if math.isfinite(rear) else ()),
             )
+            t_contact = 0.0 if clearance(0.0, y0) <= 0.0 else math.nan
     except _Budget as exc:
         return RunResult(
             np.zeros(1), state(y0)[None, :], str(exc), False, math.nan, calls[0], 0, math.nan
         )
     if sol.status == -1:
         return RunResult(sol.t, sol.y.T, "step_underflow", False, math.nan, calls[0], 0, math.inf)
-    t_contact = 0.0 if clearance(0.0, y0) <= 0.0 else math.nan
     if sol.t_events[0].size:
         t_contact = float(sol.t_events[0][0]) if math.isnan(t_contact) else t_contact
     outcome = "time_limit"

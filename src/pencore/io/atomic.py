@@ -8,7 +8,12 @@ file-size limit, permission, the netCDF library's own ``RuntimeError``, Ctrl-C, 
 the temporary file is removed and the failure is raised as one :class:`WriteError` whose
 message names the path and the cause in words.
 
-Temporary files are named ``.<name>.pencore-tmp-<pid>-<random>``. A run killed with
+Only a regular file (or nothing) is replaced: a destination that is a directory, a
+device, a FIFO or a socket, or that is one of the run's own inputs (``protect``), is
+refused with a :class:`WriteError` before anything is written.
+
+Temporary files are named ``.<name>.pencore-tmp-<pid>-<random>`` (``<name>`` cut to
+:data:`TEMP_NAME_CHARS` characters, so that a long file name still leaves room). A run killed with
 SIGKILL cannot remove its own; the next write to the same destination removes every such
 file whose process no longer exists (a temporary file of a live process, e.g. a parallel
 job, is left alone).
@@ -22,15 +27,19 @@ import os
 import secrets
 import shutil
 import signal
+import stat
 import threading
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 
 from pencore.errors import WriteError
 
-__all__ = ["atomic_path", "describe_os_error", "TEMP_MARK"]
+__all__ = ["atomic_path", "check_replaceable", "describe_os_error", "TEMP_MARK", "TEMP_NAME_CHARS"]
 
 TEMP_MARK = ".pencore-tmp-"
+#: Characters of the destination's name kept in its temporary file's name (a name of up
+#: to 255 bytes, the usual file-system limit, then still has a temporary file).
+TEMP_NAME_CHARS = 100
 
 _CAUSES = {
     errno.ENOSPC: "disk full",
@@ -69,7 +78,7 @@ def _pid_alive(pid: int) -> bool:
 
 def _clean_stale_temps(path: Path) -> None:
     """Remove temporary files of ``path`` left by processes that no longer exist."""
-    prefix = f".{path.name}{TEMP_MARK}"
+    prefix = _temp_prefix(path)
     try:
         candidates = list(path.parent.glob(f"{prefix}*"))
     except OSError:
@@ -79,6 +88,72 @@ def _clean_stale_temps(path: Path) -> None:
         if pid_text.isdigit() and int(pid_text) != os.getpid() and not _pid_alive(int(pid_text)):
             with contextlib.suppress(OSError):
                 tmp.unlink()
+
+
+def _temp_prefix(path: Path) -> str:
+    return f".{path.name[:TEMP_NAME_CHARS]}{TEMP_MARK}"
+
+
+def check_replaceable(
+    path: str | os.PathLike[str], protect: Iterable[str | os.PathLike[str]] = ()
+) -> None:
+    """Refuse a destination that is not a regular file or that is one of ``protect``.
+
+    Parameters
+    ----------
+    path : path-like
+        The destination (it may not exist yet).
+    protect : iterable of path-like
+        Files the destination must not be (a run's own inputs); compared as files
+        (device and inode), so another spelling or a hard link of an input is refused
+        too.
+
+    Raises
+    ------
+    WriteError
+        One line naming the path and what it is.
+    """
+    try:
+        st = os.stat(path)
+    except (FileNotFoundError, NotADirectoryError):  # nothing there to replace
+        return
+    except OSError as exc:
+        raise WriteError(f"cannot write {_quote(path)}: {describe_os_error(exc)}") from None
+    if not stat.S_ISREG(st.st_mode):
+        raise WriteError(
+            f"cannot write {_quote(path)}: it is {_kind(st.st_mode)}, not a regular file; "
+            "only a regular file is replaced",
+            errno.EEXIST,
+        )
+    for other in protect:
+        try:
+            o = os.stat(other)
+        except OSError:
+            continue
+        if (o.st_dev, o.st_ino) == (st.st_dev, st.st_ino):
+            raise WriteError(
+                f"cannot write {_quote(path)}: it is an input of this run "
+                f"({_quote(other)}); choose another output name",
+                errno.EEXIST,
+            )
+
+
+def _quote(path: str | os.PathLike[str]) -> str:
+    text = str(path)
+    return repr(text) if len(text) <= 200 else repr("..." + text[-197:])
+
+
+def _kind(mode: int) -> str:
+    for test, word in (
+        (stat.S_ISDIR, "a directory"),
+        (stat.S_ISFIFO, "a FIFO"),
+        (stat.S_ISCHR, "a character device"),
+        (stat.S_ISBLK, "a block device"),
+        (stat.S_ISSOCK, "a socket"),
+    ):
+        if test(mode):
+            return word
+    return "not a regular file"
 
 
 def _fsync_dir(directory: Path) -> None:
@@ -122,7 +197,11 @@ def _sigterm_raises() -> Iterator[None]:
 
 
 @contextlib.contextmanager
-def atomic_path(path: str | os.PathLike[str], mode: int = 0o666) -> Iterator[Path]:
+def atomic_path(
+    path: str | os.PathLike[str],
+    mode: int = 0o666,
+    protect: Iterable[str | os.PathLike[str]] = (),
+) -> Iterator[Path]:
     """Write ``path`` atomically: yield a temporary path to write to (see the module).
 
     Parameters
@@ -131,16 +210,22 @@ def atomic_path(path: str | os.PathLike[str], mode: int = 0o666) -> Iterator[Pat
         Destination. Its directory must exist.
     mode : int
         Permission bits of the finished file, before the umask.
+    protect : iterable of path-like
+        Files ``path`` must not be (the run's own inputs), see :func:`check_replaceable`.
 
     Raises
     ------
     WriteError
-        Any failure to write, with the temporary file removed. ``KeyboardInterrupt``
+        A destination that is not a regular file or is protected (before anything is
+        written, see :func:`check_replaceable`); any failure to write, with the
+        temporary file removed. ``KeyboardInterrupt``
         and ``SystemExit`` (SIGTERM) pass through, also after the clean-up.
     """
     path = Path(path)
+    protect = tuple(protect)
+    check_replaceable(path, protect)
     _clean_stale_temps(path)
-    tmp = path.parent / f".{path.name}{TEMP_MARK}{os.getpid()}-{secrets.token_hex(4)}"
+    tmp = path.parent / f"{_temp_prefix(path)}{os.getpid()}-{secrets.token_hex(4)}"
     try:
         with _sigterm_raises():
             try:
@@ -148,6 +233,7 @@ def atomic_path(path: str | os.PathLike[str], mode: int = 0o666) -> Iterator[Pat
                 with open(tmp, "rb+") as f:
                     os.fsync(f.fileno())
                 os.chmod(tmp, mode & ~_umask())
+                check_replaceable(path, protect)  # it may have changed while writing
                 os.replace(tmp, path)
             except BaseException:
                 with contextlib.suppress(OSError):

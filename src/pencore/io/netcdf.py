@@ -26,7 +26,9 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from pencore.errors import ResultError
 from pencore.io.atomic import atomic_path
+from pencore.io.results import unreadable_message
 from pencore.version import __version__
 
 __all__ = [
@@ -149,8 +151,12 @@ def write_netcdf(
     *,
     config_slice: Mapping[str, Any],
     study: str,
+    protect: Sequence[str | os.PathLike[str]] = (),
 ) -> Path:
     """Write ``ds`` to ``path`` with provenance, compression and an atomic replace.
+
+    Only a regular file (or nothing) at ``path`` is replaced, and never one of
+    ``protect`` (the run's own input files): :func:`pencore.io.atomic.check_replaceable`.
 
     Parameters
     ----------
@@ -189,7 +195,7 @@ def write_netcdf(
     for name in out.variables:
         out[name].attrs = _netcdf_safe_attrs(out[name].attrs)
     out, encoding = cf_encoding(out)
-    with atomic_path(path) as tmp:
+    with atomic_path(path, protect=protect) as tmp:
         out.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
     return path
 
@@ -272,12 +278,23 @@ def read_netcdf(path: str | os.PathLike[str]) -> xr.Dataset:
     The elapsed-time dimension, :data:`ELAPSED_TIME` on disk, is named ``time`` again
     (without the ``comment`` :func:`cf_encoding` added), so a written Dataset reads back
     with the names it had; files written before the rename read unchanged.
+
+    Raises
+    ------
+    FileNotFoundError
+        No file at ``path``.
+    pencore.errors.ResultError
+        The file cannot be read (corrupt or truncated): one line naming it and how to
+        make it again.
     """
     path = Path(path)
     if not path.is_file():
         raise FileNotFoundError(f"no netCDF file at {str(path)!r}")
-    with xr.open_dataset(path, engine="netcdf4") as ds:
-        ds = ds.load()
+    try:
+        with xr.open_dataset(path, engine="netcdf4") as ds:
+            ds = ds.load()
+    except (OSError, RuntimeError, ValueError, KeyError) as exc:
+        raise ResultError(unreadable_message(path, exc)) from None
     if ELAPSED_TIME in ds.dims and "time" not in ds.variables:
         ds = ds.rename({ELAPSED_TIME: "time"})
         if "time" in ds.variables and ds["time"].attrs.get("comment") == _ELAPSED_TIME_COMMENT:

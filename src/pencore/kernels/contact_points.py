@@ -289,13 +289,19 @@ def point_loads(y, pts, bounds, coef, fric, eps, with_friction, cavity, cav, pat
 
 @nb.njit(cache=True)
 def _mu(fric, lay, nt, vt):
-    """Friction coefficient at sliding speed ``vt``: the piecewise-linear table."""
+    """Friction coefficient at sliding speed ``vt``: the piecewise-linear table (found
+    by bisection, so a long table costs little)."""
     if vt <= fric[lay, 0, 0]:
         return fric[lay, 0, 1]
     if vt >= fric[lay, nt - 1, 0]:
         return fric[lay, nt - 1, 1]
-    for k in range(nt - 1):
-        if vt < fric[lay, k + 1, 0]:
-            t = (vt - fric[lay, k, 0]) / (fric[lay, k + 1, 0] - fric[lay, k, 0])
-            return fric[lay, k, 1] + t * (fric[lay, k + 1, 1] - fric[lay, k, 1])
-    return fric[lay, nt - 1, 1]
+    # bisection for fric[k] <= vt < fric[k + 1] (the speeds increase strictly)
+    k, kh = 0, nt - 1
+    while kh - k > 1:
+        mid = (k + kh) // 2
+        if vt < fric[lay, mid, 0]:
+            kh = mid
+        else:
+            k = mid
+    t = (vt - fric[lay, k, 0]) / (fric[lay, k + 1, 0] - fric[lay, k, 0])
+    return fric[lay, k, 1] + t * (fric[lay, k + 1, 1] - fric[lay, k, 1])

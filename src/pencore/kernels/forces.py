@@ -99,9 +99,12 @@ def _plain_loads(y, rings, bounds, coef, fric, eps, n_gauss, model):
     return fb, mb, clear
 
 
-@nb.njit(cache=True)
+@nb.njit(cache=True, nogil=True)
 def rhs_model(y, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss, model):
-    """Time derivative of the state and the clearance, as :func:`pencore.kernels.dynamics.rhs`."""
+    """Time derivative of the state and the clearance, as :func:`pencore.kernels.dynamics.rhs`.
+
+    Releases the GIL when called from Python (scipy's integrator calls it so), so that
+    Ctrl-C is taken while it runs (:mod:`pencore.integrators.driver`)."""
     fb, mb, clear = model_loads(y, rings, bounds, coef, fric, eps, n_gauss, model)
     return equations_of_motion(y, fb, mb, mass, inertia, gravity), clear
 

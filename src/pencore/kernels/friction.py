@@ -94,12 +94,16 @@ def _friction_ring(
                 elif vt >= fric[lay, nt - 1, 0]:
                     mu = fric[lay, nt - 1, 1]
                 else:
-                    mu = fric[lay, nt - 1, 1]
-                    for k in range(nt - 1):
-                        if vt < fric[lay, k + 1, 0]:
-                            t = (vt - fric[lay, k, 0]) / (fric[lay, k + 1, 0] - fric[lay, k, 0])
-                            mu = fric[lay, k, 1] + t * (fric[lay, k + 1, 1] - fric[lay, k, 1])
-                            break
+                    # bisection for fric[k] <= vt < fric[k + 1] (speeds increase strictly)
+                    k, kh = 0, nt - 1
+                    while kh - k > 1:
+                        mid = (k + kh) // 2
+                        if vt < fric[lay, mid, 0]:
+                            kh = mid
+                        else:
+                            k = mid
+                    t = (vt - fric[lay, k, 0]) / (fric[lay, k + 1, 0] - fric[lay, k, 0])
+                    mu = fric[lay, k, 1] + t * (fric[lay, k + 1, 1] - fric[lay, k, 1])
                 scale = -mu * hw * sig * w * dphi / math.sqrt(vt * vt + reg * reg)
                 fx, fy, fz = scale * tx, scale * ty, scale * tz
                 f[0] += fx

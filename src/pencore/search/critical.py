@@ -31,6 +31,8 @@ from pencore.analysis.curvature import DEFAULT_SPEED_FRACTION
 from pencore.analysis.deviation import final_deviation
 from pencore.errors import InputError
 from pencore.inputs.conventions import normal_impact_angles
+from pencore.inputs.gate import brief
+from pencore.inputs.limits import as_float, number
 from pencore.run.impact import prepare, run_impact, simulate
 from pencore.search.threshold import (
     DEFAULT_SCAN,
@@ -38,6 +40,7 @@ from pencore.search.threshold import (
     OMEGA_TOL,
     VELOCITY_TOL,
     CriticalResult,
+    check_search_args,
     find_threshold,
     split_search_kwargs,
 )
@@ -109,6 +112,7 @@ def vcr(
         shank contact model and paper-emulation numerics (``shank=``, ``emulation=``;
         :mod:`pencore.inputs.models`).
     """
+    check_search_args(lo, hi, tol, max_iter, scan, "velocity")
     numerics, overrides, sim = split_search_kwargs(dict(simulate_kwargs), FIXED_BY_SEARCH)
     pr = prepare(projectile, target, numerics, **overrides)
 
@@ -139,6 +143,8 @@ def omega_c(
     (paper Figs 16-18). ``lo``, ``hi`` and ``tol`` in rad/s; other arguments as
     :func:`vcr`.
     """
+    check_search_args(lo, hi, tol, max_iter, scan, "omega")
+    number(velocity, "velocity", "omega_c")
     numerics, overrides, sim = split_search_kwargs(dict(simulate_kwargs), FIXED_BY_SEARCH)
     pr = prepare(projectile, target, numerics, **overrides)
 
@@ -196,8 +202,13 @@ def vci(
         so share their runs (a run does not depend on the threshold; results identical).
     Other arguments as :func:`vcr`.
     """
-    if not (math.isfinite(threshold_deg) and threshold_deg > 0.0):
-        raise InputError(f"threshold_deg must be a positive angle, got {threshold_deg!r}")
+    check_search_args(lo, hi, tol, max_iter, scan, "velocity")
+    thr = as_float(threshold_deg, allow_str=False)
+    if thr is None or not (math.isfinite(thr) and thr > 0.0):
+        raise InputError(f"threshold_deg must be a positive angle, got {brief(threshold_deg)}")
+    frac = as_float(fraction, allow_str=False)
+    if frac is None or not 0.0 < frac <= 1.0:
+        raise InputError(f"fraction (of the impact speed) must be in (0, 1], got {brief(fraction)}")
     obl, yaw_sim = normal_impact_angles(yaw, convention)
     numerics, overrides, sim = split_search_kwargs(dict(simulate_kwargs), FIXED_BY_SEARCH)
     pr = prepare(projectile, target, numerics, **overrides)

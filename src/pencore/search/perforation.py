@@ -38,6 +38,7 @@ from pencore.search.threshold import (
     FIXED_BY_SEARCH,
     VELOCITY_TOL,
     CriticalResult,
+    check_search_args,
     find_threshold,
     split_search_kwargs,
 )
@@ -106,6 +107,7 @@ def ballistic_limit(
         ``value`` is the midpoint of the bracket ``[lo, hi]`` (m/s): ``lo`` did not
         perforate, ``hi`` did.
     """
+    check_search_args(lo, hi, tol, max_iter, scan, "velocity")
     numerics, overrides, sim = split_search_kwargs(dict(simulate_kwargs), FIXED_BY_SEARCH)
     pr = prepare(projectile, target, numerics, **overrides)
     if not pr.target.finite:

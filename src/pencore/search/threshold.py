@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import logging
 import math
+import numbers
 from collections.abc import Callable
 from dataclasses import dataclass, fields
 from typing import Any
@@ -20,6 +21,8 @@ from typing import Any
 import numpy as np
 
 from pencore.errors import InputError
+from pencore.inputs.gate import brief
+from pencore.inputs.limits import as_float, number
 from pencore.inputs.numerics import Numerics
 
 #: Progress of the searches (bracket, evaluations, verdicts) at INFO; the workflow
@@ -27,6 +30,9 @@ from pencore.inputs.numerics import Numerics
 log = logging.getLogger("pencore.search")
 
 __all__ = [
+    "check_search_args",
+    "MAX_SCAN",
+    "MAX_ITER",
     "VELOCITY_TOL",
     "OMEGA_TOL",
     "DEFAULT_SCAN",
@@ -156,7 +162,7 @@ def find_threshold(
         and ``value = (lo + hi) / 2``.
     """
     lo, hi, tol = float(lo), float(hi), float(tol)
-    _check_search(lo, hi, tol, max_iter, scan)
+    lo, hi, tol, max_iter, scan = check_search_args(lo, hi, tol, max_iter, scan)
     search = _Search(verdict, name, tol, [lo, hi])
     log.info("%s: search in [%s, %s], tol %s", name, _fmt(lo), _fmt(hi), _fmt(tol))
     nan = math.nan
@@ -194,16 +200,62 @@ def find_threshold(
     return search.result(0.5 * (a + b), a, b, monotone, status, f"{first}; {note}")
 
 
+#: Most points of a coarse scan (each is a run) and most bisection steps a search takes.
+MAX_SCAN = 1000
+MAX_ITER = 1000
+
+
+def _real(value: Any, what: str) -> float:
+    """``value`` as a finite float; refuses booleans, text and anything else."""
+    v = as_float(value, allow_str=False)
+    if v is None or not math.isfinite(v):
+        raise InputError(f"{what} must be a finite number, got {brief(value)}")
+    return v
+
+
+def _whole(value: Any, what: str, lo: int, hi: int) -> int:
+    v = as_float(value, allow_str=False)
+    if v is None or not math.isfinite(v) and not isinstance(value, numbers.Integral):
+        raise InputError(f"{what} must be a whole number in [{lo}, {hi}], got {brief(value)}")
+    if (math.isfinite(v) and v != math.floor(v)) or not lo <= v <= hi:
+        raise InputError(f"{what} must be a whole number in [{lo}, {hi}], got {brief(value)}")
+    return int(v)
+
+
+def check_search_args(
+    lo: Any,
+    hi: Any,
+    tol: Any,
+    max_iter: Any,
+    scan: Any,
+    quantity: str | None = None,
+) -> tuple[float, float, float, int, int | None]:
+    """The arguments of a search, checked before any run, or
+    :class:`~pencore.errors.InputError` naming the bad one.
+
+    ``lo < hi`` finite numbers (within ``LIMITS[quantity]`` when given, e.g.
+    ``"velocity"``, ``"omega"``), ``tol`` a positive finite number, ``max_iter`` a whole
+    number in ``[0, MAX_ITER]``, ``scan`` None or a whole number in ``[2, MAX_SCAN]``.
+    Returns them as ``(float, float, float, int, int or None)``.
+    """
+    if quantity is not None:
+        lo_f = number(lo, quantity, "search lower bound lo")
+        hi_f = number(hi, quantity, "search upper bound hi")
+    else:
+        lo_f, hi_f = _real(lo, "search lower bound lo"), _real(hi, "search upper bound hi")
+    if not lo_f < hi_f:
+        raise InputError(f"need lo < hi, got lo={brief(lo)}, hi={brief(hi)}")
+    tol_f = _real(tol, "tol")
+    if not tol_f > 0.0:
+        raise InputError(f"tol must be a positive number, got {brief(tol)}")
+    n_iter = _whole(max_iter, "max_iter", 0, MAX_ITER)
+    n_scan = None if scan is None else _whole(scan, "scan", 2, MAX_SCAN)
+    return lo_f, hi_f, tol_f, n_iter, n_scan
+
+
 def _check_search(lo: float, hi: float, tol: float, max_iter: int, scan: int | None) -> None:
     """The arguments of :func:`find_threshold`, or :class:`~pencore.errors.InputError`."""
-    if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
-        raise InputError(f"need finite lo < hi, got lo={lo!r}, hi={hi!r}")
-    if not (math.isfinite(tol) and tol > 0.0):
-        raise InputError(f"tol must be a positive number, got {tol!r}")
-    if int(max_iter) < 0:
-        raise InputError(f"max_iter must be >= 0, got {max_iter!r}")
-    if scan is not None and int(scan) < 2:
-        raise InputError(f"scan must be None or >= 2 points, got {scan!r}")
+    check_search_args(lo, hi, tol, max_iter, scan)
 
 
 class _Search:

@@ -20,7 +20,20 @@ the ranges are the data :data:`KEY_RULES`, :data:`GRID_POINTS` and :data:`GRID_S
 * start positions (``start_m``) are three numbers within the start guard, start heights
   (``start_height*_m``) are >= 0;
 * names of ``cases`` and entries of ``projectiles`` lists are unique;
-* the Table 2 CSV has at least one row.
+* the Table 2 CSV has at least one row;
+* every ``numerics`` mapping passes :func:`pencore.inputs.numerics.resolve_numerics`
+  (the limits the solver enforces: ``rtol: 0.5`` stops here, not in a job);
+* every projectile and target named (``projectile``, ``projectiles``, ``target``,
+  ``medium``) is in the library or an existing YAML file (read through the input gate);
+* layer thicknesses (``thickness*_m``) are finite and > 0 (``LIMITS["thickness"]``);
+* search scans (``scan_points``) are whole numbers in ``[2, MAX_SCAN]``;
+* a case's speed window ``[v_min, v_max]`` (m/s) has ``v_min < v_max`` and meets its
+  study's velocity grid (else the job would write a dataset of NaN);
+* ensemble distributions stay, over their whole support, within the ranges the solver
+  accepts (speed, yaw, angular velocity, azimuth, and obliquity + yaw below 90 deg); a
+  normal without ``min``/``max`` counts as reaching 8 standard deviations from its mean
+  (a draw beyond has probability < 1e-15), see
+  :func:`pencore.studies.ensemble_cases.check_case`.
 """
 
 from __future__ import annotations
@@ -33,9 +46,11 @@ from pathlib import Path
 from typing import Any
 
 from pencore.errors import ConfigError, InputError
-from pencore.inputs.limits import LIMITS, Limit, number
+from pencore.inputs.gate import brief
+from pencore.inputs.limits import LIMITS, Limit, as_float, number
 from pencore.inputs.numerics import NUMERIC_FIELDS, resolve_numerics
 from pencore.paper.choices import check_settings
+from pencore.search.threshold import MAX_SCAN
 from pencore.studies.ensemble_cases import check_case
 
 __all__ = [
@@ -143,16 +158,22 @@ def _fail(path: str, message: str) -> None:
 
 
 def _numbers(value: Any) -> list[float]:
-    """Every number in a scalar, a list, or a range/grid mapping (its min and max)."""
+    """Every number in a scalar, a list, or a range/grid mapping (its min and max); an
+    integer no float can hold counts as infinite."""
     if isinstance(value, bool):
         return []
     if isinstance(value, int | float):
-        return [float(value)]
+        return [_float(value)]
     if isinstance(value, Mapping):
-        return [float(value[k]) for k in ("min", "max") if _is_num(value.get(k))]
+        return [_float(value[k]) for k in ("min", "max") if _is_num(value.get(k))]
     if isinstance(value, Sequence) and not isinstance(value, str):
-        return [float(v) for v in value if _is_num(v)]
+        return [_float(v) for v in value if _is_num(v)]
     return []
+
+
+def _float(value: int | float) -> float:
+    v = as_float(value, allow_str=False)
+    return math.nan if v is None else v
 
 
 def _is_num(v: Any) -> bool:
@@ -162,18 +183,22 @@ def _is_num(v: Any) -> bool:
 def _check_range(path: str, value: Mapping[str, Any]) -> None:
     lo, hi = value.get("min"), value.get("max")
     if _is_num(lo) and _is_num(hi) and lo > hi:
-        _fail(path, f"min {lo!r} is larger than max {hi!r}")
+        _fail(path, f"min {brief(lo)} is larger than max {brief(hi)}")
     step, n = value.get("step"), value.get("n")
     if _is_num(step):
         if not GRID_STEP.contains(step):
-            _fail(path, f"step must be > 0, got {step!r}")
+            _fail(path, f"step must be > 0, got {brief(step)}")
         if _is_num(lo) and _is_num(hi):
-            points = math.floor((hi - lo) / step + 1e-9) + 1
+            span = (_float(hi) - _float(lo)) / _float(step)
+            points = math.floor(span + 1e-9) + 1 if math.isfinite(span) else math.inf
             if not GRID_POINTS.contains(points):
-                _fail(path, f"the grid has {points} points (min {lo}, max {hi}, step {step}); "
-                      f"at most {MAX_GRID} are allowed (typo guard)")  # fmt: skip
+                _fail(
+                    path,
+                    f"the grid has {points} points (min {brief(lo)}, max {brief(hi)}, "
+                    f"step {brief(step)}); at most {MAX_GRID} are allowed (typo guard)",
+                )
     if _is_num(n) and not GRID_POINTS.contains(n):
-        _fail(path, f"n must be {GRID_POINTS.describe()} points, got {n!r}")
+        _fail(path, f"n must be {GRID_POINTS.describe()} points, got {brief(n)}")
 
 
 def _check_leaf(path: str, key: str, value: Any) -> None:
@@ -186,10 +211,39 @@ def _check_leaf(path: str, key: str, value: Any) -> None:
         if rule.pattern == "start_m" and not (
             isinstance(value, Sequence) and len(value) == 3 and len(nums) == 3
         ):
-            _fail(path, f"must be three numbers [x, y, z] in m, got {value!r}")
+            _fail(path, f"must be three numbers [x, y, z] in m, got {brief(value)}")
         for v in nums:
             if not (math.isfinite(v) and lim.contains(v)):
                 _fail(path, f"{rule.label} {v!r} {lim.unit} is not {lim.describe()}")
+    if key.startswith("thickness") and key.endswith("_m"):
+        lim = LIMITS["thickness"]
+        if isinstance(value, Mapping | Sequence) and not isinstance(value, str):
+            items = list(value.values()) if isinstance(value, Mapping) else list(value)
+        else:
+            items = [value]
+        for v in items:
+            if v is None or isinstance(v, str | Mapping):
+                continue
+            f = as_float(v, allow_str=False)
+            if f is None or not (math.isfinite(f) and lim.contains(f)):
+                _fail(path, f"layer thickness {brief(v)} m is not {lim.describe()}")
+    elif key == "scan_points" and value is not None:
+        f = as_float(value, allow_str=False)
+        if f is None or not math.isfinite(f) or f != math.floor(f) or not 2 <= f <= MAX_SCAN:
+            _fail(
+                path, f"scan_points must be a whole number in [2, {MAX_SCAN}], got {brief(value)}"
+            )
+    elif key == "numerics" and isinstance(value, Mapping):
+        try:
+            resolve_numerics(value)
+        except InputError as exc:
+            _fail(path, str(exc))
+    if key in ("projectile", "target", "medium") and isinstance(value, str):
+        _check_name(path, key, value)
+    if key == "projectiles" and isinstance(value, Sequence) and not isinstance(value, str):
+        for i, name in enumerate(value):
+            if isinstance(name, str):
+                _check_name(f"{path}[{i}]", "projectile", name)
     if key in ("projectiles", "cases") and isinstance(value, Sequence):
         names = [c.get("name") if isinstance(c, Mapping) else c for c in value]
         dupes = sorted({str(x) for x in names if names.count(x) > 1})
@@ -197,8 +251,55 @@ def _check_leaf(path: str, key: str, value: Any) -> None:
             _fail(path, f"duplicate names {', '.join(dupes)}")
 
 
+#: The root that relative file names start from, while :func:`check_config` runs.
+_ROOT: list[Path] = [Path(".")]
+
+
+def _check_name(path: str, kind: str, name: str) -> None:
+    """A projectile, target or medium name the library knows, or a YAML file."""
+    from pencore.inputs.library import MEDIA, get_projectile, get_target
+
+    if kind == "medium":
+        if name not in MEDIA:
+            _fail(path, f"unknown medium {brief(name)}; known: {', '.join(MEDIA)}")
+        return
+    spec = name
+    if name.endswith((".yaml", ".yml")) or "/" in name:
+        spec = str(_ROOT[0] / name)
+    try:
+        (get_projectile if kind == "projectile" else get_target)(spec)
+    except InputError as exc:
+        _fail(path, str(exc))
+
+
+def _check_window(path: str, study: Mapping[str, Any]) -> None:
+    """Each case's ``[v_min, v_max]`` is a window that meets the study's velocity grid."""
+    grid = _numbers(study.get("velocities_m_s"))
+    for i, case in enumerate(study.get("cases") or []):
+        if not isinstance(case, Mapping):
+            continue
+        lo, hi = case.get("v_min"), case.get("v_max")
+        where = f"{path}.cases[{i}]" if path else f"cases[{i}]"
+        for key, v in (("v_min", lo), ("v_max", hi)):
+            if v is not None and not (_is_num(v) and math.isfinite(v) and v >= 0.0):
+                _fail(f"{where}.{key}", f"must be a speed >= 0 m/s, got {brief(v)}")
+        a = 0.0 if lo is None else float(lo)
+        b = math.inf if hi is None else float(hi)
+        if not a < b:
+            _fail(where, f"v_min {a:g} m/s is not below v_max {b:g} m/s: no speed would run")
+        if grid and (b < min(grid) or a > max(grid)):
+            _fail(
+                where,
+                f"[v_min, v_max] = [{a:g}, {b:g}] m/s misses the study's velocities "
+                f"[{min(grid):g}, {max(grid):g}] m/s: the case would be all NaN",
+            )
+
+
 def _check_study(path: str, study: Mapping[str, Any]) -> None:
-    """Obliquity and yaw together keep the velocity pointing into the target."""
+    """Obliquity and yaw together keep the velocity pointing into the target; speed
+    windows of cases meet the velocity grid."""
+    if isinstance(study.get("cases"), Sequence):
+        _check_window(path, study)
     ob = [abs(v) for v in _numbers(study.get("obliquity_deg"))]
     yw = [abs(v) for v in _numbers(study.get("yaw_deg"))]
     if ob and yw and max(ob) + max(yw) >= 90.0:
@@ -228,6 +329,7 @@ def check_config(config: Mapping[str, Any], root: str | Path = ".") -> None:
     root : path-like
         Directory that relative file names in the configuration start from.
     """
+    _ROOT[0] = Path(root)
     _walk("", config)
     table2 = config.get("validation", {}).get("table2", {})
     csv = table2.get("csv") if isinstance(table2, Mapping) else None

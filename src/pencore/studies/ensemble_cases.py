@@ -13,7 +13,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from pencore.errors import InputError
-from pencore.inputs.limits import as_float, check_keys
+from pencore.inputs.limits import LIMITS, as_float, check_keys
 
 __all__ = ["VARIABLES", "CASE_KEYS", "check_case"]
 
@@ -108,17 +108,39 @@ def check_case(case: Mapping[str, Any]) -> dict[str, Any]:
         if case.get(k, default) is None:
             raise InputError(f"{where}: {k} is required")
         out[k] = _dist(case.get(k, default), f"{where}.{k}")
-    _check_support(out["velocity_m_s"], 0.0, math.inf, f"{where}.velocity_m_s", open_lo=True)
+    # every draw must be a run the solver accepts (one refused draw fails a whole chunk)
+    v_hi = LIMITS["velocity"].hi
+    _check_support(out["velocity_m_s"], 0.0, v_hi, f"{where}.velocity_m_s", open_lo=True)
     _check_support(out["obliquity_deg"], 0.0, 90.0, f"{where}.obliquity_deg", open_hi=True)
+    _check_support(out["yaw_deg"], -90.0, 90.0, f"{where}.yaw_deg", open_lo=True, open_hi=True)
+    for key, lim in (("omega_rad_s", LIMITS["omega"]), ("azimuth_deg", LIMITS["azimuth"])):
+        _check_support(out[key], lim.lo, lim.hi, f"{where}.{key}")
+    obl, yaw = _support(out["obliquity_deg"]), _support(out["yaw_deg"])
+    reach = max(abs(obl[0]), abs(obl[1])) + max(abs(yaw[0]), abs(yaw[1]))
+    if reach >= 90.0:
+        raise InputError(
+            f"{where}: obliquity and yaw together reach {reach:g} deg; |obliquity + yaw| "
+            "must stay below 90 deg for every draw (narrow the distributions)"
+        )
     return out
 
 
+#: Standard deviations from the mean that a normal without min/max is taken to reach:
+#: a draw beyond has probability < 1.3e-15.
+NORMAL_REACH_SD = 8.0
+
+
 def _support(d: Mapping[str, Any]) -> tuple[float, float]:
+    """Where draws of ``d`` can fall (a normal without bounds: within
+    :data:`NORMAL_REACH_SD` standard deviations of its mean)."""
     if d["dist"] == "fixed":
         return float(d["value"]), float(d["value"])
     if d["dist"] == "uniform":
         return float(d["min"]), float(d["max"])
-    return float(d.get("min", -math.inf)), float(d.get("max", math.inf))
+    mean, sd = float(d["mean"]), float(d["sd"])
+    lo = max(float(d.get("min", -math.inf)), mean - NORMAL_REACH_SD * sd)
+    hi = min(float(d.get("max", math.inf)), mean + NORMAL_REACH_SD * sd)
+    return lo, hi
 
 
 def _check_support(d, lo, hi, where, open_lo=False, open_hi=False) -> None:  # noqa: ANN001

@@ -1,0 +1,242 @@
+"""The input gate for text and files: short quotes of bad values, and bounded YAML.
+
+Every door that reads user text (the API's YAML paths, the command line's
+``--projectile FILE`` / ``--target FILE`` / ``--numerics KEY=VALUE``, the Table-3 geometry
+file) reads it here, and every message that quotes a user value quotes it through
+:func:`brief`, so a hostile value never floods a message. Numbers are then checked
+against their ranges by :mod:`pencore.inputs.limits`.
+
+A YAML file is refused, with one :class:`~pencore.errors.InputError` naming the file,
+before it can hang or exhaust the process:
+
+* unless it is a regular file (a FIFO, a character device such as ``/dev/zero``, a
+  directory or a socket is refused before a byte is read; the file is opened
+  non-blocking, so a FIFO cannot block the open either);
+* when it is larger than :data:`MAX_YAML_BYTES`;
+* when it nests deeper than :data:`MAX_YAML_DEPTH`;
+* when its aliases would expand it beyond :data:`MAX_YAML_NODES` nodes (an "alias
+  bomb": a few hundred bytes that expand to billions of values);
+* when a mapping repeats a key (YAML would silently keep the last value).
+"""
+
+from __future__ import annotations
+
+import os
+import stat
+from typing import Any
+
+import yaml
+
+from pencore.errors import InputError
+
+__all__ = [
+    "brief",
+    "brief_path",
+    "read_yaml",
+    "load_yaml_text",
+    "MAX_YAML_BYTES",
+    "MAX_YAML_DEPTH",
+    "MAX_YAML_NODES",
+    "MAX_QUOTE",
+]
+
+#: Largest YAML input (bytes): 16 MiB, ~35 times a 10 000-row friction table.
+MAX_YAML_BYTES = 16 * 1024 * 1024
+#: Deepest nesting of YAML collections (a target file needs 5 levels).
+MAX_YAML_DEPTH = 64
+#: Most nodes a YAML document may hold once its aliases are expanded (a 10 000-row
+#: friction table holds ~30 000).
+MAX_YAML_NODES = 2_000_000
+#: Longest quote of a user value in a message (characters of its ``repr``).
+MAX_QUOTE = 60
+
+
+def brief(value: Any, limit: int = MAX_QUOTE) -> str:
+    """``repr(value)`` cut to ``limit`` characters, saying how long it was.
+
+    An integer too long for :func:`repr` (Python refuses over 4300 digits) is described
+    by its number of digits; a value whose ``repr`` fails is named by its type.
+    """
+    if isinstance(value, int) and not isinstance(value, bool):
+        digits = _int_digits(value)
+        if digits > limit:
+            return f"an integer of {digits} digits"
+    try:
+        text = repr(value)
+    except Exception:  # noqa: BLE001 - any object a user passes
+        return f"a {type(value).__name__}"
+    if len(text) <= limit:
+        return text
+    return f"{text[: limit - 3]}... ({len(text)} characters)"
+
+
+def brief_path(path: Any, limit: int = 200) -> str:
+    """A path quoted for a message: whole up to ``limit`` characters, else its end
+    (where the file name is)."""
+    text = str(path)
+    if len(text) <= limit:
+        return repr(text)
+    return repr("..." + text[-(limit - 3) :])
+
+
+def _int_digits(value: int) -> int:
+    """Decimal digits of ``value`` (estimated from its bits when too long to print)."""
+    n = abs(value)
+    if n.bit_length() < 13_000:  # str() refuses over 4300 digits
+        return len(str(n))
+    return int(n.bit_length() * 0.30103) + 1
+
+
+class _BoundedLoader(yaml.SafeLoader):
+    """yaml's safe loader with bounded depth and alias expansion, refusing duplicate keys."""
+
+    def __init__(self, stream: str) -> None:
+        super().__init__(stream)
+        self._depth = 0
+
+    def compose_node(self, parent: Any, index: Any) -> Any:
+        self._depth += 1
+        if self._depth > MAX_YAML_DEPTH:
+            raise _Refused(f"nests deeper than {MAX_YAML_DEPTH} levels")
+        try:
+            return super().compose_node(parent, index)
+        finally:
+            self._depth -= 1
+
+    def construct_mapping(self, node: Any, deep: bool = False) -> Any:
+        if isinstance(node, yaml.MappingNode):
+            seen: set[Any] = set()
+            for key_node, _ in node.value:
+                key = self.construct_object(key_node, deep=True)
+                try:
+                    dup = key in seen
+                    seen.add(key)
+                except TypeError:  # an unhashable key: yaml itself refuses it
+                    continue
+                if dup:
+                    line = key_node.start_mark.line + 1
+                    raise _Refused(f"repeats the key {brief(key)} (line {line})")
+        return super().construct_mapping(node, deep=deep)
+
+
+class _Refused(Exception):
+    """A YAML document the gate refuses (the message says why)."""
+
+
+def _expanded_nodes(node: Any) -> int:
+    """Nodes of ``node`` with every alias expanded, counted without expanding them
+    (memoised on the shared nodes, capped at ``MAX_YAML_NODES + 1``); a node that
+    contains itself counts as too many."""
+    cap = MAX_YAML_NODES + 1
+    memo: dict[int, int] = {}
+    open_: set[int] = set()
+    stack: list[tuple[Any, bool]] = [(node, False)]
+    while stack:  # post-order without recursion
+        n, children_done = stack.pop()
+        if id(n) in memo:
+            continue
+        children = _children(n)
+        if children_done:
+            open_.discard(id(n))
+            memo[id(n)] = min(1 + sum(memo[id(c)] for c in children), cap)
+            continue
+        if any(id(c) in open_ for c in children) or n in children:
+            return cap  # a recursive structure
+        open_.add(id(n))
+        stack.append((n, True))
+        stack.extend((c, False) for c in children if id(c) not in memo)
+    return memo[id(node)]
+
+
+def _children(node: Any) -> list[Any]:
+    if isinstance(node, yaml.SequenceNode):
+        return list(node.value)
+    if isinstance(node, yaml.MappingNode):
+        return [n for pair in node.value for n in pair]
+    return []
+
+
+def load_yaml_text(text: str, what: str) -> Any:
+    """Parse YAML ``text`` with the gate's bounds; ``what`` names it in messages."""
+    if len(text) > MAX_YAML_BYTES:
+        raise InputError(f"{what} is longer than {MAX_YAML_BYTES} characters")
+    loader = _BoundedLoader(text)
+    try:
+        node = loader.get_single_node()
+        if node is None:
+            return None
+        if _expanded_nodes(node) > MAX_YAML_NODES:
+            raise _Refused(
+                f"expands to more than {MAX_YAML_NODES} values through its aliases (an alias bomb?)"
+            )
+        return loader.construct_document(node)
+    except _Refused as exc:
+        raise InputError(f"{what} {exc}") from None
+    except yaml.YAMLError as exc:
+        first = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        raise InputError(f"{what} is not valid YAML: {brief(first, 200)[1:-1]}") from None
+    except RecursionError:
+        raise InputError(f"{what} nests too deeply") from None
+    finally:
+        loader.dispose()
+
+
+def read_yaml(path: str | os.PathLike[str], what: str) -> Any:
+    """Read and parse the YAML file ``path`` with the gate's bounds (see the module).
+
+    Parameters
+    ----------
+    path : path-like
+        The file; must be a regular file of at most :data:`MAX_YAML_BYTES` bytes of
+        UTF-8 text.
+    what : str
+        What the file is, for messages (``"projectile"``).
+
+    Raises
+    ------
+    InputError
+        One line naming the file (quoted short) and why it is refused.
+    """
+    name = f"{what} file {brief_path(path)}"
+    try:
+        st = os.stat(path)
+    except OSError as exc:
+        raise InputError(f"cannot read {name}: {exc.strerror or exc}") from None
+    if not stat.S_ISREG(st.st_mode):
+        raise InputError(f"{name} is not a regular file ({_kind(st.st_mode)})")
+    try:
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    except OSError as exc:
+        raise InputError(f"cannot read {name}: {exc.strerror or exc}") from None
+    try:
+        st = os.fstat(fd)  # the file opened, not one swapped in after the stat
+        if not stat.S_ISREG(st.st_mode):
+            raise InputError(f"{name} is not a regular file ({_kind(st.st_mode)})")
+        if st.st_size > MAX_YAML_BYTES:
+            raise InputError(f"{name} is {st.st_size} bytes; the limit is {MAX_YAML_BYTES} bytes")
+        with os.fdopen(fd, "rb", closefd=False) as f:
+            data = f.read(MAX_YAML_BYTES + 1)
+    except OSError as exc:
+        raise InputError(f"cannot read {name}: {exc.strerror or exc}") from None
+    finally:
+        os.close(fd)
+    if len(data) > MAX_YAML_BYTES:
+        raise InputError(f"{name} is larger than {MAX_YAML_BYTES} bytes")
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError:
+        raise InputError(f"{name} is not a UTF-8 text (YAML) file") from None
+    return load_yaml_text(text, name)
+
+
+def _kind(mode: int) -> str:
+    for test, word in (
+        (stat.S_ISDIR, "a directory"),
+        (stat.S_ISFIFO, "a FIFO"),
+        (stat.S_ISCHR, "a character device"),
+        (stat.S_ISBLK, "a block device"),
+        (stat.S_ISSOCK, "a socket"),
+    ):
+        if test(mode):
+            return word
+    return "not a plain file"

@@ -1,0 +1,602 @@
+"""A catalogue of hostile inputs, door by door: each is refused with one short line.
+
+Doors: the Python API (``pencore.simulate``, ``pencore.prepare``, the searches), YAML
+files (``--projectile FILE`` / ``--target FILE``), the command line, and the output
+paths. Classes: integers no float can hold, hostile files (alias bombs, deep nesting,
+repeated keys, FIFOs, devices, directories, oversized files), writes that would replace
+a non-regular file or the run's own input, search arguments, standard output that
+cannot be written. Every case asserts the exit status (or exception), exactly one line,
+no traceback, that the line quotes at most a short prefix of the value, that no file is
+left behind, and a time bound (a hang guard: every case is refused before any
+integration, measured well under a second each). Valid edge inputs are accepted.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import pencore
+from pencore.cli.main import main
+from pencore.errors import InputError
+from pencore.inputs.gate import MAX_YAML_BYTES, MAX_YAML_DEPTH
+from pencore.inputs.library import get_projectile, get_target
+from pencore.search import critical, perforation
+
+HANG_GUARD_S = 20.0
+HUGE = 10**400
+HUGE_TEXT = "1" * 400
+#: Longest message line a refusal may print (a value is quoted by a short prefix).
+MAX_LINE = 400
+
+PROJECTILE_YAML = """\
+name: probe
+diameter: 0.0254
+nose: {kind: ogive, crh: 3.0, density: 7850}
+shank:
+  - {length: 0.1, density: 7850}
+"""
+TARGET_YAML = """\
+name: slab
+layers:
+  - medium: {name: m, coefficients: [1.0e7, 0.0, 100.0], friction: 0.1}
+"""
+
+
+def _check_line(line: str) -> None:
+    assert "Traceback" not in line
+    assert len(line) < MAX_LINE, line
+    assert HUGE_TEXT[:80] not in line, line  # the value is not quoted whole
+
+
+def _cli(argv: list[str], capsys, cwd: Path) -> tuple[int, str]:
+    before = set(os.listdir(cwd))
+    t0 = time.monotonic()
+    status = main(argv)
+    elapsed = time.monotonic() - t0
+    err = capsys.readouterr().err
+    assert elapsed < HANG_GUARD_S, elapsed
+    assert set(os.listdir(cwd)) == before, "a file was left behind"
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    assert lines[0].startswith("pencore: error: "), err
+    _check_line(lines[0])
+    return status, lines[0]
+
+
+def _api(call) -> str:
+    t0 = time.monotonic()
+    with pytest.raises(InputError) as info:
+        call()
+    assert time.monotonic() - t0 < HANG_GUARD_S
+    text = str(info.value)
+    assert "\n" not in text.strip(), text
+    _check_line(text)
+    return text
+
+
+SIM = ["simulate", "--projectile", "p2", "--target", "soil"]
+
+# ------------------------------------------------------------ huge integers: API
+
+IMPACT_ARGS = ["velocity", "obliquity", "yaw", "omega", "azimuth"]
+NUMERICS_NUMBERS = [
+    "n_nose", "n_shank", "n_face", "eps", "rtol", "max_travel", "v_stop", "t_max",
+    "max_steps", "max_wall", "h_min", "n_gauss", "jacobian_age", "gravity",
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("sign", [1, -1])
+@pytest.mark.parametrize("arg", IMPACT_ARGS)
+def test_api_huge_integer_impact_argument(arg, sign):
+    kwargs = {"velocity": 300.0, arg: sign * HUGE}
+    text = _api(lambda: pencore.simulate("p2", "soil", **kwargs))
+    assert "integer of 401 digits" in text
+
+
+@pytest.mark.parametrize("axis", [0, 1, 2])
+def test_api_huge_integer_start(axis):
+    start = [0.0, 0.0, 0.0]
+    start[axis] = HUGE
+    text = _api(lambda: pencore.simulate("p2", "soil", 300.0, start=tuple(start)))
+    assert "start" in text
+
+
+@pytest.mark.parametrize("sign", [1, -1])
+@pytest.mark.parametrize("key", NUMERICS_NUMBERS)
+def test_api_huge_integer_numerics(key, sign):
+    if key == "max_wall" and sign > 0:  # a budget beyond any float is no budget: valid
+        assert pencore.prepare("p2", "soil", {key: HUGE}).numerics.max_wall == float("inf")
+        return
+    text = _api(lambda: pencore.prepare("p2", "soil", {key: sign * HUGE}))
+    assert key in text
+
+
+@pytest.mark.parametrize(
+    "field", ["diameter", "crh", "nose_density", "length", "shank_density"]
+)  # fmt: skip
+def test_api_huge_integer_projectile_mapping(field):
+    d = {
+        "name": "probe", "diameter": 0.0254,
+        "nose": {"kind": "ogive", "crh": 3.0, "density": 7850},
+        "shank": [{"length": 0.1, "density": 7850}],
+    }  # fmt: skip
+    if field == "diameter":
+        d["diameter"] = HUGE
+    elif field == "crh":
+        d["nose"]["crh"] = HUGE
+    elif field == "nose_density":
+        d["nose"]["density"] = HUGE
+    elif field == "length":
+        d["shank"][0]["length"] = HUGE
+    else:
+        d["shank"][0]["density"] = HUGE
+    _api(lambda: get_projectile(d))
+
+
+@pytest.mark.parametrize("field", ["a0", "a2", "friction", "thickness", "crater_depth"])
+def test_api_huge_integer_target_mapping(field):
+    medium = {"name": "m", "coefficients": [1e7, 0.0, 100.0]}
+    layer = {"medium": medium}
+    if field == "a0":
+        medium["coefficients"][0] = HUGE
+    elif field == "a2":
+        medium["coefficients"][2] = HUGE
+    elif field == "friction":
+        medium["friction"] = HUGE
+    elif field == "thickness":
+        layer["thickness"] = HUGE
+    else:
+        layer["crater_depth"] = HUGE
+    _api(lambda: get_target({"name": "t", "layers": [layer]}))
+
+
+# ------------------------------------------------------------ huge integers: CLI
+
+CLI_NUMBER_OPTIONS = [
+    ["--velocity", HUGE_TEXT],
+    ["--velocity", "300", "--obliquity", HUGE_TEXT],
+    ["--velocity", "300", "--yaw", HUGE_TEXT],
+    ["--velocity", "300", "--omega", HUGE_TEXT],
+    ["--velocity", "300", "--start", HUGE_TEXT, "0", "0"],
+    ["--velocity", "300", "--start", "0", HUGE_TEXT, "0"],
+    ["--velocity", "300", "--start", "0", "0", HUGE_TEXT],
+    ["--velocity", "300", "--crater-depth", HUGE_TEXT],
+    ["--velocity", "300", "--free-surface-depth", HUGE_TEXT],
+    ["--velocity", "-" + HUGE_TEXT],
+]
+
+
+@pytest.mark.parametrize("opts", CLI_NUMBER_OPTIONS, ids=lambda o: "-".join(o[-4:])[:30])
+def test_cli_huge_number_option(opts, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    status, _ = _cli([*SIM, *opts], capsys, tmp_path)
+    assert status == 2
+
+
+@pytest.mark.parametrize("key", NUMERICS_NUMBERS)
+def test_cli_huge_numerics_value(key, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    # (a positive budget beyond any float is no budget, which is valid)
+    value = f"-{HUGE_TEXT}" if key == "max_wall" else HUGE_TEXT
+    status, line = _cli(
+        [*SIM, "--velocity", "300", "--numerics", f"{key}={value}"], capsys, tmp_path
+    )
+    assert status == 2
+    assert key in line
+
+
+def test_cli_huge_numerics_key(capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    status, _ = _cli([*SIM, "--velocity", "300", "--numerics", f"{HUGE_TEXT}=1"], capsys, tmp_path)
+    assert status == 2
+
+
+# ------------------------------------------------------------ huge integers: YAML files
+
+YAML_PROJECTILE_EDITS = {
+    "diameter": ("diameter: 0.0254", f"diameter: {HUGE_TEXT}"),
+    "crh": ("crh: 3.0", f"crh: {HUGE_TEXT}"),
+    "nose-density": ("crh: 3.0, density: 7850", f"crh: 3.0, density: {HUGE_TEXT}"),
+    "shank-length": ("length: 0.1", f"length: {HUGE_TEXT}"),
+    "shank-density": ("length: 0.1, density: 7850", f"length: 0.1, density: -{HUGE_TEXT}"),
+}
+YAML_TARGET_EDITS = {
+    "a0": ("[1.0e7, 0.0, 100.0]", f"[{HUGE_TEXT}, 0.0, 100.0]"),
+    "a1": ("[1.0e7, 0.0, 100.0]", f"[1.0e7, {HUGE_TEXT}, 100.0]"),
+    "a2": ("[1.0e7, 0.0, 100.0]", f"[1.0e7, 0.0, -{HUGE_TEXT}]"),
+    "friction": ("friction: 0.1", f"friction: {HUGE_TEXT}"),
+    "friction-table": ("friction: 0.1", f"friction: [[0, 0.1], [{HUGE_TEXT}, 0.2]]"),
+    "thickness": ("friction: 0.1}", f"friction: 0.1}}\n    thickness: {HUGE_TEXT}"),
+    "gap": ("layers:\n", f"layers:\n  - gap: {HUGE_TEXT}\n"),
+}
+
+
+@pytest.mark.parametrize("edit", list(YAML_PROJECTILE_EDITS))
+def test_yaml_projectile_huge_integer(edit, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    old, new = YAML_PROJECTILE_EDITS[edit]
+    assert old in PROJECTILE_YAML
+    (tmp_path / "p.yaml").write_text(PROJECTILE_YAML.replace(old, new))
+    status, line = _cli(
+        ["simulate", "--projectile", "p.yaml", "--target", "soil", "--velocity", "300"],
+        capsys,
+        tmp_path,
+    )
+    assert status == 2
+    assert "p.yaml" in line
+
+
+@pytest.mark.parametrize("edit", list(YAML_TARGET_EDITS))
+def test_yaml_target_huge_integer(edit, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    old, new = YAML_TARGET_EDITS[edit]
+    assert old in TARGET_YAML
+    (tmp_path / "t.yaml").write_text(TARGET_YAML.replace(old, new, 1))
+    status, line = _cli(
+        ["simulate", "--projectile", "p2", "--target", "t.yaml", "--velocity", "300"],
+        capsys,
+        tmp_path,
+    )
+    assert status == 2
+    assert "t.yaml" in line
+
+
+# ------------------------------------------------------------ hostile files
+
+ALIAS_BOMB = (
+    'a: &a ["lol","lol","lol","lol","lol","lol","lol","lol","lol"]\n'
+    + "".join(
+        f"{chr(98 + i)}: &{chr(98 + i)} [{', '.join(['*' + chr(97 + i)] * 9)}]\n" for i in range(8)
+    )
+    + "name: *i\n"
+)
+
+
+def _hostile_file(kind: str, folder: Path) -> tuple[str, str]:
+    """(path, a word the refusal must contain) of a hostile input file."""
+    path = folder / f"{kind}.yaml"
+    if kind == "alias-bomb":
+        path.write_text(ALIAS_BOMB)
+        return str(path), "alias"
+    if kind == "recursive-alias":
+        path.write_text("name: &a [*a]\n")
+        return str(path), "alias"
+    if kind == "deep-nesting":
+        path.write_text("name: " + "[" * 5000 + "]" * 5000 + "\n")
+        return str(path), f"deeper than {MAX_YAML_DEPTH}"
+    if kind == "deep-mapping":
+        path.write_text("".join("  " * i + f"k{i}:\n" for i in range(200)) + "  " * 200 + "v\n")
+        return str(path), "deeper"
+    if kind == "duplicate-key":
+        path.write_text("name: a\nname: b\n")
+        return str(path), "repeats the key 'name'"
+    if kind == "duplicate-nested-key":
+        path.write_text("nose: {kind: ogive, kind: cone}\n")
+        return str(path), "repeats the key 'kind'"
+    if kind == "fifo":
+        os.mkfifo(path)
+        return str(path), "a FIFO"
+    if kind == "directory":
+        path.mkdir()
+        return str(path), "a directory"
+    if kind == "dev-zero":
+        return "/dev/zero", "a character device"
+    if kind == "dev-null":
+        return "/dev/null", "a character device"
+    if kind == "oversized":
+        with open(path, "wb") as f:
+            f.truncate(MAX_YAML_BYTES + 1)
+        return str(path), "bytes"
+    if kind == "binary":
+        path.write_bytes(b"\xff\xfe\x00\x01garbage")
+        return str(path), "UTF-8"
+    if kind == "not-a-mapping":
+        path.write_text("- 1\n- 2\n")
+        return str(path), "mapping"
+    if kind == "syntax-error":
+        path.write_text("name: [unclosed\n")
+        return str(path), "not valid YAML"
+    if kind == "missing":
+        return str(path), "No such file"
+    raise AssertionError(kind)
+
+
+HOSTILE_FILES = [
+    "alias-bomb", "recursive-alias", "deep-nesting", "deep-mapping", "duplicate-key",
+    "duplicate-nested-key", "fifo", "directory", "dev-zero", "dev-null", "oversized",
+    "binary", "not-a-mapping", "syntax-error", "missing",
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("role", ["--projectile", "--target"])
+@pytest.mark.parametrize("kind", HOSTILE_FILES)
+def test_cli_hostile_file(kind, role, capsys, tmp_path, monkeypatch):
+    folder = tmp_path / "in"
+    folder.mkdir()
+    path, word = _hostile_file(kind, folder)
+    monkeypatch.chdir(tmp_path)
+    other = "soil" if role == "--projectile" else "p2"
+    args = {"--projectile": other, "--target": other, role: path}
+    status, line = _cli(
+        ["simulate", "--projectile", args["--projectile"], "--target", args["--target"],
+         "--velocity", "300"],
+        capsys, tmp_path,
+    )  # fmt: skip
+    assert status == 2
+    assert word in line, line
+
+
+@pytest.mark.parametrize("kind", HOSTILE_FILES)
+def test_api_hostile_file(kind, tmp_path):
+    path, word = _hostile_file(kind, tmp_path)
+    text = _api(lambda: get_target(path))
+    assert word in text
+
+
+# ------------------------------------------------------------ writes
+
+
+def _out_cases(folder: Path) -> dict[str, tuple[list[str], str, int]]:
+    target = folder / "t.nc"  # a YAML target whose name ends in .nc
+    target.write_text(TARGET_YAML)
+    os.link(target, folder / "link.nc")
+    os.mkfifo(folder / "fifo.nc")
+    (folder / "dir.nc").mkdir()
+    base = ["simulate", "--projectile", "p2", "--target", str(target), "--velocity", "300"]
+    return {
+        "out-is-input": ([*base, "--out", str(target)], "input of this run", 2),
+        "out-is-hard-link-of-input": ([*base, "--out", str(folder / "link.nc")], "input", 2),
+        "out-is-fifo": ([*base, "--out", str(folder / "fifo.nc")], "a FIFO", 2),
+        "out-is-directory": ([*base, "--out", str(folder / "dir.nc")], "directory", 2),
+        "out-is-dev-null": ([*SIM, "--velocity", "300", "--out", "/dev/null"], ".nc", 2),
+        "fit-table3-to-dev-null": (["fit-table3", "--write", "/dev/null"], "character device", 1),
+        "fit-table3-to-fifo": (["fit-table3", "--write", str(folder / "fifo.nc")], "FIFO", 1),
+    }
+
+
+OUT_CASES = [
+    "out-is-input", "out-is-hard-link-of-input", "out-is-fifo", "out-is-directory",
+    "out-is-dev-null", "fit-table3-to-dev-null", "fit-table3-to-fifo",
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("case", OUT_CASES)
+def test_cli_refuses_to_replace(case, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    argv, word, expected = _out_cases(tmp_path)[case]
+    before = (tmp_path / "t.nc").read_text()
+    t0 = time.monotonic()
+    status = main(argv)
+    assert time.monotonic() - t0 < HANG_GUARD_S
+    err = capsys.readouterr().err.strip().splitlines()
+    assert status == expected
+    assert len(err) == 1 and err[0].startswith("pencore: error: "), err
+    assert word in err[0], err
+    assert (tmp_path / "t.nc").read_text() == before  # the input is untouched
+    assert not [n for n in os.listdir(tmp_path) if "pencore-tmp" in n or "probe" in n]
+
+
+# ------------------------------------------------------------ search arguments
+
+SEARCHES = {
+    "vcr": lambda **kw: critical.vcr("p2", "soil", 45.0, **kw),
+    "vci": lambda **kw: critical.vci("p2", "soil", 0.1, threshold_deg=1.0, **kw),
+    "omega_c": lambda **kw: critical.omega_c("p2", "soil", 500.0, **kw),
+    "ballistic_limit": lambda **kw: perforation.ballistic_limit("p2", "soil", **kw),
+}
+BAD_SEARCH_ARGS = {
+    "lo-text": ({"lo": "100", "hi": 2000.0}, "lo"),
+    "hi-nan": ({"lo": 100.0, "hi": float("nan")}, "hi"),
+    "lo-above-hi": ({"lo": 2000.0, "hi": 100.0}, "lo < hi"),
+    "hi-huge": ({"lo": 100.0, "hi": HUGE}, "hi"),
+    "tol-text": ({"lo": 100.0, "hi": 2000.0, "tol": "5"}, "tol"),
+    "tol-zero": ({"lo": 100.0, "hi": 2000.0, "tol": 0.0}, "tol"),
+    "max-iter-nan": ({"lo": 100.0, "hi": 2000.0, "max_iter": float("nan")}, "max_iter"),
+    "max-iter-fraction": ({"lo": 100.0, "hi": 2000.0, "max_iter": 2.5}, "max_iter"),
+    "max-iter-huge": ({"lo": 100.0, "hi": 2000.0, "max_iter": HUGE}, "max_iter"),
+    "scan-huge": ({"lo": 100.0, "hi": 2000.0, "scan": 10**12}, "scan"),
+    "scan-one": ({"lo": 100.0, "hi": 2000.0, "scan": 1}, "scan"),
+    "scan-text": ({"lo": 100.0, "hi": 2000.0, "scan": "5"}, "scan"),
+}
+
+
+@pytest.mark.parametrize("bad", list(BAD_SEARCH_ARGS))
+@pytest.mark.parametrize("search", list(SEARCHES))
+def test_search_arguments_refused_before_any_run(search, bad):
+    kwargs, word = BAD_SEARCH_ARGS[bad]
+    if search == "omega_c":  # bounds in rad/s: shift them inside the omega range
+        kwargs = {
+            k: (v / 1000.0 if k in ("lo", "hi") and isinstance(v, float) else v)
+            for k, v in kwargs.items()
+        }
+    text = _api(lambda: SEARCHES[search](**kwargs))
+    assert word in text
+
+
+@pytest.mark.parametrize("fraction", [2.0, 0.0, -0.5, float("nan"), "0.5", HUGE])
+def test_vci_fraction_refused(fraction):
+    text = _api(lambda: critical.vci("p2", "soil", 0.1, 500.0, 2000.0, 1.0, fraction=fraction))
+    assert "fraction" in text
+
+
+# ------------------------------------------------------------ standard output
+
+
+@pytest.mark.parametrize(
+    "redirect, word",
+    [(">/dev/full", "cannot write to standard output"), (">&-", "standard output is closed")],
+)
+def test_cli_stdout_that_cannot_be_written(redirect, word, tmp_path):
+    cmd = f"{sys.executable} -c 'import sys; from pencore.cli import main; sys.exit(main())' list"
+    t0 = time.monotonic()
+    proc = subprocess.run(
+        f"{cmd} {redirect}", shell=True, cwd=tmp_path, capture_output=True, text=True,
+        timeout=120,
+    )  # fmt: skip
+    assert time.monotonic() - t0 < HANG_GUARD_S
+    assert proc.returncode == 1
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1 and word in lines[0], proc.stderr
+    assert "Traceback" not in proc.stderr
+
+
+# ------------------------------------------------------------ valid edge inputs
+
+
+def test_valid_numpy_scalars_and_long_output_name(capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    # numpy scalars are numbers
+    medium = get_target("soil").medium.with_friction(np.float32(0.1))
+    assert medium.friction_mu[0] == pytest.approx(0.1)
+    pencore.prepare("p2", "soil", {"max_steps": np.int64(1000), "rtol": np.float32(1e-5)})
+    # a 243-byte output name (the file-system limit is 255) is written
+    name = "x" * 240 + ".nc"
+    status = main([*SIM, "--velocity", "300", "--out", name])
+    assert status == 0, capsys.readouterr().err
+    assert (tmp_path / name).is_file()
+    assert not [n for n in os.listdir(tmp_path) if "pencore-tmp" in n]
+
+
+def test_valid_yaml_with_anchors_and_a_long_friction_table(tmp_path):
+    rows = "\n".join(f"  - [{i * 0.2:.3f}, 0.1]" for i in range(10_000))
+    path = tmp_path / "t.yaml"
+    path.write_text(
+        "name: anchored\nlayers:\n  - medium: &m {name: m, coefficients: [1.0e7, 0.0, 100.0]}\n"
+        "    thickness: 0.1\n  - medium: *m\n"
+    )
+    target = get_target(str(path))
+    assert len(target.layers) == 2
+    path.write_text(f"name: rough\ncoefficients: [1.0e7, 0.0, 100.0]\nfriction:\n{rows}\n")
+    assert len(get_target(str(path)).medium.friction_speeds) == 10_000
+
+
+@pytest.mark.parametrize(
+    "kwargs",
+    [
+        {"max_steps": 10**9},
+        {"n_gauss": 64},
+        {"max_wall": float("inf")},
+        {"rtol": 1e-12},
+        {"t_max": 100},
+    ],
+)
+def test_valid_numerics_at_the_limits_accepted(kwargs):
+    pr = pencore.prepare("p2", "soil", kwargs)
+    for key, value in kwargs.items():
+        assert getattr(pr.numerics, key) == value
+
+
+# ------------------------------------------------------------ workflow configuration
+
+REPO = Path(__file__).resolve().parents[2]
+
+
+def _config() -> dict:
+    import yaml
+
+    return yaml.safe_load((REPO / "config" / "config.yaml").read_text())
+
+
+def _edit(cfg: dict, path: str, value) -> dict:
+    node = cfg
+    keys = path.split(".")
+    for k in keys[:-1]:
+        node = node[int(k)] if isinstance(node, list) else node[k]
+    if isinstance(node, list):
+        node[int(keys[-1])] = value
+    else:
+        node[keys[-1]] = value
+    return cfg
+
+
+BAD_CONFIG = [
+    ("numerics", {"rtol": 0.5}, "rtol"),
+    ("numerics", {"max_steps": HUGE}, "max_steps"),
+    ("numerics", {"n_gauss": 0}, "n_gauss"),
+    ("numerics", {"method": "RK45"}, "method"),
+    ("numerics", {"rtoll": 1e-6}, "did you mean"),
+    ("ensemble.cases.0.projectile", "p9", "unknown projectile"),
+    ("ensemble.cases.0.target", "mud", "unknown target"),
+    ("ensemble.cases.0.target", "missing/target.yaml", "No such file"),
+    ("validation.measurements.0.projectile", "p7", "unknown projectile"),
+    ("validation.measurements.0.target", "sand", "unknown target"),
+    ("validation.fig5.cases.0.projectile", "concrete_crh9", "unknown projectile"),
+    ("perforation.projectile", "p0", "unknown projectile"),
+    ("perforation.medium", "steel", "unknown medium"),
+    ("ensemble.cases.0.velocity_m_s", {"dist": "normal", "mean": 9000, "sd": 800}, "velocity"),
+    ("ensemble.cases.0.yaw_deg", {"dist": "uniform", "min": -95, "max": 5}, "yaw"),
+    ("ensemble.cases.0.yaw_deg", {"dist": "normal", "mean": 0, "sd": 10}, "90 deg"),
+    ("ensemble.cases.0.omega_rad_s", {"dist": "normal", "mean": 0, "sd": 5000}, "omega"),
+    ("ensemble.cases.0.azimuth_deg", {"dist": "uniform", "min": 0, "max": 720}, "azimuth"),
+    ("perforation.ballistic_limit.thickness_m", [0.5, 0.0], "thickness"),
+    ("perforation.ballistic_limit.thickness_m", [0.5, float("nan")], "thickness"),
+    ("perforation.residual_velocity.thickness_m", -1.0, "thickness"),
+    ("perforation.residual_velocity.thickness_m", HUGE, "thickness"),
+    ("perforation.scan_points", 10**9, "scan_points"),
+    ("perforation.scan_points", 1, "scan_points"),
+    ("perforation.scan_points", 2.5, "scan_points"),
+    ("validation.fig5.cases.0.v_min", 1500.0, "v_min"),
+    ("validation.fig5.cases.2.v_min", 5000.0, "misses"),
+    ("validation.fig5.cases.0.v_max", -10.0, "v_max"),
+]
+
+
+@pytest.mark.parametrize("path, value, word", BAD_CONFIG, ids=lambda x: str(x)[:40])
+def test_workflow_config_refused_at_parse_time(path, value, word):
+    from pencore.errors import ConfigError
+    from pencore.studies.config_check import check_config
+
+    cfg = _edit(_config(), path, value)
+    t0 = time.monotonic()
+    with pytest.raises(ConfigError) as info:
+        check_config(cfg, REPO)
+    assert time.monotonic() - t0 < HANG_GUARD_S
+    text = str(info.value)
+    assert "\n" not in text
+    _check_line(text)
+    assert word in text, text
+
+
+def test_shipped_workflow_configs_pass():
+    import yaml
+
+    from pencore.studies.config_check import check_config
+
+    check_config(_config(), REPO)
+    large = _config()
+    large.update(yaml.safe_load((REPO / "config" / "ensemble_large.yaml").read_text()))
+    check_config(large, REPO)
+
+
+# ------------------------------------------------------------ messages that name the cause
+
+
+def test_slow_impact_from_the_default_start_is_run():
+    # the nose tip reaches 1.45 mm below the outermost ring: from the touching start a
+    # speed of 1 mm/s reaches the target within t_max
+    ds = pencore.simulate("p2", "soil", 1e-3)
+    assert ds.attrs["outcome"] == "stopped"
+
+
+def test_tiny_t_max_from_the_default_start_names_t_max():
+    text = _api(lambda: pencore.simulate("p2", "soil", 300.0, t_max=1e-12))
+    assert "t_max = 1e-12 s ends before the body touches" in text
+    assert "start height" not in text
+
+
+def test_thin_layer_failure_names_the_thin_layer_not_chatter():
+    from pencore.errors import SolverError
+
+    foil = {"name": "foil", "layers": [{"medium": "aluminium", "thickness": 1e-6}]}
+    with pytest.raises(SolverError) as info:
+        pencore.simulate("p2", foil, 300.0)
+    text = str(info.value)
+    assert "thinnest layer" in text and "chatters" not in text
+    assert "\n" not in text
