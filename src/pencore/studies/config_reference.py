@@ -41,7 +41,9 @@ __all__ = [
     "SCHEMA",
     "CONFIG",
     "Row",
+    "NAME",
     "config_key_paths",
+    "named_map_paths",
     "config_reference",
     "reference_rows",
     "schema_limit",
@@ -108,6 +110,10 @@ class Row:
         if self.path.rsplit(".", 1)[-1] == "step":
             parts.append(f"{GRID_STEP.describe()} (checked)")
         return "; ".join(parts)
+
+
+#: How the reference names a key the user chooses (the name of an option set).
+NAME = "<name>"
 
 
 def _load_yaml(path: Path) -> Any:
@@ -271,6 +277,10 @@ def _walk(
             yield from _walk(schema, sub, f"{path}.{name}", config, validated=False)
     for name, sub in node.get("properties", {}).items():
         yield from _walk(schema, sub, f"{path}.{name}" if path else name, config, validated)
+    named = node.get("additionalProperties")
+    if isinstance(named, Mapping) and path:
+        # a mapping of user-chosen names to entries of one schema (option sets)
+        yield from _walk(schema, named, f"{path}.{NAME}", config, validated)
     if "array" in _types(node):
         items = _resolve(schema, node.get("items", {}))
         if "properties" in items:
@@ -292,19 +302,31 @@ def reference_rows(root: str | Path = ".") -> list[Row]:
     return list(_walk(schema, schema, "", config))
 
 
-def config_key_paths(config: Any, prefix: str = "") -> set[str]:
-    """The key paths of a configuration as the reference names them (``[]`` for every
-    entry of a list of mappings)."""
+def named_map_paths(root: str | Path = ".") -> frozenset[str]:
+    """The key paths whose keys are names the user chooses (a schema's mapping-valued
+    ``additionalProperties``), as the reference names them."""
+    return frozenset(
+        r.path.removesuffix(f".{NAME}") for r in reference_rows(root) if r.path.endswith(NAME)
+    )
+
+
+def config_key_paths(
+    config: Any, prefix: str = "", named: frozenset[str] = frozenset()
+) -> set[str]:
+    """The key paths of a configuration as the reference names them: ``[]`` for every
+    entry of a list of mappings, :data:`NAME` for a user-chosen key of a path in
+    ``named`` (:func:`named_map_paths`)."""
     out: set[str] = set()
     if isinstance(config, Mapping):
         for key, value in config.items():
-            path = f"{prefix}.{key}" if prefix else str(key)
+            name = NAME if prefix in named else str(key)
+            path = f"{prefix}.{name}" if prefix else name
             out.add(path)
-            out |= config_key_paths(value, path)
+            out |= config_key_paths(value, path, named)
     elif isinstance(config, Sequence) and not isinstance(config, str):
         for item in config:
             if isinstance(item, Mapping):
-                out |= config_key_paths(item, f"{prefix}[]")
+                out |= config_key_paths(item, f"{prefix}[]", named)
     return out
 
 
@@ -335,7 +357,8 @@ def config_reference(root: str | Path = ".") -> str:
         "(defaults) and `pencore.studies.config_check` (the ranges checked beyond the "
         "schema) by `python -m pencore.studies.config_reference`; do not edit by hand.",
         "",
-        "Key paths are dotted; `[]` stands for every entry of a list. A configuration "
+        "Key paths are dotted; `[]` stands for every entry of a list and `<name>` for a "
+        "name you choose (an option set). A configuration "
         "given with `--configfile` is merged over the defaults. Ranges marked *(checked)* "
         "apply to every number of the value: a scalar, each entry of a list, and the "
         "`min` and `max` of a range, grid or distribution; unmarked ranges are the "
@@ -343,7 +366,8 @@ def config_reference(root: str | Path = ".") -> str:
         "checks that a range's `min` is not above its `max`, that no grid has more than "
         f"{MAX_GRID} points, that the largest `|obliquity| + |yaw|` of a study stays "
         "below 90 deg, that `projectiles` and `cases` names are unique, that the "
-        "Table 2 CSV has rows, and each ensemble case and attribution setting as a whole "
+        "Table 2 CSV has rows, that each case's speed window `[v_min, v_max]` meets its "
+        "study's velocities, and each ensemble case and attribution setting as a whole "
         "(`pencore.studies.ensemble_cases.check_case`, "
         "`pencore.paper.choices.check_settings`).",
         "",
