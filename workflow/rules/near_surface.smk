@@ -86,3 +86,6 @@ ALL_TARGETS.extend(
         "results/near_surface/ballistic_map.pdf",
     ]
 )
+ARCHIVE_DATASETS.extend(
+    ["results/near_surface/ballistic_map.nc", "results/near_surface/obliquity_ratio.nc"]
+)

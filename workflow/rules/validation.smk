@@ -249,4 +249,6 @@ rule measurements_figure:
 
 ALL_TARGETS.extend(f"results/validation/measurements.{ext}" for ext in ("nc", "png", "pdf"))
 ALL_TARGETS.append("results/validation/measurements_options.nc")
-ARCHIVE_DATASETS.append("results/validation/measurements.nc")
+ARCHIVE_DATASETS.extend(
+    ["results/validation/measurements.nc", "results/validation/measurements_options.nc"]
+)
