@@ -293,6 +293,14 @@ def numbers() -> dict[str, str]:
     compile_ = pd.read_csv(BENCH / "compile.csv").set_index("case")["cpu_s"]
     out["warmup_s"] = _fmt(compile_["warmup"], 2)
     out["comparison_counts"] = comparison_counts()
+    from pencore.inputs import gate
+    from pencore.inputs.numerics import DEFAULT_MAX_WALL
+
+    out["yaml_mib"] = _fmt(gate.MAX_YAML_BYTES / 2**20)
+    out["yaml_depth"] = str(gate.MAX_YAML_DEPTH)
+    out["yaml_nodes"] = f"{gate.MAX_YAML_NODES:,}".replace(",", " ")
+    out["max_quote"] = str(gate.MAX_QUOTE)
+    out["max_wall_s"] = _fmt(DEFAULT_MAX_WALL)
     from pencore import analysis
 
     out["deviation_speed_percent"] = _fmt(100 * analysis.DEFAULT_SPEED_FRACTION)
@@ -378,6 +386,76 @@ def measurements_table() -> str:
     return "\n".join(lines)
 
 
+def _stats_table(ds, rows_dim: str, group_dim: str) -> str:  # noqa: ANN001 (xarray.Dataset)
+    lines = [
+        f"| {rows_dim} | {group_dim} | n | mean error | 95 % interval | RMS | largest |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for r in ds[rows_dim].values:
+        for g in ds[group_dim].values:
+            st = ds.sel({rows_dim: r, group_dim: g})
+            n = float(st["stat_n"]) if "stat_n" in st else float("nan")
+            if not n > 0:
+                continue
+
+            def pct(name: str, st=st) -> str:  # noqa: ANN001
+                return f"{100 * float(st[name]):+.1f} %"
+
+            lines.append(
+                f"| {r} | {g} | {n:.0f} | {pct('stat_mean_rel_error')} | "
+                f"{pct('stat_ci95_lo')} to {pct('stat_ci95_hi')} | "
+                f"{pct('stat_rms_rel_error')[1:]} | {pct('stat_max_abs_rel_error')[1:]} |"
+            )
+    return "\n".join(lines)
+
+
+def measurement_options_table() -> str:
+    """Error statistics of every measured shot under each near-surface option set."""
+    import xarray as xr
+
+    with xr.open_dataset(ARCHIVE / "validation" / "measurements_options.nc") as ds:
+        return _stats_table(ds.load(), "option", "group")
+
+
+def obliquity_ratio_table() -> str:
+    """Measured obliquity ratios V_bl(theta)/V_bl(0) against each model's."""
+    import xarray as xr
+
+    with xr.open_dataset(ARCHIVE / "near_surface" / "obliquity_ratio.nc") as ds:
+        return _stats_table(ds.load(), "model", "material_class")
+
+
+def ballistic_map_table() -> str:
+    """The archived ballistic-limit map: V_bl (m/s) and its ratio to normal incidence,
+    one table per near-surface option, with the line-of-sight rule."""
+    import numpy as np
+    import xarray as xr
+
+    with xr.open_dataset(ARCHIVE / "near_surface" / "ballistic_map.nc") as ds:
+        ds = ds.load()
+    obl = ds.obliquity.values
+    head = "| t/d | " + " | ".join(f"{o:g} deg" for o in obl) + " |"
+    out = []
+    for option in ds.option.values:
+        m = ds.sel(option=option)
+        out += [
+            f"**{option}** (V_bl in m/s, [ratio to 0 deg])",
+            "",
+            head,
+            "|---|" + "---|" * len(obl),
+        ]
+        for i, t in enumerate(ds.t_over_d.values):
+            cells = []
+            for j in range(obl.size):
+                v, r = float(m.v_bl.values[i, j]), float(m.ratio.values[i, j])
+                cells.append("failed" if np.isnan(v) else f"{v:.0f} [{r:.2f}]")
+            out.append(f"| {t:g} | " + " | ".join(cells) + " |")
+        out.append("")
+    sec = " ".join(f"{1 / np.cos(np.radians(o)):.3f}" for o in obl)
+    out.append(f"Line-of-sight rule, sec(obliquity): {sec}.")
+    return "\n".join(out)
+
+
 def layers_table() -> str:
     """The package's layers, top first, as ``pyproject.toml``'s import contract lists them."""
     import tomllib
@@ -417,6 +495,9 @@ PAGES: dict[str, Callable[[], str]] = {
     "residual_velocity.md": residual_velocity_text,
     "measurements.md": measurements_table,
     "layers.md": layers_table,
+    "measurement_options.md": measurement_options_table,
+    "obliquity_ratio.md": obliquity_ratio_table,
+    "ballistic_map.md": ballistic_map_table,
     "config_reference.md": config_reference_page,
 }
 
