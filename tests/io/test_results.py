@@ -44,3 +44,15 @@ def test_unreadable_results_are_set_aside_and_good_ones_kept(tmp_path):
     assert not bad.exists() and (bad.parent / "bad.nc.corrupt").is_file()
     assert set_aside_unreadable(tmp_path / "results") == []  # nothing left to set aside
     assert set_aside_unreadable(tmp_path / "missing") == []
+
+
+def test_superblock_records_the_size_of_a_written_file(tmp_path):
+    """The fast check reads the size HDF5 records on close: for a file pencore wrote it is
+    the size on disk, and a file cut short by even one byte is named truncated."""
+    from pencore.io.results import hdf5_stored_end
+
+    path = _write(tmp_path / "results" / "whole.nc")
+    data = path.read_bytes()
+    assert hdf5_stored_end(path) == len(data)
+    path.write_bytes(data[:-1])
+    assert readable_netcdf(path) == f"truncated: {len(data) - 1} of {len(data)} bytes"

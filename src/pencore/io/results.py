@@ -29,10 +29,62 @@ def unreadable_message(path: str | os.PathLike[str], exc: BaseException) -> str:
     )
 
 
+#: The HDF5 format signature that starts a netCDF-4 file's superblock.
+HDF5_SIGNATURE = b"\x89HDF\r\n\x1a\n"
+
+
+def hdf5_stored_end(path: str | os.PathLike[str]) -> int | None:
+    """The file size an HDF5 (netCDF-4) file's superblock records (bytes: its base
+    address plus its end-of-file address), read from the file's first bytes; None if the
+    file has no superblock of a version this reads (0-3).
+
+    HDF5 writes the end-of-file address when it closes a file, and refuses to open one
+    that is shorter ("truncated file"); comparing it with the size on disk is that test
+    without loading the library (HDF5 File Format Specification, version 3, section II.A:
+    the superblock's "End of File Address").
+    """
+    with open(path, "rb") as f:
+        offset = 0
+        while True:  # the superblock is at 0 or after a user block of 512 * 2^k bytes
+            f.seek(offset)
+            head = f.read(128)
+            if len(head) < 48:
+                return None
+            if head[:8] == HDF5_SIGNATURE:
+                break
+            offset = 512 if offset == 0 else 2 * offset
+    version = head[8]
+    if version in (0, 1):
+        size_of_offsets, first = head[13], (24 if version == 0 else 28)
+    elif version in (2, 3):
+        size_of_offsets, first = head[9], 12
+    else:
+        return None
+    # base address, then (v0/1) free-space info or (v2/3) superblock extension, then EOF
+    at = first + 2 * size_of_offsets
+    raw = head[at : at + size_of_offsets]
+    if size_of_offsets not in (2, 4, 8) or len(raw) < size_of_offsets:
+        return None
+    base = int.from_bytes(head[first : first + size_of_offsets], "little")
+    return offset + base + int.from_bytes(raw, "little") if base == 0 else None
+
+
 def readable_netcdf(path: str | os.PathLike[str]) -> str | None:
-    """None when ``path`` opens as netCDF, else the reason in words. An open test: the
-    HDF5 library compares the file's end with the end its header records, so a
-    truncated file fails it without its data being read."""
+    """None when ``path`` opens as netCDF, else the reason in words.
+
+    A netCDF-4 file is checked by its superblock (:func:`hdf5_stored_end`: a file shorter
+    than the size it records is truncated), which costs a read of its first bytes; any
+    other file is opened with the netCDF library, which reads its header. A file whose
+    size is right but whose contents are damaged passes here and is named, with what to
+    run, by :func:`pencore.io.netcdf.read_netcdf` when a rule reads it.
+    """
+    try:
+        end = hdf5_stored_end(path)
+    except OSError as exc:
+        return " ".join(str(exc).split())[:160]
+    if end is not None:
+        size = os.path.getsize(path)
+        return None if size >= end else f"truncated: {size} of {end} bytes"
     try:
         import netCDF4
 
