@@ -182,6 +182,8 @@ def ballistic_map(
     out["ratio"] = out["v_bl"] / v0
     out["ratio"].attrs = _attrs("1", "V_bl(obliquity) / V_bl(0)")
     out["t_over_d"].attrs = _attrs("1", "plate thickness in projectile calibers")
+    out["obliquity"].attrs = _attrs("degree", "obliquity: shot line from the plate normal")
+    out["option"].attrs = {"long_name": "near-surface option set"}
     out.attrs = {
         "title": "pencore ballistic-limit map with the line-of-sight rule",
         "projectile": projectile,
@@ -284,6 +286,14 @@ def compare_obliquity(rows: pd.DataFrame, bl_map: xr.Dataset) -> xr.Dataset:
             _attrs("1", long_name),
         )
     ds = ds.assign_coords(model=names, material_class=groups)
+    # after assign_coords, which rebuilds the indexes' variables without their attributes
+    for name, attrs in (
+        ("row", _attrs("1", "oblique row of the measurements file (0-based)")),
+        ("option", {"long_name": "near-surface option set"}),
+        ("model", {"long_name": "model of the obliquity ratio"}),
+        ("material_class", {"long_name": "plate material class"}),
+    ):
+        ds[name].attrs = attrs
     ds.attrs = {
         "title": "measured obliquity ratios against pencore and the line-of-sight rule",
         "analog": f"{bl_map.attrs['projectile']} into {bl_map.attrs['medium']}",
