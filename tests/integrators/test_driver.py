@@ -32,7 +32,17 @@ def test_no_budget_never_stops():
     assert guard.stop[0] == 0 and not guard.out_of_time
 
 
-def test_ctrl_c_during_a_run_raises_the_flag_then_keyboard_interrupt():
+@pytest.fixture
+def python_sigint_handler():
+    """Python's own SIGINT handler for the test: a test run started in the background by
+    a shell without job control inherits SIGINT ignored, and a run then keeps ignoring
+    it (see the next test), which is not what this test is about."""
+    saved = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, saved)
+
+
+def test_ctrl_c_during_a_run_raises_the_flag_then_keyboard_interrupt(python_sigint_handler):
     guard = RunGuard(math.inf)
     with pytest.raises(KeyboardInterrupt):
         with guard:
