@@ -28,6 +28,7 @@ from typing import Any
 import yaml
 
 from pencore.errors import InputError
+from pencore.io.atomic import file_kind
 
 __all__ = [
     "brief",
@@ -203,7 +204,7 @@ def read_yaml(path: str | os.PathLike[str], what: str) -> Any:
     except OSError as exc:
         raise InputError(f"cannot read {name}: {exc.strerror or exc}") from None
     if not stat.S_ISREG(st.st_mode):
-        raise InputError(f"{name} is not a regular file ({_kind(st.st_mode)})")
+        raise InputError(f"{name} is not a regular file ({file_kind(st.st_mode)})")
     try:
         fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
     except OSError as exc:
@@ -211,7 +212,7 @@ def read_yaml(path: str | os.PathLike[str], what: str) -> Any:
     try:
         st = os.fstat(fd)  # the file opened, not one swapped in after the stat
         if not stat.S_ISREG(st.st_mode):
-            raise InputError(f"{name} is not a regular file ({_kind(st.st_mode)})")
+            raise InputError(f"{name} is not a regular file ({file_kind(st.st_mode)})")
         if st.st_size > MAX_YAML_BYTES:
             raise InputError(f"{name} is {st.st_size} bytes; the limit is {MAX_YAML_BYTES} bytes")
         with os.fdopen(fd, "rb", closefd=False) as f:
@@ -227,16 +228,3 @@ def read_yaml(path: str | os.PathLike[str], what: str) -> Any:
     except UnicodeDecodeError:
         raise InputError(f"{name} is not a UTF-8 text (YAML) file") from None
     return load_yaml_text(text, name)
-
-
-def _kind(mode: int) -> str:
-    for test, word in (
-        (stat.S_ISDIR, "a directory"),
-        (stat.S_ISFIFO, "a FIFO"),
-        (stat.S_ISCHR, "a character device"),
-        (stat.S_ISBLK, "a block device"),
-        (stat.S_ISSOCK, "a socket"),
-    ):
-        if test(mode):
-            return word
-    return "not a plain file"

@@ -34,7 +34,14 @@ from pathlib import Path
 
 from pencore.errors import WriteError
 
-__all__ = ["atomic_path", "check_replaceable", "describe_os_error", "TEMP_MARK", "TEMP_NAME_CHARS"]
+__all__ = [
+    "atomic_path",
+    "check_replaceable",
+    "describe_os_error",
+    "file_kind",
+    "TEMP_MARK",
+    "TEMP_NAME_CHARS",
+]
 
 TEMP_MARK = ".pencore-tmp-"
 #: Characters of the destination's name kept in its temporary file's name (a name of up
@@ -121,7 +128,7 @@ def check_replaceable(
         raise WriteError(f"cannot write {_quote(path)}: {describe_os_error(exc)}") from None
     if not stat.S_ISREG(st.st_mode):
         raise WriteError(
-            f"cannot write {_quote(path)}: it is {_kind(st.st_mode)}, not a regular file; "
+            f"cannot write {_quote(path)}: it is {file_kind(st.st_mode)}, not a regular file; "
             "only a regular file is replaced",
             errno.EEXIST,
         )
@@ -143,7 +150,9 @@ def _quote(path: str | os.PathLike[str]) -> str:
     return repr(text) if len(text) <= 200 else repr("..." + text[-197:])
 
 
-def _kind(mode: int) -> str:
+def file_kind(mode: int) -> str:
+    """What a file of this ``st_mode`` is, in words (``"a directory"``, ``"a FIFO"``,
+    ...), for messages that refuse anything but a regular file."""
     for test, word in (
         (stat.S_ISDIR, "a directory"),
         (stat.S_ISFIFO, "a FIFO"),
