@@ -32,6 +32,7 @@ import numba as nb
 import numpy as np
 
 from pencore.kernels.dynamics import body_velocity, quat_to_matrix
+from pencore.kernels.friction import friction_coefficient
 from pencore.kernels.windows import depth_factor
 
 #: Most samples :func:`push_path` adds per accepted step (the rest is the virtual vertex).
@@ -272,7 +273,7 @@ def point_loads(y, pts, bounds, coef, fric, eps, with_friction, cavity, cav, pat
         if with_friction:
             tx, ty, tz = ux - vn * nx, uy - vn * ny, uz - vn * nz
             vt = math.sqrt(tx * tx + ty * ty + tz * tz)
-            mu = _mu(fric, lay, nt, vt)
+            mu = friction_coefficient(fric, lay, nt, vt)
             if mu > 0.0:
                 sc = -mu * area * sig / math.sqrt(vt * vt + reg * reg)
                 fx += sc * tx
@@ -285,23 +286,3 @@ def point_loads(y, pts, bounds, coef, fric, eps, with_friction, cavity, cav, pat
         mom[1] += pz * fx - px * fz
         mom[2] += px * fy - py * fx
     return f, mom, clearance
-
-
-@nb.njit(cache=True)
-def _mu(fric, lay, nt, vt):
-    """Friction coefficient at sliding speed ``vt``: the piecewise-linear table (found
-    by bisection, so a long table costs little)."""
-    if vt <= fric[lay, 0, 0]:
-        return fric[lay, 0, 1]
-    if vt >= fric[lay, nt - 1, 0]:
-        return fric[lay, nt - 1, 1]
-    # bisection for fric[k] <= vt < fric[k + 1] (the speeds increase strictly)
-    k, kh = 0, nt - 1
-    while kh - k > 1:
-        mid = (k + kh) // 2
-        if vt < fric[lay, mid, 0]:
-            kh = mid
-        else:
-            k = mid
-    t = (vt - fric[lay, k, 0]) / (fric[lay, k + 1, 0] - fric[lay, k, 0])
-    return fric[lay, k, 1] + t * (fric[lay, k + 1, 1] - fric[lay, k, 1])

@@ -41,6 +41,27 @@ def _leggauss(n):
 
 
 @nb.njit(cache=True)
+def friction_coefficient(fric, lay, nt, vt):
+    """Friction coefficient of layer ``lay`` at sliding speed ``vt`` (m/s): the
+    piecewise-linear table ``fric[lay, :nt]`` of (speed, mu) rows, constant beyond its
+    ends, found by bisection so that a long table costs little."""
+    if vt <= fric[lay, 0, 0]:
+        return fric[lay, 0, 1]
+    if vt >= fric[lay, nt - 1, 0]:
+        return fric[lay, nt - 1, 1]
+    # bisection for fric[k] <= vt < fric[k + 1] (the speeds increase strictly)
+    k, kh = 0, nt - 1
+    while kh - k > 1:
+        mid = (k + kh) // 2
+        if vt < fric[lay, mid, 0]:
+            kh = mid
+        else:
+            k = mid
+    t = (vt - fric[lay, k, 0]) / (fric[lay, k + 1, 0] - fric[lay, k, 0])
+    return fric[lay, k, 1] + t * (fric[lay, k + 1, 1] - fric[lay, k, 1])
+
+
+@nb.njit(cache=True)
 def _friction_ring(
     f, mom, lo, hi, n, gx, gw, x1, r, na, nr, w, v1, v2, v3, w1, w2, w3, coef, lay, fric, eps,
     alpha=1.0, beta=0.0, cy=1.0, sy=0.0,
@@ -88,22 +109,7 @@ def _friction_ring(
                 ty = uy - vn * ny
                 tz = uz - vn * nz
                 vt = math.sqrt(tx * tx + ty * ty + tz * tz)
-                # mu(vt): piecewise linear table, constant beyond the ends
-                if vt <= fric[lay, 0, 0]:
-                    mu = fric[lay, 0, 1]
-                elif vt >= fric[lay, nt - 1, 0]:
-                    mu = fric[lay, nt - 1, 1]
-                else:
-                    # bisection for fric[k] <= vt < fric[k + 1] (speeds increase strictly)
-                    k, kh = 0, nt - 1
-                    while kh - k > 1:
-                        mid = (k + kh) // 2
-                        if vt < fric[lay, mid, 0]:
-                            kh = mid
-                        else:
-                            k = mid
-                    t = (vt - fric[lay, k, 0]) / (fric[lay, k + 1, 0] - fric[lay, k, 0])
-                    mu = fric[lay, k, 1] + t * (fric[lay, k + 1, 1] - fric[lay, k, 1])
+                mu = friction_coefficient(fric, lay, nt, vt)
                 scale = -mu * hw * sig * w * dphi / math.sqrt(vt * vt + reg * reg)
                 fx, fy, fz = scale * tx, scale * ty, scale * tz
                 f[0] += fx
