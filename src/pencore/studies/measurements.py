@@ -87,6 +87,26 @@ def _entry(entry: Mapping[str, Any]) -> dict[str, Any]:
     return e
 
 
+def read_data_csv(path: str | Path, columns: Sequence[str], label: str) -> pd.DataFrame:
+    """A data file (CSV, ``#`` comments) that exists, has ``columns`` and has rows.
+
+    Raises
+    ------
+    InputError
+        One line starting with ``label``: no such file, the columns it lacks, or no rows.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise InputError(f"{label}: no such file {str(path)!r}")
+    df = pd.read_csv(path, comment="#")
+    missing = [c for c in columns if c not in df.columns]
+    if missing:
+        raise InputError(f"{label}: {path} lacks column(s) {missing}")
+    if df.empty:
+        raise InputError(f"{label}: {path} has no rows")
+    return df
+
+
 def load_measurements(entry: Mapping[str, Any]) -> pd.DataFrame:
     """Rows of one data file, checked, with ``projectile`` and ``target`` filled in.
 
@@ -109,14 +129,7 @@ def load_measurements(entry: Mapping[str, Any]) -> pd.DataFrame:
     """
     e = _entry(entry)
     path = Path(e["csv"])
-    if not path.is_file():
-        raise InputError(f"measurements {e['name']}: no such file {str(path)!r}")
-    df = pd.read_csv(path, comment="#")
-    missing = [c for c in REQUIRED if c not in df.columns]
-    if missing:
-        raise InputError(f"measurements {e['name']}: {path} lacks column(s) {missing}")
-    if df.empty:
-        raise InputError(f"measurements {e['name']}: {path} has no rows")
+    df = read_data_csv(path, REQUIRED, f"measurements {e['name']}")
     qcols = [c for c in QUANTITIES if c in df.columns]
     rows = []
     for i, r in df.iterrows():

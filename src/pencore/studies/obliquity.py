@@ -39,7 +39,7 @@ from pencore.search.perforation import ballistic_limit
 from pencore.search.threshold import CriticalResult
 from pencore.studies.common import _attrs
 from pencore.studies.fig08_vcr import _search_vars
-from pencore.studies.measurements import error_statistics
+from pencore.studies.measurements import error_statistics, read_data_csv
 from pencore.studies.perforation import slab_target
 
 __all__ = [
@@ -74,15 +74,7 @@ def load_oblique(csv: str | Path) -> pd.DataFrame:
         A missing file or column, a non-positive number, a row without source or
         ``read_in``, or a series without its 0 deg row; the message names the row.
     """
-    path = Path(csv)
-    if not path.is_file():
-        raise InputError(f"oblique ballistic limits: no such file {str(path)!r}")
-    df = pd.read_csv(path, comment="#")
-    missing = [c for c in COLUMNS if c not in df.columns]
-    if missing:
-        raise InputError(f"oblique ballistic limits: {path} lacks column(s) {missing}")
-    if df.empty:
-        raise InputError(f"oblique ballistic limits: {path} has no rows")
+    df = read_data_csv(csv, COLUMNS, "oblique ballistic limits")
     for i, r in df.iterrows():
         where = f"oblique ballistic limits row {i + 1} (series {r['series']!r})"
         for c in ("source", "read_in"):
