@@ -188,9 +188,9 @@ def add_window_options(p: argparse.ArgumentParser) -> None:
     Parameters
     ----------
     p : argparse.ArgumentParser
-        The subcommand's parser. Both options are depths in calibers (projectile
-        diameters), default ``None`` (each medium keeps its own); see
-        :func:`with_windows`.
+        The subcommand's parser. The first two options are depths in calibers
+        (projectile diameters), the third a ratio of radii; each defaults to ``None``
+        (each medium keeps its own); see :func:`with_windows`.
     """
     p.add_argument(
         "--crater-depth",

@@ -356,18 +356,6 @@ def check_config(config: Mapping[str, Any], root: str | Path = ".") -> None:
             check_settings(settings)
         except InputError as exc:
             _fail("attribution.settings", str(exc))
-        for i, st in enumerate(settings):
-            num = (st.get("choices") or {}).get("numerics") if isinstance(st, Mapping) else None
-            if isinstance(num, Mapping):
-                try:
-                    resolve_numerics(num)
-                except InputError as exc:
-                    _fail(f"attribution.settings[{i}].choices.numerics", str(exc))
-    if isinstance(config.get("numerics"), Mapping):
-        try:
-            resolve_numerics(config["numerics"])
-        except InputError as exc:
-            _fail("numerics", str(exc))
     perforation = config.get("perforation")
     if isinstance(perforation, Mapping):
         for key in ("crater_depth", "free_surface_depth"):
