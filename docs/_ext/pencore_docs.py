@@ -301,6 +301,11 @@ def numbers() -> dict[str, str]:
     out["yaml_nodes"] = f"{gate.MAX_YAML_NODES:,}".replace(",", " ")
     out["max_quote"] = str(gate.MAX_QUOTE)
     out["max_wall_s"] = _fmt(DEFAULT_MAX_WALL)
+    import pencore
+    from pencore.inputs.numerics import Numerics
+
+    out["max_travel_m"] = _fmt(Numerics().max_travel)
+    out["band_p2_mm"] = _fmt(1e3 * pencore.prepare("p2", "soil").band_length, 2)
     from pencore import analysis
 
     out["deviation_speed_percent"] = _fmt(100 * analysis.DEFAULT_SPEED_FRACTION)

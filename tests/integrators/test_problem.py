@@ -3,7 +3,6 @@
 import math
 
 import numpy as np
-import pytest
 
 import pencore
 from pencore.integrators.problem import Problem
@@ -27,11 +26,38 @@ def test_atol_scales_each_component_by_its_size():
     np.testing.assert_allclose(atol[10:], 1e-7 * v / length, rtol=1e-15)  # rad/s
 
 
-def test_a_step_never_jumps_half_the_thinnest_layer():
-    plate = {"name": "plate", "layers": [{"medium": "aluminium", "thickness": 0.01}]}
-    assert pencore.prepare("p2", plate).max_travel == pytest.approx(0.005)
-    half_space = pencore.prepare("p2", "soil")
-    assert half_space.max_travel == half_space.numerics.max_travel
+def test_thin_layers_are_the_layers_and_gaps_a_step_could_cross():
+    # plate 1 cm, gap 0.5 m, plate 1 um, backing 0.3 m: with max_travel 0.1 m the layers
+    # thinner than 0.2 m are thin; each carries its levels and half of the larger of
+    # its thickness and the shortest band
+    target = {
+        "name": "stack",
+        "layers": [
+            {"medium": "aluminium", "thickness": 0.01},
+            {"gap": 0.5},
+            {"medium": "aluminium", "thickness": 1e-6},
+            {"gap": 0.05},
+            {"medium": "aluminium", "thickness": 0.3},
+        ],
+    }
+    pr = pencore.prepare("p2", target)
+    rings = pr.loaded_rings
+    band = (rings[rings[:, 1] > 0, 4] / rings[rings[:, 1] > 0, 1]).min()
+    assert pr.band_length == band and 1e-3 < band < 1e-2  # m
+    np.testing.assert_allclose(
+        pr.thin_layers,
+        [
+            [0.0, -0.01, 0.005],
+            [-0.51, -0.510001, 0.5 * band],
+            [-0.510001, -0.560001, 0.025],
+        ],
+        rtol=0,
+        atol=1e-15,
+    )
+    assert pencore.prepare("p2", "soil").thin_layers.shape == (0, 3)
+    thick = {"name": "thick", "layers": [{"medium": "aluminium", "thickness": 0.3}]}
+    assert pencore.prepare("p2", thick).thin_layers.shape == (0, 3)
+    assert pencore.prepare("p2", thick, max_travel=0.2).thin_layers.shape == (1, 3)
 
 
 def test_friction_points_only_when_the_target_has_friction():

@@ -218,9 +218,9 @@ def test_cli_simulate_reports_the_residual_velocity(tmp_path, capsys):
 
 def test_plates_separated_by_a_wide_gap_act_one_after_the_other():
     # normal impact on two thin plates (2 cm, thinner than the default step travel of
-    # 0.1 m, which the solver caps at half the thinnest layer) 2 m apart, more than the
-    # body length: the second plate sees the residual speed of the first, so the stack's
-    # residual speed is the single plate's applied twice (to the integrators' 1e-3)
+    # 0.1 m, which the solver bounds near each) 2 m apart, more than the body length:
+    # the second plate sees the residual speed of the first, so the stack's residual
+    # speed is the single plate's applied twice (to the integrators' 1e-3)
     plate = Layer(CONCRETE, 0.02)
     stack = Target("stack", (plate, Layer.gap(2.0), plate))
     v1 = simulate("p2", slab(0.02), 300.0).attrs["residual_velocity"]

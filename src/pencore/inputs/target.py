@@ -281,6 +281,18 @@ class Target:
         return min(lay.thickness for lay in self.layers)
 
     @property
+    def levels(self) -> tuple[tuple[float, float], ...]:
+        """Top and bottom heights ``y`` (m) of every layer and gap, from the surface
+        ``y = 0`` down (the last bottom is ``-inf`` for a semi-infinite target)."""
+        out = []
+        top = 0.0
+        for lay in self.layers:
+            bottom = top - lay.thickness
+            out.append((top, bottom))
+            top = bottom
+        return tuple(out)
+
+    @property
     def finite(self) -> bool:
         """True when the last layer is finite (the target can be perforated)."""
         return math.isfinite(self.layers[-1].thickness)
@@ -383,13 +395,10 @@ class Target:
         bounds = np.zeros((n, WINDOW_COLUMNS if windowed else 2))
         coef = np.zeros((n, p))
         fric = np.empty((n, k, 2))
-        top = 0.0
         j = 0
         layers = self.layers
-        for i, lay in enumerate(layers):
-            bottom = top - lay.thickness
+        for i, (lay, (top, bottom)) in enumerate(zip(layers, self.levels, strict=True)):
             if lay.is_gap:
-                top = bottom
                 continue
             bounds[j, :2] = top, bottom
             if windowed:
@@ -412,6 +421,5 @@ class Target:
             for m in range(k):
                 mm = min(m, len(sp) - 1)
                 fric[j, m] = (sp[mm] + (m - mm) * 1.0, mu[mm])
-            top = bottom
             j += 1
         return bounds, coef, fric

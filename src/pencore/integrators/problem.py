@@ -89,11 +89,34 @@ class Problem:
         return self.numerics.n_gauss if not self.target.frictionless else 0
 
     @property
-    def max_travel(self) -> float:
-        """Largest centre-of-mass travel (m) of one step: ``numerics.max_travel``, and at
-        most half the thinnest layer, so that no step jumps over a thin plate or gap (no
-        change for half-spaces or layers thicker than twice ``max_travel``)."""
-        return min(self.numerics.max_travel, 0.5 * self.target.thinnest)
+    def band_length(self) -> float:
+        """Meridian length (m) of the shortest surface band (``w / r`` of the loaded
+        rings): the finest scale on which the contact loads vary as the body moves."""
+        rings = self.loaded_rings
+        r = rings[:, 1]
+        return float(np.min(rings[r > 0.0, 4] / r[r > 0.0]))
+
+    @property
+    def thin_layers(self) -> np.ndarray:
+        """The layers and gaps thinner than twice ``numerics.max_travel``, shape (k, 3):
+        top and bottom heights ``y`` (m) and the half-width ``max(thickness,
+        band_length) / 2`` (m), the most a step may move the body across one
+        (:func:`pencore.kernels.state.layer_travel_bound`). None for a half-space or
+        layers all thicker, whose steps are bounded by ``numerics.max_travel`` alone.
+
+        Half the thickness keeps a plate from being stepped over; a layer thinner than
+        the shortest band is resolved at the band scale, on which its load varies (each
+        band's share of a layer ramps over the band's height,
+        :func:`pencore.kernels.bands.band_half_height`), so a 1-um foil does not take a
+        million steps. The bound vanishes with the ring spacing."""
+        limit = 2.0 * self.numerics.max_travel
+        band = self.band_length
+        rows = [
+            (top, bottom, 0.5 * max(lay.thickness, band))
+            for lay, (top, bottom) in zip(self.target.layers, self.target.levels, strict=True)
+            if lay.thickness < limit
+        ]
+        return np.array(rows, dtype=float).reshape(len(rows), 3)
 
     @property
     def reach(self) -> float:

@@ -86,6 +86,7 @@ from pencore.kernels.state import (
     SI_N_RHS,
     SI_REV,
     STEP_UNDERFLOW,
+    layer_travel_bound,
     lu_factor,
     lu_solve,
     normalise_quaternion,
@@ -244,6 +245,7 @@ def integrate_chunk(
     eps,
     n_gauss,
     reach,
+    thin,
     model,
     jacobian_age=1,
     analytic=False,
@@ -254,7 +256,11 @@ def integrate_chunk(
     ``y`` (14,) and ``f0`` (its derivative) are updated in place, and so are the float
     state ``sf`` (time, next step, time of first contact, clearance, last error norm;
     indices ``SF_*``) and the integer state ``si`` (entered, reversed, right-hand-side
-    calls, rejected steps, Jacobians; indices ``SI_*``). ``model`` is the kernel tuple of
+    calls, rejected steps, Jacobians; indices ``SI_*``). ``reach`` (m) is the body's
+    largest distance from its centre of mass to a surface ring; ``thin`` (k, 2) holds
+    the top and bottom heights (m) of the target's thin layers and gaps, near which a step
+    is bounded so that it cannot carry the body over one
+    (:func:`pencore.kernels.state.layer_travel_bound`). ``model`` is the kernel tuple of
     :mod:`pencore.kernels.forces`; with the cavity shank model every accepted step extends its
     tip path (rejected steps do not), and the chunk ends early, to be called again with
     a larger path buffer, when the buffer is nearly full.
@@ -303,6 +309,11 @@ def integrate_chunk(
         if clear > 0.0:
             # free flight: do not step past the first touch of the surface
             hmax = min(hmax, max(clear, 1e-6 * reach) / max(speed + wmag * reach, 1e-3))
+        if thin.shape[0] > 0:
+            # near a thin layer or gap the body does not span: do not step over it
+            bound = layer_travel_bound(y, rings, thin)
+            if bound < np.inf:
+                hmax = min(hmax, bound / max(speed + wmag * reach, 1e-3))
         h = min(h, hmax, t_max - t)
         in_target = clear <= 0.0
         if age >= jacobian_age or in_target != jac_in_target:
@@ -425,7 +436,8 @@ def _integrate(
     max_steps = num.max_steps
     atol = problem.atol(velocity)
     h_init = 1e-7
-    max_travel = problem.max_travel
+    max_travel = num.max_travel
+    thin = problem.thin_layers
     stall_distance = problem.stall_distance(CHUNK_STEPS)
     mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss, model = problem.load_args()
     reach = problem.reach
@@ -447,7 +459,7 @@ def _integrate(
         ts, ys, code = integrate_chunk(
             y, f0, sf, si, n_max, t_max, rtol, atol, h_min, max_travel, v_stop,
             stop_at_reversal, mass, inertia, gravity, rings, bounds, coef, fric, eps,
-            n_gauss, reach, model, num.jacobian_age, analytic, guard.stop,
+            n_gauss, reach, thin, model, num.jacobian_age, analytic, guard.stop,
         )  # fmt: skip
         guard.check_interrupt()
         ts_parts.append(ts)

@@ -13,7 +13,10 @@ Differences from the compiled integrator, all below the error tolerance:
   reversal) are located by scipy's root finder instead of being taken at step ends;
 * the attitude quaternion is normalised inside the right-hand side rather than after each
   step;
-* the step bound ``max_travel`` (m) becomes a time bound ``max_travel / V0``.
+* the step bound ``max_travel`` (m) becomes a time bound ``max_travel / V0``; near a thin
+  layer the body does not span, the bound of
+  :func:`pencore.kernels.state.layer_travel_bound` is set as scipy's ``max_step`` before
+  every step (a subclass of the method that sets it; scipy reads it at every step).
 
 The shank ``"factor"`` model and the panel surface work here too; the cavity model does
 not (its nose-tip path grows at accepted steps, which ``solve_ivp`` does not expose).
@@ -25,12 +28,12 @@ import math
 from typing import Any
 
 import numpy as np
-from scipy.integrate import solve_ivp
+from scipy.integrate import BDF, OdeSolver, Radau, solve_ivp
 
 from pencore.integrators.driver import RunGuard, RunResult
 from pencore.integrators.problem import Problem
 from pencore.kernels.forces import rhs_model
-from pencore.kernels.state import body_top
+from pencore.kernels.state import body_top, layer_travel_bound
 
 __all__ = ["integrate_scipy"]
 
@@ -55,7 +58,8 @@ def integrate_scipy(
     method, t_max, rtol, v_stop = num.method, num.t_max, num.rtol, num.v_stop
     max_steps, max_wall = num.max_steps, num.max_wall
     atol = problem.atol(velocity)
-    max_travel = problem.max_travel
+    max_travel = num.max_travel
+    thin, reach = problem.thin_layers, problem.reach
     args = problem.load_args()
     mass, rings, bounds = problem.mass, args[3], problem.bounds
     # the 14th component is the work of the contact stresses (J): 1 % of rtol x KE0
@@ -104,16 +108,29 @@ def integrate_scipy(
     stopped = _event(slow, terminal=True, direction=-1.0)
     reversal = _event(rising, terminal=stop_at_reversal, direction=1.0)
     speed0 = math.sqrt(float(y0[7:10] @ y0[7:10]))
+    max_step = max_travel / max(speed0, 1e-3)
+
+    def step_bound(y: np.ndarray) -> float:
+        # the time bound of the next step: max_step, and near a thin layer the body
+        # does not span, the time any surface point needs to cross half of it
+        yn = state(y)
+        bound = float(compiled(layer_travel_bound, yn, rings, thin))
+        if not bound < math.inf:
+            return max_step
+        speed = math.sqrt(float(yn[7:10] @ yn[7:10]))
+        wmag = math.sqrt(float(yn[10:13] @ yn[10:13]))
+        return min(max_step, bound / max(speed + wmag * reach, 1e-3))
+
     try:
         with guard, np.errstate(over="ignore"):  # scipy's numerical Jacobian probes wide steps
             sol = solve_ivp(
                 f,
                 (0.0, t_max),
                 state(y0),
-                method=method,
+                method=_bounded(method, step_bound) if thin.shape[0] else method,
                 rtol=rtol,
                 atol=atol14,
-                max_step=max_travel / max(speed0, 1e-3),
+                max_step=max_step,
                 events=(contact, left, stopped, reversal)
                 + ((_event(cleared, terminal=True, direction=1.0),) if math.isfinite(rear) else ()),
             )
@@ -146,3 +163,17 @@ def _event(fun: Any, *, terminal: bool, direction: float) -> Any:
     fun_.terminal = terminal
     fun_.direction = direction
     return fun_
+
+
+def _bounded(method: str, bound: Any) -> type[OdeSolver]:
+    """scipy's ``method`` (``"Radau"`` or ``"BDF"``) with ``max_step`` set to
+    ``bound(y)`` (s) before every step."""
+    base = {"Radau": Radau, "BDF": BDF}[method]
+
+    class Bounded(base):  # type: ignore[misc, valid-type]
+        def _step_impl(self) -> tuple[bool, str | None]:
+            self.max_step = bound(self.y)
+            return super()._step_impl()
+
+    Bounded.__name__ = f"Bounded{method}"
+    return Bounded

@@ -2,9 +2,9 @@
 
 Outcome codes and the indices of the integrators' scratch arrays, the stopping test,
 and small helpers on the state vector: LU factorisation and solve of the 14 x 14
-Rosenbrock matrix, quaternion normalisation, the body's reach and top, and the
-perforation test. The state ``y`` is (x, y, z of the centre of mass (m), quaternion
-w, x, y, z, velocity (m/s), angular velocity in body axes (rad/s)).
+Rosenbrock matrix, quaternion normalisation, the body's reach and extent, the step bound
+near thin layers, and the perforation test. The state ``y`` is (x, y, z of the centre of
+mass (m), quaternion w, x, y, z, velocity (m/s), angular velocity in body axes (rad/s)).
 """
 
 from __future__ import annotations
@@ -112,8 +112,9 @@ def body_reach(rings):
 
 
 @nb.njit(cache=True)
-def body_top(y, rings):
-    """Height ``y`` (m) of the highest point of the surface bands in state ``y``."""
+def body_extent(y, rings):
+    """Heights ``y`` (m) of the lowest and the highest point of the surface bands in
+    state ``y``: ``(bottom, top)``."""
     n = math.sqrt(y[3] * y[3] + y[4] * y[4] + y[5] * y[5] + y[6] * y[6])
     w, x, yq, z = y[3] / n, y[4] / n, y[5] / n, y[6] / n
     r10 = 2 * (x * yq + w * z)
@@ -121,14 +122,50 @@ def body_top(y, rings):
     r12 = 2 * (yq * z - w * x)
     rk = math.sqrt(r11 * r11 + r12 * r12)
     top = -np.inf
+    bottom = np.inf
     for i in range(rings.shape[0]):
         r = rings[i, 1]
-        # the top of the band the ring stands for
+        # the top and bottom of the band the ring stands for
         hb = band_half_height(r10, rk, r, rings[i, 2], rings[i, 3], rings[i, 4])
         h = y[1] + r10 * rings[i, 0] + rk * r + hb
         if h > top:
             top = h
-    return top
+        h = y[1] + r10 * rings[i, 0] - rk * r - hb
+        if h < bottom:
+            bottom = h
+    return bottom, top
+
+
+@nb.njit(cache=True)
+def body_top(y, rings):
+    """Height ``y`` (m) of the highest point of the surface bands in state ``y``."""
+    return body_extent(y, rings)[1]
+
+
+@nb.njit(cache=True)
+def layer_travel_bound(y, rings, thin):
+    """Largest distance (m) a surface point may move in the next step near the target's
+    thin layers and gaps, so that no step carries the body over one or through one
+    unsampled.
+
+    ``thin`` (k, 3) holds each thin layer's top and bottom heights (m) and its
+    half-width ``h`` (m; :attr:`pencore.integrators.problem.Problem.thin_layers`). While
+    the body's surface bands span a layer (their height range overlaps it) the bound is
+    ``h``; a layer at distance ``d`` from the body allows ``d + h``, so the step that
+    reaches it ends at most ``h`` into it. ``inf`` when there is no thin layer."""
+    bound = np.inf
+    if thin.shape[0] == 0:
+        return bound
+    bottom, top = body_extent(y, rings)
+    for k in range(thin.shape[0]):
+        b = thin[k, 2]
+        if bottom > thin[k, 0]:
+            b += bottom - thin[k, 0]  # the layer lies below the body
+        elif top < thin[k, 1]:
+            b += thin[k, 1] - top  # the layer lies above the body
+        if b < bound:
+            bound = b
+    return bound
 
 
 @nb.njit(cache=True)

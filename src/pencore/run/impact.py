@@ -255,7 +255,7 @@ def _impact(
     t0 = time.perf_counter()
     run = _run(pr, y0, velocity, stop_at_reversal)
     wall = time.perf_counter() - t0
-    _raise_on_failure(run, num, pr)
+    _raise_on_failure(run, num)
     return pr, run, wall, (velocity, obliquity, yaw, omega, azimuth, start)
 
 
@@ -340,15 +340,9 @@ def compiled_in_cache(dispatcher: Any) -> bool:
     return any(folder.glob(f"{stem}.py*.nbi"))
 
 
-def _small_step_cause(num: Numerics, pr: Problem | None) -> str:
-    """Why a run takes steps too small to finish, in words: a thin layer bounding the
-    step, a tolerance near round-off, the discontinuous law, or else chatter."""
-    if pr is not None and pr.max_travel < num.max_travel:
-        return (
-            f"each step moves the body at most {pr.max_travel:.3g} m, half the thinnest "
-            f"layer ({pr.target.thinnest:.3g} m), too little for a run of this length "
-            "(thicken the layer or raise numerics max_steps)"
-        )
+def _small_step_cause(num: Numerics) -> str:
+    """Why a run takes steps too small to finish, in words: a tolerance near round-off,
+    the discontinuous law, or else chatter."""
     if num.rtol < 1e-9:
         return f"rtol = {num.rtol:g} is near round-off (loosen rtol)"
     if num.eps == 0.0:
@@ -356,9 +350,9 @@ def _small_step_cause(num: Numerics, pr: Problem | None) -> str:
     return "the contact law is too stiff or chatters"
 
 
-def _raise_on_failure(run: RunResult, num: Numerics, pr: Problem | None = None) -> None:
+def _raise_on_failure(run: RunResult, num: Numerics) -> None:
     """A :class:`SolverError` naming the cause and the last state, for failed runs."""
-    small = _small_step_cause(num, pr)
+    small = _small_step_cause(num)
     causes = {
         "step_limit": f"step budget of {num.max_steps} steps used up (raise numerics "
         "max_steps, or loosen rtol)",
