@@ -82,7 +82,7 @@ def main() -> int:
     with tempfile.TemporaryDirectory() as tmp:
         fresh = Path(tmp) / "fresh.nc"
         subprocess.run(
-            [sys.executable, "-m", "pencore.cli", "simulate", "--projectile", "p2",
+            [sys.executable, "-m", "pencore", "simulate", "--projectile", "p2",
              "--target", "soil", "--velocity", "300", "--out", str(fresh)],
             check=True, capture_output=True,
         )  # fmt: skip

@@ -20,6 +20,7 @@ ResultError        a result file cannot be read (corrupt or truncated)
 from __future__ import annotations
 
 __all__ = [
+    "INTERRUPTED",
     "InputError",
     "GeometryError",
     "TargetError",
@@ -28,6 +29,9 @@ __all__ = [
     "WriteError",
     "ResultError",
 ]
+
+#: What the command line says when Ctrl-C ends it (exit status 130).
+INTERRUPTED = "interrupted (Ctrl-C); nothing was written"
 
 
 class InputError(ValueError):

@@ -21,9 +21,9 @@ DEPTH_RE = re.compile(r"^penetration depth:\s+(\S+) m$", re.MULTILINE)
 
 
 def run_cli(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
-    """Run ``python -m pencore.cli`` in a fresh interpreter."""
+    """Run ``python -m pencore`` (the ``pencore`` command) in a fresh interpreter."""
     return subprocess.run(
-        [sys.executable, "-m", "pencore.cli", *args],
+        [sys.executable, "-m", "pencore", *args],
         capture_output=True,
         text=True,
         cwd=cwd,
@@ -435,7 +435,7 @@ def test_output_into_a_closed_pipe_is_quiet():
     os.close(read_end)
     try:
         proc = subprocess.run(
-            [sys.executable, "-m", "pencore.cli", "list"],
+            [sys.executable, "-m", "pencore", "list"],
             stdout=write_end, stderr=subprocess.PIPE, timeout=120,
         )  # fmt: skip
     finally:

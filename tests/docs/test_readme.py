@@ -59,7 +59,7 @@ def test_every_number_in_the_prose_is_checked():
     assert prose.count(citation) >= 1
     prose = prose.replace(citation, "").replace("3-D", "")
     bad = subprocess.run(
-        [sys.executable, "-m", "pencore.cli", "simulate", "--projectile", "p2", "--target", "soil"]
+        [sys.executable, "-m", "pencore", "simulate", "--projectile", "p2", "--target", "soil"]
         + ["--velocity", "-1"],
         capture_output=True,
         text=True,

@@ -357,7 +357,7 @@ def test_solver_failure_is_one_line_with_status_1(capsys):
 def test_no_traceback_from_a_real_process(tmp_path, args):
     """The same promise at the process level (interpreter start-up and exit included)."""
     proc = subprocess.run(
-        [sys.executable, "-m", "pencore.cli", *args],
+        [sys.executable, "-m", "pencore", *args],
         capture_output=True, text=True, cwd=tmp_path, timeout=120,
     )  # fmt: skip
     assert proc.returncode == 2

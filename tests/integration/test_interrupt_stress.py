@@ -72,7 +72,7 @@ def test_cli_ctrl_c_ends_any_integrator_at_once(tmp_path, method):
     target = _rough_target(tmp_path)
     out = tmp_path / "run.nc"
     cmd = [
-        sys.executable, "-c", "import sys; from pencore.cli import main; sys.exit(main())",
+        sys.executable, "-m", "pencore",
         "simulate", "--projectile", "p2", "--target", str(target), "--velocity", "1500",
         "--obliquity", "45", "--out", str(out), "--numerics", f"method={method}",
         *(a for k, v in HEAVY.items() for a in ("--numerics", f"{k}={v}")),

@@ -71,7 +71,7 @@ def test_cli_on_a_full_disk_exits_1_with_one_line(tiny_disk):
     # fill the disk first, so the trajectory file cannot fit
     (tiny_disk / "filler").write_bytes(b"x" * (250 * 1024))
     r = subprocess.run(
-        [sys.executable, "-m", "pencore.cli", "simulate", "--projectile", "p2", "--target",
+        [sys.executable, "-m", "pencore", "simulate", "--projectile", "p2", "--target",
          "soil", "--velocity", "280", "--out", str(tiny_disk / "run.nc")],
         capture_output=True, text=True, timeout=300,
     )  # fmt: skip

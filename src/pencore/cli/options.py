@@ -20,7 +20,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any, NoReturn
 
-from pencore.errors import InputError, WriteError
+from pencore.errors import INTERRUPTED, InputError, WriteError
 from pencore.inputs.gate import brief, brief_path, load_yaml_text
 from pencore.inputs.limits import number
 from pencore.io.atomic import check_replaceable, describe_os_error
@@ -44,9 +44,6 @@ __all__ = [
 ]
 
 PROG = "pencore"
-
-#: What the command line says when Ctrl-C ends it (exit status 130).
-INTERRUPTED = "interrupted (Ctrl-C); nothing was written"
 
 
 def exit_at_once_on_interrupt() -> None:
