@@ -585,10 +585,19 @@ def test_slow_impact_from_the_default_start_is_run():
     assert ds.attrs["outcome"] == "stopped"
 
 
-def test_tiny_t_max_from_the_default_start_names_t_max():
-    text = _api(lambda: pencore.simulate("p2", "soil", 300.0, t_max=1e-12))
-    assert "t_max = 1e-12 s ends before the body touches" in text
-    assert "start height" not in text
+def test_tiny_t_max_from_the_default_start_is_run():
+    # the default start touches the target, so any t_max is a run: it ends by the time
+    # limit after the one step t_max allows, not by a refusal
+    ds = pencore.simulate("p2", "soil", 300.0, t_max=1e-12)
+    assert ds.attrs["outcome"] == "time_limit"
+    assert float(ds.time[-1]) == 1e-12 and ds.sizes["time"] == 2
+    assert float(ds.speed[-1]) == pytest.approx(300.0, rel=1e-9)
+
+
+def test_a_start_too_high_for_t_max_is_refused_naming_the_start():
+    text = _api(lambda: pencore.simulate("p2", "soil", 300.0, start=(0.0, 10.0, 0.0), t_max=1e-3))
+    assert "start height 10.35 m (centre of mass) is too high" in text
+    assert "t_max = 0.001 s" in text
 
 
 def test_a_one_micron_foil_is_perforated(tmp_path, capsys):

@@ -251,7 +251,8 @@ def _impact(
         spin_about,
     )
     # the nose tip reaches further than the outermost ring (up to ~1.5 mm on an ogive)
-    _check_reaches_target(y0, max(body_reach(pr.rings), pr.lc), num, start is None)
+    if start is not None:
+        _check_reaches_target(y0, max(body_reach(pr.rings), pr.lc), num)
     t0 = time.perf_counter()
     run = _run(pr, y0, velocity, stop_at_reversal)
     wall = time.perf_counter() - t0
