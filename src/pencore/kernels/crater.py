@@ -24,8 +24,9 @@ Element by element: every element's stress is the DAFL's (its own normal velocit
 normal) times one factor of the layer, ``lam(z, V_a) = g(s) F_full(V_a) / R_ref(z, V_a)``,
 with ``z`` the tip's depth below the layer's top face (``s = z / (k d)``), ``V_a`` the
 velocity component along the body axis, and ``R_ref`` the DAFL axial resistance of the
-same body in *normal* entry at tip depth ``z`` and speed ``V_a`` (evaluated by the kernel
-itself on that reference state). So:
+same body in *normal* entry at tip depth ``z`` and speed ``V_a`` into a half-space of the
+layer's medium (evaluated by the kernel itself on that reference state,
+:func:`reference_state`, :func:`reference_bounds`). So:
 
 * normal entry: the reference state is the state, and the axial force is
   ``g(s) F_full(V) = c z``, Forrestal's law, whatever part of the nose is embedded;
@@ -33,6 +34,9 @@ itself on that reference state). So:
   entry at the same tip depth and axial speed; the distribution of the load over the
   elements (its direction, its centre of pressure) is the DAFL's; the axial load is not
   ``c z`` (a tilted nose has a different part of itself below a given tip depth);
+* a plate thinner than the embedded part of the nose: each element carries the
+  half-space's factor, on the load the plate really takes, so a thin plate's crater
+  load vanishes with its thickness (the plate is a slice of the half-space's crater);
 * ``s >= 1``: ``lam = 1`` (the DAFL unchanged); tip above the face: the deepest point's
   depth stands in for ``z`` (a body touching side-first); ``z <= 0``: ``lam = 0``.
 
@@ -53,6 +57,7 @@ __all__ = [
     "crater_shape",
     "crater_depth_and_speed",
     "reference_state",
+    "reference_bounds",
     "crater_factor",
 ]
 
@@ -114,6 +119,20 @@ def reference_state(y, bounds, lay, z, va):
     yr[11] = 0.0
     yr[12] = 0.0
     return yr
+
+
+@nb.njit(cache=True)
+def reference_bounds(bounds):
+    """The one-layer ``bounds`` (1, 10) as a half-space of the same medium: no rear face
+    (bottom ``-inf``, no free-surface zone or plastic-zone ratio at it). Forrestal's
+    ``c z`` is a half-space's force, so the reference resistance of a plate is that of
+    its medium's half-space: a plate thinner than the nose's embedded part then carries
+    the factor the half-space would, on the load it really takes."""
+    ref = bounds.copy()
+    ref[0, 1] = -math.inf
+    ref[0, 4] = 0.0
+    ref[0, 7] = 0.0
+    return ref
 
 
 @nb.njit(cache=True)

@@ -30,6 +30,7 @@ from pencore.kernels.crater import (
     crater_depth_and_speed,
     crater_factor,
     has_crater,
+    reference_bounds,
     reference_state,
 )
 from pencore.kernels.dynamics import contact_loads, equations_of_motion, quat_to_matrix
@@ -62,10 +63,11 @@ def model_loads(y, rings, bounds, coef, fric, eps, n_gauss, model):
             z, va = crater_depth_and_speed(y, rot, b, 0, c1)
             if z < b[0, 2]:
                 yr = reference_state(y, b, 0, z, va)
-                if np.array_equal(yr[1:13], y[1:13]):
+                if not (b[0, 1] > -np.inf) and np.array_equal(yr[1:13], y[1:13]):
                     ref = f1[0]  # the state is its own normal-entry reference
                 else:
-                    ref = _plain_loads(yr, rings, b, c, fr, eps, n_gauss, model)[0][0]
+                    bh = reference_bounds(b)  # the medium's half-space
+                    ref = _plain_loads(yr, rings, bh, c, fr, eps, n_gauss, model)[0][0]
                 lam = crater_factor(y, rings, b, c, 0, z, va, ref)
         for k in range(3):
             fb[k] += lam * f1[k]
