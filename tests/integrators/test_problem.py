@@ -79,3 +79,15 @@ def test_a_shank_model_loads_its_own_rings():
     pr = pencore.prepare("p4", "soil", shank="cavity")
     assert pr.model is not None and pr.loaded_rings is pr.kernel_rings
     assert pr.load_args()[-1] is pr.model
+
+
+def test_stall_distance_allows_for_steps_a_thin_layer_bounds():
+    # 500 steps that each move the body by a thin layer's half-width are not a stall:
+    # a 1-um foil under a fine ring mesh bounds the steps to half the shortest band
+    foil = {"name": "foil", "layers": [{"medium": "aluminium", "thickness": 1e-6}]}
+    coarse = pencore.prepare("p2", foil)
+    assert coarse.stall_distance(500) == 1e-2 * coarse.projectile.length  # unchanged
+    fine = pencore.prepare("p2", foil, n_nose=10_000, n_shank=10_000)
+    half = float(fine.thin_layers[:, 2].min())
+    assert half == 0.5 * fine.band_length
+    assert fine.stall_distance(500) == 0.1 * 500 * half < 1e-2 * fine.projectile.length

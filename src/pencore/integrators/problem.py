@@ -153,5 +153,11 @@ class Problem:
 
     def stall_distance(self, chunk_steps: int) -> float:
         """Distance (m) under which ``chunk_steps`` accepted steps count as stalled: 1 % of
-        the body length, unless the user asked for steps that short."""
-        return min(1e-2 * self.projectile.length, 0.1 * chunk_steps * self.numerics.max_travel)
+        the body length, unless the steps are bounded that short, by the user's
+        ``max_travel`` or near a thin layer (the smallest half-width of
+        :attr:`thin_layers`: a fine ring mesh through a foil)."""
+        travel = self.numerics.max_travel
+        thin = self.thin_layers
+        if thin.shape[0]:
+            travel = min(travel, float(thin[:, 2].min()))
+        return min(1e-2 * self.projectile.length, 0.1 * chunk_steps * travel)
