@@ -349,8 +349,19 @@ def _out_cases(folder: Path) -> dict[str, tuple[list[str], str, int]]:
     os.link(target, folder / "link.nc")
     os.mkfifo(folder / "fifo.nc")
     (folder / "dir.nc").mkdir()
+    (folder / "other.txt").write_text("kept\n")
+    os.symlink("other.txt", folder / "sym.nc")
+    os.symlink("nowhere.nc", folder / "dangling.nc")
     base = ["simulate", "--projectile", "p2", "--target", str(target), "--velocity", "300"]
+    long_name = "o" * 300 + ".nc"
     return {
+        "out-is-symlink": ([*base, "--out", str(folder / "sym.nc")], "symbolic link", 2),
+        "out-is-dangling-symlink": (
+            [*base, "--out", str(folder / "dangling.nc")],
+            "symbolic link",
+            2,
+        ),
+        "out-name-too-long": ([*base, "--out", str(folder / long_name)], "too long", 2),
         "out-is-input": ([*base, "--out", str(target)], "input of this run", 2),
         "out-is-hard-link-of-input": ([*base, "--out", str(folder / "link.nc")], "input", 2),
         "out-is-fifo": ([*base, "--out", str(folder / "fifo.nc")], "a FIFO", 2),
@@ -363,7 +374,8 @@ def _out_cases(folder: Path) -> dict[str, tuple[list[str], str, int]]:
 
 OUT_CASES = [
     "out-is-input", "out-is-hard-link-of-input", "out-is-fifo", "out-is-directory",
-    "out-is-dev-null", "fit-table3-to-dev-null", "fit-table3-to-fifo",
+    "out-is-dev-null", "fit-table3-to-dev-null", "fit-table3-to-fifo", "out-is-symlink",
+    "out-is-dangling-symlink", "out-name-too-long",
 ]  # fmt: skip
 
 
@@ -380,6 +392,8 @@ def test_cli_refuses_to_replace(case, capsys, tmp_path, monkeypatch):
     assert len(err) == 1 and err[0].startswith("pencore: error: "), err
     assert word in err[0], err
     assert (tmp_path / "t.nc").read_text() == before  # the input is untouched
+    assert (tmp_path / "other.txt").read_text() == "kept\n"
+    assert (tmp_path / "sym.nc").is_symlink() and (tmp_path / "dangling.nc").is_symlink()
     assert not [n for n in os.listdir(tmp_path) if "pencore-tmp" in n or "probe" in n]
 
 
@@ -434,7 +448,7 @@ def test_vci_fraction_refused(fraction):
     [(">/dev/full", "cannot write to standard output"), (">&-", "standard output is closed")],
 )
 def test_cli_stdout_that_cannot_be_written(redirect, word, tmp_path):
-    cmd = f"{sys.executable} -c 'import sys; from pencore.cli import main; sys.exit(main())' list"
+    cmd = f"{sys.executable} -m pencore list"
     t0 = time.monotonic()
     proc = subprocess.run(
         f"{cmd} {redirect}", shell=True, cwd=tmp_path, capture_output=True, text=True,
@@ -445,6 +459,36 @@ def test_cli_stdout_that_cannot_be_written(redirect, word, tmp_path):
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1 and word in lines[0], proc.stderr
     assert "Traceback" not in proc.stderr
+
+
+@pytest.mark.parametrize("args", ["--version", "--help", "simulate --help"])
+def test_cli_help_and_version_to_a_full_device(args, tmp_path):
+    # argparse swallows a failed write of help or version text: the command says so
+    proc = subprocess.run(
+        f"{sys.executable} -m pencore {args} >/dev/full", shell=True, cwd=tmp_path,
+        capture_output=True, text=True, timeout=120,
+    )  # fmt: skip
+    assert proc.returncode == 1
+    assert proc.stderr.strip().splitlines() == [
+        "pencore: error: cannot write to standard output: disk full"
+    ]
+
+
+@pytest.mark.parametrize("role", ["--projectile", "--target"])
+@pytest.mark.parametrize("length", [256, 100_000])
+def test_cli_names_longer_than_a_file_name_can_be(role, length, capsys, tmp_path, monkeypatch):
+    # no file system can look such a name up (ENAMETOOLONG): it is an unknown name
+    monkeypatch.chdir(tmp_path)
+    argv = ["simulate", "--projectile", "p2", "--target", "soil", "--velocity", "300"]
+    argv[argv.index(role) + 1] = "x" * length
+    status, line = _cli(argv, capsys, tmp_path)
+    assert status == 2 and f"unknown {role[2:]}" in line
+
+
+def test_api_names_with_a_nul_or_too_long():
+    assert "NUL" in _api(lambda: pencore.get_target("a\x00b.yaml"))
+    assert "unknown target" in _api(lambda: pencore.get_target("s" * 300))
+    assert "unknown projectile" in _api(lambda: pencore.get_projectile("p" * 300))
 
 
 # ------------------------------------------------------------ valid edge inputs

@@ -185,3 +185,18 @@ def test_ctrl_c_during_a_write_passes_through_and_cleans_up(tmp_path):
         tmp.write_bytes(b"partial")
         raise KeyboardInterrupt
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("points_to", ["other.txt", "nowhere.nc"])
+def test_a_symbolic_link_is_not_replaced(tmp_path, points_to):
+    # renaming onto a link replaces the link itself: refused, link and file kept
+    from pencore.io.atomic import check_replaceable
+
+    (tmp_path / "other.txt").write_text("kept\n")
+    link = tmp_path / "out.nc"
+    os.symlink(points_to, link)
+    with pytest.raises(WriteError, match=f"symbolic link \\(to '{points_to}'\\)"):
+        check_replaceable(link)
+    assert link.is_symlink() and os.readlink(link) == points_to
+    assert (tmp_path / "other.txt").read_text() == "kept\n"
+    check_replaceable(tmp_path / "other.txt")  # a regular file may be replaced

@@ -82,7 +82,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help, --version, usage errors
-        return exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 2)
+        status = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 2)
+        return _flushed(status)
+    except OSError as exc:  # help or version text that standard output did not take
+        return _flushed(0, exc)
     if sys.stdout is None:  # started with standard output closed (`pencore ... >&-`)
         print(f"{PROG}: error: standard output is closed; nothing was run", file=sys.stderr)
         return 1
@@ -155,6 +158,29 @@ class _GuardedStdout:
 
     def __getattr__(self, name: str) -> object:
         return getattr(self._stream, name)
+
+
+def _flushed(status: int, failed: OSError | None = None) -> int:
+    """``status`` once what argparse printed (help, version) has reached standard output;
+    141 when the reader went away, 1 with one line on stderr when the write failed
+    (``failed``: the write already failed so)."""
+    if sys.stdout is None:
+        return status
+    try:
+        if failed is not None:
+            raise failed
+        sys.stdout.flush()
+    except BrokenPipeError:
+        _silence_stdout(sys.stdout)
+        return 141
+    except OSError as exc:
+        _silence_stdout(sys.stdout)
+        print(
+            f"{PROG}: error: cannot write to standard output: {describe_os_error(exc)}",
+            file=sys.stderr,
+        )
+        return 1
+    return status
 
 
 def _silence_stdout(stream: object) -> None:

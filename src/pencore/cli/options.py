@@ -15,6 +15,7 @@ import argparse
 import errno
 import math
 import os
+import sys
 import tempfile
 from collections.abc import Callable, Sequence
 from pathlib import Path
@@ -77,11 +78,19 @@ class Parser(argparse.ArgumentParser):
     """An :class:`argparse.ArgumentParser` whose usage errors are one line.
 
     ``error`` prints ``pencore: error: <message> (see '<prog> --help')`` on stderr and
-    exits with status 2, instead of argparse's usage block.
+    exits with status 2, instead of argparse's usage block. Help and version text that
+    cannot be written to standard output (a full device) raise the ``OSError`` that
+    argparse would swallow, so that the command line reports it.
     """
 
     def error(self, message: str) -> NoReturn:
         self.exit(2, f"{PROG}: error: {one_line(message)} (see '{self.prog} --help')\n")
+
+    def _print_message(self, message: str, file: Any = None) -> None:
+        if message and file is not None and file is sys.stdout:
+            file.write(message)
+            return
+        super()._print_message(message, file)
 
 
 def one_line(text: str) -> str:
@@ -271,7 +280,12 @@ def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
     path = Path(out)
     if path.suffix != ".nc":
         raise CommandFailure(f"output file {brief_path(out)} must end in .nc", 2)
-    if path.is_dir():
+    try:
+        is_dir = path.is_dir()
+    except (OSError, ValueError) as exc:  # a name too long to look up, a NUL in it
+        cause = describe_os_error(exc) if isinstance(exc, OSError) else "a NUL character"
+        raise CommandFailure(f"output file {brief_path(out)}: {cause}", 2) from None
+    if is_dir:
         raise CommandFailure(
             f"output file {brief_path(out)} is a directory; give a FILE.nc path", 2
         )

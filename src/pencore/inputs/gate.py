@@ -203,6 +203,8 @@ def read_yaml(path: str | os.PathLike[str], what: str) -> Any:
         st = os.stat(path)
     except OSError as exc:
         raise InputError(f"cannot read {name}: {exc.strerror or exc}") from None
+    except ValueError:  # an embedded NUL
+        raise InputError(f"cannot read {name}: the name holds a NUL character") from None
     if not stat.S_ISREG(st.st_mode):
         raise InputError(f"{name} is not a regular file ({file_kind(st.st_mode)})")
     try:

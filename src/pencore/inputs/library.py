@@ -444,7 +444,15 @@ def _from_yaml_file(spec: str, what: str, build: Any) -> Any:
 
 
 def _looks_like_path(s: str) -> bool:
-    return s.endswith((".yaml", ".yml")) or "/" in s
+    """Whether ``s`` names a YAML file: it ends in .yaml/.yml, holds a ``/``, or is an
+    existing file (a name the system cannot even look up, e.g. longer than the file
+    system allows, is not one)."""
+    if s.endswith((".yaml", ".yml")) or "/" in s:
+        return True
+    try:
+        return Path(s).is_file()
+    except (OSError, ValueError):  # ENAMETOOLONG, ELOOP, an embedded NUL
+        return False
 
 
 def get_projectile(spec: str | Projectile | dict[str, Any]) -> Projectile:
@@ -461,7 +469,7 @@ def get_projectile(spec: str | Projectile | dict[str, Any]) -> Projectile:
     named = _named_projectiles()
     if spec in named:
         return named[spec]
-    if _looks_like_path(spec) or Path(spec).is_file():
+    if _looks_like_path(spec):
         return _from_yaml_file(spec, "projectile", projectile_from_dict)
     raise InputError(
         f"unknown projectile {brief(spec)}; use one of {', '.join(sorted(named))} or a YAML file"
@@ -483,6 +491,6 @@ def get_target(spec: str | Target | Medium | dict[str, Any]) -> Target:
         )
     if spec in MEDIA:
         return Target.half_space(MEDIA[spec])
-    if _looks_like_path(spec) or Path(spec).is_file():
+    if _looks_like_path(spec):
         return _from_yaml_file(spec, "target", target_from_dict)
     raise InputError(f"unknown target {brief(spec)}; use one of {', '.join(MEDIA)} or a YAML file")

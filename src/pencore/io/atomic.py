@@ -121,11 +121,21 @@ def check_replaceable(
         One line naming the path and what it is.
     """
     try:
-        st = os.stat(path)
+        st = os.lstat(path)
     except (FileNotFoundError, NotADirectoryError):  # nothing there to replace
         return
     except OSError as exc:
         raise WriteError(f"cannot write {_quote(path)}: {describe_os_error(exc)}") from None
+    except ValueError:  # an embedded NUL
+        raise WriteError(f"cannot write {_quote(path)}: the name holds a NUL character") from None
+    if stat.S_ISLNK(st.st_mode):
+        # renaming onto it would replace the link itself, not the file it points to
+        raise WriteError(
+            f"cannot write {_quote(path)}: it is a symbolic link (to "
+            f"{_quote(os.readlink(path))}); only a regular file is replaced: give the file "
+            "it points to, or another name",
+            errno.EEXIST,
+        )
     if not stat.S_ISREG(st.st_mode):
         raise WriteError(
             f"cannot write {_quote(path)}: it is {file_kind(st.st_mode)}, not a regular file; "
