@@ -305,6 +305,9 @@ def numbers() -> dict[str, str]:
     from pencore.inputs.numerics import Numerics
 
     out["max_travel_m"] = _fmt(Numerics().max_travel)
+    from pencore.inputs.numerics import CREEP_FACTOR
+
+    out["creep_factor"] = _fmt(CREEP_FACTOR)
     out["band_p2_mm"] = _fmt(1e3 * pencore.prepare("p2", "soil").band_length, 2)
     from pencore import analysis
 

@@ -485,6 +485,21 @@ def test_cli_names_longer_than_a_file_name_can_be(role, length, capsys, tmp_path
     assert status == 2 and f"unknown {role[2:]}" in line
 
 
+def test_v_stop_below_the_creep_of_the_smoothed_step_is_refused(capsys, tmp_path, monkeypatch):
+    # a body at rest creeps back out under the smoothed contact step (eps > 0): with
+    # v_stop = 1e-300 a stopped projectile drifted out of a plate and ended `exited`
+    assert "v_stop = 1e-300 m/s is below 10 eps" in _api(
+        lambda: pencore.simulate("p2", "soil", 60.0, v_stop=1e-300)
+    )
+    monkeypatch.chdir(tmp_path)
+    status, line = _cli([*SIM, "--velocity", "60", "--numerics", "v_stop=0.001"], capsys, tmp_path)
+    assert status == 2 and "v_stop = 0.001 m/s" in line
+    # the sharp law (eps = 0) has no creep, and v_stop = 10 eps is accepted
+    pencore.prepare("p2", "soil", eps=0.0, v_stop=1e-300)
+    plate = {"name": "plate", "layers": [{"medium": "aluminium", "thickness": 0.005}]}
+    assert pencore.simulate("p2", plate, 60.0, v_stop=0.01, t_max=100).attrs["outcome"] == "stopped"
+
+
 def test_api_names_with_a_nul_or_too_long():
     assert "NUL" in _api(lambda: pencore.get_target("a\x00b.yaml"))
     assert "unknown target" in _api(lambda: pencore.get_target("s" * 300))
