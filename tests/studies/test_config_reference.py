@@ -144,6 +144,11 @@ def _probe_config(path: str, value: float) -> dict | None:
     for case in holder.get("cases", []) if key == "velocities_m_s" else []:
         case.pop("v_min", None)
         case.pop("v_max", None)
+    # v_stop >= 10 eps when eps > 0 (a check across keys): the probed key alone decides
+    if key == "v_stop":
+        holder["eps"] = 0.0
+    elif key == "eps":
+        holder["v_stop"] = LIMITS["v_stop"].hi
     if isinstance(current, dict):
         if "dist" in current:
             return None  # distributions are checked as a whole (min < max, sd > 0)
