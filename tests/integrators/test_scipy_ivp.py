@@ -107,6 +107,7 @@ def test_budget_failure_reports_the_last_accepted_step():
     with pytest.raises(pencore.SolverError) as info:
         pencore.simulate("p2", "soil", 300.0, method="Radau", max_steps=max_steps)
     msg = str(info.value)
+    assert f"step budget of {max_steps} steps ({CALLS_PER_STEP * max_steps} right-hand" in msg
     m = re.search(
         r"at t = (\S+) s after (\d+) steps the centre of mass was at "
         r"\((\S+), (\S+), (\S+)\) m moving at (\S+) m/s$",
