@@ -336,6 +336,27 @@ def test_simulate_all_options_in_process(tmp_path, capsys):
     assert (out.stat().st_mode & 0o777) != 0o600  # not the private mode of a temp file
 
 
+def test_a_vertical_path_prints_minus_infinity_whatever_the_round_off(tmp_path, capsys):
+    """Radau through a 1e-12 m foil at normal incidence ends with a horizontal velocity of
+    round-off whose vy / vx is positive; the summary shows the path going down."""
+    foil = write(
+        tmp_path / "foil.yaml",
+        "name: foil\nlayers:\n  - medium: aluminium\n    thickness: 1.0e-12\n",
+    )
+    rc = main(
+        [
+            "simulate", "--projectile", "p2", "--target", str(foil), "--velocity", "300",
+            "--numerics", "method=Radau",
+        ]
+    )  # fmt: skip
+    assert rc == 0
+    text = capsys.readouterr().out
+    assert re.search(r"^outcome:\s+perforated$", text, re.MULTILINE), text
+    assert re.search(
+        r"^final slope dy/dx:\s+-inf \(path essentially vertical\)$", text, re.MULTILINE
+    ), text
+
+
 # ---------------------------------------------------------------- help, version, others
 
 

@@ -2,6 +2,7 @@
 side, and itself in another process (bit-for-bit)."""
 
 import json
+import re
 import subprocess
 import sys
 
@@ -9,6 +10,7 @@ import numpy as np
 import pytest
 
 import pencore
+from pencore.integrators.scipy_ivp import CALLS_PER_STEP
 
 CASES = [
     ("p2", dict(velocity=280.0)),
@@ -94,3 +96,28 @@ def test_reference_reports_the_same_fields():
     assert set(a.variables) == set(b.variables)
     assert b.attrs["t_first_contact_s"] >= 0.0
     assert np.all(np.diff(b.time.values) > 0)
+
+
+def test_budget_failure_reports_the_last_accepted_step():
+    """The step budget is enforced inside the right-hand side; the message reports the
+    last step accepted before it ran out (time, count, position, speed), which is the
+    same step of the same run without the budget, and no more steps than the calls allow."""
+    full = pencore.simulate("p2", "soil", 300.0, method="Radau")
+    max_steps = 10
+    with pytest.raises(pencore.SolverError) as info:
+        pencore.simulate("p2", "soil", 300.0, method="Radau", max_steps=max_steps)
+    msg = str(info.value)
+    assert f"step budget of {max_steps} steps ({CALLS_PER_STEP * max_steps} right-hand" in msg
+    m = re.search(
+        r"at t = (\S+) s after (\d+) steps the centre of mass was at "
+        r"\((\S+), (\S+), (\S+)\) m moving at (\S+) m/s$",
+        msg,
+    )
+    assert m is not None, msg
+    t, n, cm_y, speed = float(m[1]), int(m[2]), float(m[4]), float(m[6])
+    assert 0 < n <= CALLS_PER_STEP * max_steps
+    assert n < full.sizes["time"] - 1
+    # printed to 4 significant digits
+    assert t == pytest.approx(float(full.time[n]), rel=1e-3)
+    assert cm_y == pytest.approx(float(full.cm_y[n]), rel=1e-3)
+    assert speed == pytest.approx(float(full.speed[n]), rel=1e-3)

@@ -16,7 +16,10 @@ Differences from the compiled integrator, all below the error tolerance:
 * the step bound ``max_travel`` (m) becomes a time bound ``max_travel / V0``; near a thin
   layer the body does not span, the bound of
   :func:`pencore.kernels.state.layer_travel_bound` is set as scipy's ``max_step`` before
-  every step (a subclass of the method that sets it; scipy reads it at every step).
+  every step (a subclass of the method that sets it; scipy reads it at every step);
+* the step budget ``max_steps`` counts right-hand-side calls, :data:`CALLS_PER_STEP` to a
+  step, and is enforced inside the right-hand side; the same subclass records every
+  accepted step, so a run that ends on a budget reports where it got to.
 
 The shank ``"factor"`` model and the panel surface work here too; the cavity model does
 not (its nose-tip path grows at accepted steps, which ``solve_ivp`` does not expose).
@@ -35,7 +38,10 @@ from pencore.integrators.problem import Problem
 from pencore.kernels.forces import rhs_model
 from pencore.kernels.state import body_top, layer_travel_bound
 
-__all__ = ["integrate_scipy"]
+__all__ = ["CALLS_PER_STEP", "integrate_scipy"]
+
+#: Right-hand-side calls allowed per step of the budget ``numerics.max_steps``.
+CALLS_PER_STEP = 20
 
 
 def integrate_scipy(
@@ -45,10 +51,12 @@ def integrate_scipy(
 
     Parameters are those of :func:`pencore.integrators.rosenbrock.integrate`; the method
     is ``problem.numerics.method`` (``"Radau"`` or ``"BDF"``); ``numerics.max_steps`` and
-    ``numerics.max_wall`` bound the number of right-hand-side calls / 20 and the wall
-    time (looked at before every call). Every compiled call holds SIGINT and is followed
-    by a look at the run's stop flag (:class:`~pencore.integrators.driver.RunGuard`), so
-    Ctrl-C raises ``KeyboardInterrupt`` after the call in progress.
+    ``numerics.max_wall`` bound the number of right-hand-side calls / :data:`CALLS_PER_STEP`
+    and the wall time (looked at before every call); a run that ends on one of them
+    (outcome ``step_limit`` or ``wall_limit``) returns its accepted steps up to the last
+    one. Every compiled call holds SIGINT and is followed by a look at the run's stop
+    flag (:class:`~pencore.integrators.driver.RunGuard`), so Ctrl-C raises
+    ``KeyboardInterrupt`` after the call in progress.
 
     Returns
     -------
@@ -66,6 +74,9 @@ def integrate_scipy(
     atol14 = np.append(atol, 1e-2 * rtol * 0.5 * mass * float(y0[7:10] @ y0[7:10]))
     calls = [0]
     guard = RunGuard(max_wall)
+    # the accepted steps (t, y), recorded by the solver: a budget ends the run inside the
+    # right-hand side, where solve_ivp's own record of them is lost
+    accepted: list[tuple[float, np.ndarray]] = []
 
     class _Budget(Exception):
         pass
@@ -82,7 +93,7 @@ def integrate_scipy(
 
     def f(t: float, y: np.ndarray) -> np.ndarray:
         calls[0] += 1
-        if calls[0] > 20 * max_steps:
+        if calls[0] > CALLS_PER_STEP * max_steps:
             raise _Budget("step_limit")
         if guard.out_of_time:
             raise _Budget("wall_limit")
@@ -127,7 +138,7 @@ def integrate_scipy(
                 f,
                 (0.0, t_max),
                 state(y0),
-                method=_bounded(method, step_bound) if thin.shape[0] else method,
+                method=_solver(method, step_bound if thin.shape[0] else None, accepted.append),
                 rtol=rtol,
                 atol=atol14,
                 max_step=max_step,
@@ -136,9 +147,9 @@ def integrate_scipy(
             )
             t_contact = 0.0 if clearance(0.0, y0) <= 0.0 else math.nan
     except _Budget as exc:
-        return RunResult(
-            np.zeros(1), state(y0)[None, :], str(exc), False, math.nan, calls[0], 0, math.nan
-        )
+        ts = np.array([0.0] + [t for t, _ in accepted])
+        ys = np.array([state(y0)] + [state(y) for _, y in accepted])
+        return RunResult(ts, ys, str(exc), False, math.nan, calls[0], 0, math.nan)
     if sol.status == -1:
         return RunResult(sol.t, sol.y.T, "step_underflow", False, math.nan, calls[0], 0, math.inf)
     if sol.t_events[0].size:
@@ -165,15 +176,21 @@ def _event(fun: Any, *, terminal: bool, direction: float) -> Any:
     return fun_
 
 
-def _bounded(method: str, bound: Any) -> type[OdeSolver]:
-    """scipy's ``method`` (``"Radau"`` or ``"BDF"``) with ``max_step`` set to
-    ``bound(y)`` (s) before every step."""
+def _solver(method: str, bound: Any, record: Any) -> type[OdeSolver]:
+    """scipy's ``method`` (``"Radau"`` or ``"BDF"``) that calls ``record((t, y))`` after
+    every accepted step and, when ``bound`` is not None, sets ``max_step`` to
+    ``bound(y)`` (s) before every step. Recording reads the solver's state and changes
+    no number of the solution."""
     base = {"Radau": Radau, "BDF": BDF}[method]
 
-    class Bounded(base):  # type: ignore[misc, valid-type]
+    class Solver(base):  # type: ignore[misc, valid-type]
         def _step_impl(self) -> tuple[bool, str | None]:
-            self.max_step = bound(self.y)
-            return super()._step_impl()
+            if bound is not None:
+                self.max_step = bound(self.y)
+            success, message = super()._step_impl()
+            if success:
+                record((self.t, np.array(self.y)))
+            return success, message
 
-    Bounded.__name__ = f"Bounded{method}"
-    return Bounded
+    Solver.__name__ = f"{'Bounded' if bound is not None else 'Recorded'}{method}"
+    return Solver

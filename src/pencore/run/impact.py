@@ -256,7 +256,7 @@ def _impact(
     t0 = time.perf_counter()
     run = _run(pr, y0, velocity, stop_at_reversal)
     wall = time.perf_counter() - t0
-    _raise_on_failure(run, num)
+    _raise_on_failure(run, pr)
     return pr, run, wall, (velocity, obliquity, yaw, omega, azimuth, start)
 
 
@@ -351,12 +351,19 @@ def _small_step_cause(num: Numerics) -> str:
     return "the contact law is too stiff or chatters"
 
 
-def _raise_on_failure(run: RunResult, num: Numerics) -> None:
-    """A :class:`SolverError` naming the cause and the last state, for failed runs."""
+def _raise_on_failure(run: RunResult, pr: Problem) -> None:
+    """A :class:`SolverError` naming the cause and the last state (the last accepted
+    step), for failed runs."""
+    num = pr.numerics
     small = _small_step_cause(num)
+    budget = f"step budget of {num.max_steps} steps"
+    if num.method != "rosenbrock" and pr.emulation.integrator != "explicit":
+        from pencore.integrators.scipy_ivp import CALLS_PER_STEP
+
+        # scipy's methods count right-hand-side calls, so the steps can outnumber it
+        budget += f" ({CALLS_PER_STEP * num.max_steps} right-hand-side calls of {num.method})"
     causes = {
-        "step_limit": f"step budget of {num.max_steps} steps used up (raise numerics "
-        "max_steps, or loosen rtol)",
+        "step_limit": f"{budget} used up (raise numerics max_steps, or loosen rtol)",
         "wall_limit": f"wall-time budget of {num.max_wall:g} s used up (raise numerics max_wall)",
         "step_underflow": f"the step needed for rtol {num.rtol:g} fell below h_min = "
         f"{num.h_min:g} s: {small}",
