@@ -2,13 +2,14 @@
 
 Doors: the Python API (``pencore.simulate``, ``pencore.prepare``, the searches), YAML
 files (``--projectile FILE`` / ``--target FILE``), the command line, and the output
-paths. Classes: integers no float can hold, hostile files (alias bombs, deep nesting,
-repeated keys, FIFOs, devices, directories, oversized files), writes that would replace
-a non-regular file or the run's own input, search arguments, standard output that
-cannot be written. Every case asserts the exit status (or exception), exactly one line,
-no traceback, that the line quotes at most a short prefix of the value, that no file is
-left behind, and a time bound (a hang guard: every case is refused before any
-integration, measured well under a second each). Valid edge inputs are accepted.
+paths. Classes: integers no float can hold, numbers written as text in any notation but
+plain decimal, hostile files (alias bombs, deep nesting, repeated keys, FIFOs, devices,
+directories, oversized files), writes that would replace a non-regular file or the
+run's own input, search arguments, standard output that cannot be written. Every case
+asserts the exit status (or exception), exactly one line, no traceback, that the line
+quotes at most a short prefix of the value, that no file is left behind, and a time
+bound (a hang guard: every case is refused before any integration, measured well under
+a second each). Valid edge inputs are accepted.
 """
 
 from __future__ import annotations
@@ -246,6 +247,80 @@ def test_yaml_target_huge_integer(edit, capsys, tmp_path, monkeypatch):
     )
     assert status == 2
     assert "t.yaml" in line
+
+
+# ------------------------------------------------------------ numbers written as text
+
+#: Text that Python's float() or YAML 1.1 reads as a number but pencore refuses.
+EXOTIC_NUMBERS = {
+    "separator": "1_0",  # float() and YAML 1.1: 10
+    "arabic-indic": "\u0661",  # float(): 1
+    "fullwidth": "\uff15",  # float(): 5
+    "blanks": " 5 ",  # float(): 5
+    "leading-zero": "0750",  # float(): 750; YAML 1.1: the octal 488
+    "hexadecimal": "0x10",  # YAML 1.1: 16
+    "binary": "0b11",  # YAML 1.1: 3
+    "base-60": "1:30",  # YAML 1.1: 90
+}
+#: The forms Python's float() reads (the others never passed float()).
+FLOAT_EXOTIC = ["separator", "arabic-indic", "fullwidth", "blanks", "leading-zero"]
+#: (form, quoted): quoted, every form; plain, the forms YAML 1.1 reads as numbers.
+YAML_EXOTIC = [(form, True) for form in EXOTIC_NUMBERS] + [
+    (form, False) for form in ("separator", "leading-zero", "hexadecimal", "binary", "base-60")
+]
+NOTATION = "plain decimal"
+
+
+@pytest.mark.parametrize(("form", "quoted"), YAML_EXOTIC, ids=lambda x: str(x))
+def test_yaml_exotic_number_refused(form, quoted, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    text = EXOTIC_NUMBERS[form]
+    value = f'"{text}"' if quoted else text
+    (tmp_path / "t.yaml").write_text(
+        f"name: t\nlayers:\n  - {{medium: concrete, thickness: {value}}}\n  - {{medium: soil}}\n"
+    )
+    status, line = _cli(
+        ["simulate", "--projectile", "p2", "--target", "t.yaml", "--velocity", "300"],
+        capsys,
+        tmp_path,
+    )
+    assert status == 2
+    assert "layer thickness" in line and NOTATION in line and repr(text) in line, line
+
+
+@pytest.mark.parametrize("form", FLOAT_EXOTIC)
+def test_api_mapping_exotic_number_refused(form):
+    text = EXOTIC_NUMBERS[form]
+    layer = {"medium": "concrete", "thickness": text}
+    message = _api(lambda: get_target({"name": "t", "layers": [layer, {"medium": "soil"}]}))
+    assert "layer thickness" in message and NOTATION in message, message
+
+
+@pytest.mark.parametrize("form", FLOAT_EXOTIC)
+def test_cli_exotic_number_option_refused(form, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    text = EXOTIC_NUMBERS[form]
+    status, line = _cli([*SIM, f"--velocity={text}"], capsys, tmp_path)
+    assert status == 2
+    assert "--velocity" in line and NOTATION in line and repr(text) in line, line
+
+
+@pytest.mark.parametrize("form", [f for f in EXOTIC_NUMBERS if f != "blanks"])
+def test_cli_exotic_numerics_value_refused(form, capsys, tmp_path, monkeypatch):
+    # (a --numerics value is a YAML scalar: blanks around it are not part of it)
+    monkeypatch.chdir(tmp_path)
+    text = EXOTIC_NUMBERS[form]
+    status, line = _cli(
+        [*SIM, "--velocity", "300", "--numerics", f"max_steps={text}"], capsys, tmp_path
+    )
+    assert status == 2
+    assert "max_steps" in line and NOTATION in line, line
+
+
+def test_yaml_text_that_yaml_1_1_reads_as_a_number_stays_text(tmp_path):
+    path = tmp_path / "t.yaml"
+    path.write_text("name: 1_0\ncoefficients: [1.0e7, 0.0, 100.0]\n")
+    assert get_target(str(path)).name == "1_0"
 
 
 # ------------------------------------------------------------ hostile files
@@ -491,6 +566,21 @@ def test_valid_numerics_at_the_limits_accepted(kwargs):
     pr = pencore.prepare("p2", "soil", kwargs)
     for key, value in kwargs.items():
         assert getattr(pr.numerics, key) == value
+
+
+def test_valid_numbers_written_as_text(capsys, tmp_path, monkeypatch):
+    # text in plain decimal is a number in a YAML file (quoted too) and on the command line
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "t.yaml").write_text(
+        'name: t\nlayers:\n  - {medium: concrete, thickness: "0.5"}\n'
+        "  - {medium: {name: m, coefficients: [3e8, 0, +2e3], friction: .1}, thickness: 1E-1}\n"
+    )
+    target = get_target("t.yaml")
+    assert [lay.thickness for lay in target.layers] == [0.5, 0.1]
+    assert target.layers[1].medium.coefficients == (3e8, 0.0, 2e3)
+    argv = [*SIM, "--velocity=+3e2", "--numerics", "max_wall=inf", "--numerics", "rtol=1E-5"]
+    assert main(argv) == 0, capsys.readouterr().err
+    assert "300 m/s" in capsys.readouterr().out
 
 
 # ------------------------------------------------------------ workflow configuration

@@ -21,8 +21,9 @@ from pathlib import Path
 from typing import Any, NoReturn
 
 from pencore.errors import INTERRUPTED, InputError, WriteError
-from pencore.inputs.gate import brief, brief_path, load_yaml_text
+from pencore.inputs.gate import DECIMAL_WORDS, brief, brief_path, decimal, load_yaml_text
 from pencore.inputs.limits import number
+from pencore.inputs.numerics import NUMERIC_FIELDS
 from pencore.io.atomic import check_replaceable, describe_os_error
 
 __all__ = [
@@ -149,9 +150,10 @@ def numerics_option(text: str) -> tuple[str, Any]:
     ----------
     text : str
         ``KEY=VALUE``, e.g. ``rtol=1e-6``, ``t_max=2`` (s), ``method=Radau``. The value is
-        read as a YAML scalar; text that reads as a number (YAML leaves ``1e-6`` a
-        string) becomes a float. Keys and ranges are checked later, by
-        :func:`pencore.inputs.numerics.resolve_numerics`.
+        read as a YAML scalar; text in plain decimal notation
+        (:data:`pencore.inputs.gate.DECIMAL`; YAML leaves ``1e-6`` a string) becomes a
+        float; other text given to a numeric key is refused here. Keys and ranges are
+        checked later, by :func:`pencore.inputs.numerics.resolve_numerics`.
 
     Returns
     -------
@@ -161,7 +163,8 @@ def numerics_option(text: str) -> tuple[str, Any]:
     Raises
     ------
     argparse.ArgumentTypeError
-        When ``text`` has no ``=`` or an empty key.
+        When ``text`` has no ``=`` or an empty key, or gives a numeric key text that is
+        not plain decimal.
     """
     key, sep, value = text.partition("=")
     if not sep or not key:
@@ -170,12 +173,16 @@ def numerics_option(text: str) -> tuple[str, Any]:
         parsed = load_yaml_text(value, f"--numerics value of {brief(key)}")
     except InputError:
         parsed = value
+    key = key.strip()
     if isinstance(parsed, str):  # YAML reads 1e-6 (no decimal point) as text
-        try:
-            parsed = float(parsed)
-        except ValueError:
-            pass
-    return key.strip(), parsed
+        value_f = decimal(parsed)
+        if value_f is not None:
+            parsed = value_f
+        elif key in NUMERIC_FIELDS:
+            raise argparse.ArgumentTypeError(
+                f"{key} must be a number {DECIMAL_WORDS}, got {brief(parsed)}"
+            )
+    return key, parsed
 
 
 def add_window_options(p: argparse.ArgumentParser) -> None:

@@ -1,6 +1,11 @@
 """Input checking: the valid range of every quantity a user gives pencore, and strict
 readers for numbers, integers and mappings.
 
+Text is read as a number only where a reader allows it (YAML files, mappings of a
+projectile or target, the command line) and only in the input gate's plain decimal
+notation (:data:`pencore.inputs.gate.DECIMAL`); the ranges then judge the value like any
+other (only a range that reaches infinity, such as ``max_wall``'s, admits ``inf``).
+
 Every user-facing entry point (the API, YAML files, the CLI) checks its inputs here, so
 a bad value stops with one :class:`InputError` whose message names the value, its unit
 and what is allowed, before any computation.
@@ -28,7 +33,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from pencore.errors import InputError
-from pencore.inputs.gate import brief
+from pencore.inputs.gate import DECIMAL_WORDS, brief, decimal
 
 __all__ = [
     "Limit",
@@ -344,7 +349,9 @@ def number(value: Any, key: str, what: str = "", *, allow_str: bool = False) -> 
     """``value`` as a float within ``LIMITS[key]``, else :class:`InputError`.
 
     Booleans are not numbers. Strings are refused unless ``allow_str`` (YAML reads
-    ``1e6`` without a decimal point as a string; YAML readers pass ``allow_str=True``).
+    ``1e6`` without a decimal point as a string, and a quoted ``"0.5"`` is a string too;
+    YAML readers and the command line pass ``allow_str=True``); then a string must be
+    plain decimal (:func:`decimal`).
 
     Parameters
     ----------
@@ -355,7 +362,7 @@ def number(value: Any, key: str, what: str = "", *, allow_str: bool = False) -> 
     what : str
         Prefix naming where the value came from (``"projectile 'x'"``).
     allow_str : bool
-        Accept a string that reads as a number.
+        Accept a string in plain decimal notation.
 
     Returns
     -------
@@ -366,6 +373,11 @@ def number(value: Any, key: str, what: str = "", *, allow_str: bool = False) -> 
     unit = f" {lim.unit}" if lim.unit and lim.unit != "SI" else ""
     v = as_float(value, allow_str)
     if v is None:
+        if allow_str and isinstance(value, str):
+            raise InputError(
+                f"{where}{lim.label} must be a number{unit and ' of' + unit} {DECIMAL_WORDS}, "
+                f"got {brief(value)}"
+            )
         raise InputError(
             f"{where}{lim.label} must be a number of{unit or ' (dimensionless)'}, "
             f"got {brief(value)} ({_type_name(value)})"
@@ -377,7 +389,7 @@ def number(value: Any, key: str, what: str = "", *, allow_str: bool = False) -> 
 
 def as_float(value: Any, allow_str: bool) -> float | None:
     """``value`` as a float when it is a real number (not a bool; a 0-d numeric array;
-    with ``allow_str``, a numeric string), else None."""
+    with ``allow_str``, a string in plain decimal notation, :func:`decimal`), else None."""
     if isinstance(value, bool):
         return None
     if isinstance(value, numbers.Real):
@@ -386,10 +398,7 @@ def as_float(value: Any, allow_str: bool) -> float | None:
         except OverflowError:  # an integer no float can hold: out of every range
             return math.inf if value > 0 else -math.inf
     if allow_str and isinstance(value, str):
-        try:
-            return float(value)
-        except ValueError:
-            return None
+        return decimal(value)
     if isinstance(value, numbers.Integral):  # numpy integers are Integral, not always Real
         try:
             return float(value)
