@@ -199,6 +199,19 @@ def test_cli_huge_numerics_key(capsys, tmp_path, monkeypatch):
     assert status == 2
 
 
+#: --numerics values YAML reads as null (which in a mapping means the default).
+EMPTY_NUMERICS = ["method=", "rtol=", "max_steps=~", "eps=null", "t_max= ", "jacobian=NULL"]
+
+
+@pytest.mark.parametrize("option", EMPTY_NUMERICS)
+def test_cli_empty_numerics_value(option, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    status, line = _cli([*SIM, "--velocity", "300", "--numerics", option], capsys, tmp_path)
+    assert status == 2
+    key = option.partition("=")[0]
+    assert f"--numerics: {key!r} has no value" in line, line
+
+
 # ------------------------------------------------------------ huge integers: YAML files
 
 YAML_PROJECTILE_EDITS = {

@@ -163,17 +163,23 @@ def numerics_option(text: str) -> tuple[str, Any]:
     Raises
     ------
     argparse.ArgumentTypeError
-        When ``text`` has no ``=`` or an empty key, or gives a numeric key text that is
-        not plain decimal.
+        When ``text`` has no ``=``, an empty key, or an empty value (nothing, ``~`` or
+        ``null``: YAML's null, which would mean the default), or gives a numeric key text
+        that is not plain decimal.
     """
     key, sep, value = text.partition("=")
+    key = key.strip()
     if not sep or not key:
         raise argparse.ArgumentTypeError(f"must be KEY=VALUE (e.g. rtol=1e-6), got {brief(text)}")
     try:
         parsed = load_yaml_text(value, f"--numerics value of {brief(key)}")
     except InputError:
         parsed = value
-    key = key.strip()
+    if parsed is None:  # YAML's null: an empty value, ~ or null
+        raise argparse.ArgumentTypeError(
+            f"{brief(key)} has no value, got {brief(text)}; give KEY=VALUE, or leave the "
+            "option out for the default"
+        )
     if isinstance(parsed, str):  # YAML reads 1e-6 (no decimal point) as text
         value_f = decimal(parsed)
         if value_f is not None:
