@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import xarray as xr
 
 import pencore
 from pencore.cli.main import main
@@ -594,6 +595,19 @@ def test_valid_numbers_written_as_text(capsys, tmp_path, monkeypatch):
     argv = [*SIM, "--velocity=+3e2", "--numerics", "max_wall=inf", "--numerics", "rtol=1E-5"]
     assert main(argv) == 0, capsys.readouterr().err
     assert "300 m/s" in capsys.readouterr().out
+
+
+def test_negative_obliquity_on_the_command_line_as_in_the_api(capsys, tmp_path, monkeypatch):
+    # the command line takes the obliquity range of the limits table, (-90, 90) deg
+    monkeypatch.chdir(tmp_path)
+    assert main([*SIM, "--velocity", "300", "--obliquity", "-30", "--out", "m.nc"]) == 0
+    out = capsys.readouterr().out
+    ds = pencore.simulate("p2", "soil", 300.0, -30.0)
+    assert f"{float(ds['penetration_depth']):.6g} m" in out
+    assert "obliquity -30 deg" in out
+    with xr.open_dataset(tmp_path / "m.nc") as written:
+        assert written.attrs["obliquity_deg"] == -30.0
+        assert float(written.cm_x[-1]) == float(ds.cm_x[-1]) < 0.0
 
 
 # ------------------------------------------------------------ workflow configuration

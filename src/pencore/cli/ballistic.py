@@ -43,7 +43,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         type=obliquity,
         default=0.0,
         metavar="DEG",
-        help="obliquity in deg, 0 <= DEG < 90 (default: 0)",
+        help="obliquity in deg, positive towards +x; -90 < DEG < 90 (default: 0)",
     )
     p.add_argument(
         "--yaw", type=number_type("yaw"), default=0.0, metavar="DEG", help="yaw in deg (default: 0)"

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import argparse
 import errno
-import math
 import os
 import tempfile
 from collections.abc import Callable, Sequence
@@ -101,19 +100,15 @@ def one_line(text: str) -> str:
     return " ".join(str(text).split())
 
 
-def number_type(key: str, ok: Callable[[float], bool] = lambda v: True, allowed: str = "") -> Any:
+def number_type(key: str) -> Any:
     """Make an argparse ``type=`` for a number checked against the package's limits.
 
     Parameters
     ----------
     key : str
         Key into :data:`pencore.inputs.limits.LIMITS`, which gives the unit (m/s, deg,
-        rad/s, m, calibers) and the allowed range, e.g. ``"velocity"``, ``"yaw"``.
-    ok : callable, optional
-        A narrower condition the command line promises, on the value in the unit of
-        ``key``; checked only when ``allowed`` is given. Default: always true.
-    allowed : str, optional
-        Words for ``ok``, used in the error (``"a number of degrees in [0, 90)"``).
+        rad/s, m, calibers) and the allowed range, e.g. ``"velocity"``, ``"yaw"``: the
+        command line accepts what the API accepts.
 
     Returns
     -------
@@ -124,12 +119,6 @@ def number_type(key: str, ok: Callable[[float], bool] = lambda v: True, allowed:
 
     def conv(text: str) -> float:
         try:
-            v = float(text)
-        except ValueError:
-            v = math.nan
-        if allowed and not (math.isfinite(v) and ok(v)):
-            raise argparse.ArgumentTypeError(f"must be {allowed}, got {brief(text)}")
-        try:
             return number(text, key, allow_str=True)
         except InputError as exc:
             raise argparse.ArgumentTypeError(str(exc).split(": ", 1)[-1]) from None
@@ -139,8 +128,9 @@ def number_type(key: str, ok: Callable[[float], bool] = lambda v: True, allowed:
 
 #: argparse type: a speed in m/s, > 0, up to the 10 km/s guard of ``LIMITS["velocity"]``.
 velocity = number_type("velocity")
-#: argparse type: an obliquity in deg, 0 <= DEG < 90.
-obliquity = number_type("obliquity", lambda v: 0.0 <= v < 90.0, "a number of degrees in [0, 90)")
+#: argparse type: an obliquity in deg, in ``LIMITS["obliquity"]`` (-90, 90); negative
+#: tilts the axis towards -x.
+obliquity = number_type("obliquity")
 
 
 def numerics_option(text: str) -> tuple[str, Any]:
