@@ -302,6 +302,7 @@ CLI_CASES = [
     ([*SIM, "--velocity", "1e300"], ["--velocity", "'1e300'"]),
     ([*SIM, "--velocity", "true"], ["--velocity", "'true'"]),
     ([*SIM, "--velocity", "0x10"], ["--velocity", "'0x10'"]),
+    ([*SIM, "--velocity", "3: 0"], ["--velocity: velocity must be a number", "'3: 0'"]),
     ([*SIM, "--velocity", "300", "--omega", "1e300"], ["--omega", "'1e300'"]),
     ([*SIM, "--velocity", "300", "--omega", "nan"], ["--omega", "'nan'"]),
     ([*SIM, "--velocity", "300", "--yaw=-inf"], ["--yaw", "'-inf'"]),

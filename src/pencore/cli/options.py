@@ -121,7 +121,7 @@ def number_type(key: str) -> Any:
         try:
             return number(text, key, allow_str=True)
         except InputError as exc:
-            raise argparse.ArgumentTypeError(str(exc).split(": ", 1)[-1]) from None
+            raise argparse.ArgumentTypeError(str(exc)) from None
 
     return conv
 
