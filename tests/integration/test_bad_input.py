@@ -326,6 +326,8 @@ CLI_CASES = [
     (["simulate", "--projectile", "p2", "--target", "soil", "--velocity", "300", "--frob"],
      ["--frob"]),
     (["simulat"], ["'simulat'"]),
+    (["ballistic-limit", "--projectile", "p2", "--target", "plate.yaml", "--tol", "-5"],
+     ["argument --tol: tolerance must be in (0, 10000] m/s, got '-5'"]),
 ]  # fmt: skip
 
 

@@ -56,7 +56,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     )
     p.add_argument(
         "--tol",
-        type=velocity,
+        type=number_type("velocity", "tolerance"),
         default=5.0,
         metavar="M_S",
         help="width of the final bracket in m/s (default: 5)",

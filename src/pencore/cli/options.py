@@ -100,7 +100,7 @@ def one_line(text: str) -> str:
     return " ".join(str(text).split())
 
 
-def number_type(key: str) -> Any:
+def number_type(key: str, label: str = "") -> Any:
     """Make an argparse ``type=`` for a number checked against the package's limits.
 
     Parameters
@@ -109,6 +109,9 @@ def number_type(key: str) -> Any:
         Key into :data:`pencore.inputs.limits.LIMITS`, which gives the unit (m/s, deg,
         rad/s, m, calibers) and the allowed range, e.g. ``"velocity"``, ``"yaw"``: the
         command line accepts what the API accepts.
+    label : str, optional
+        How the error names the value when it is not the quantity ``key`` names
+        (``"tolerance"`` for a width in m/s); default: the label of ``key``.
 
     Returns
     -------
@@ -119,7 +122,7 @@ def number_type(key: str) -> Any:
 
     def conv(text: str) -> float:
         try:
-            return number(text, key, allow_str=True)
+            return number(text, key, allow_str=True, label=label)
         except InputError as exc:
             raise argparse.ArgumentTypeError(str(exc)) from None
 

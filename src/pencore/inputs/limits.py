@@ -29,7 +29,7 @@ import difflib
 import math
 import numbers
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from pencore.errors import InputError
@@ -345,7 +345,9 @@ def _type_name(value: Any) -> str:
     return type(value).__name__
 
 
-def number(value: Any, key: str, what: str = "", *, allow_str: bool = False) -> float:
+def number(
+    value: Any, key: str, what: str = "", *, allow_str: bool = False, label: str = ""
+) -> float:
     """``value`` as a float within ``LIMITS[key]``, else :class:`InputError`.
 
     Booleans are not numbers. Strings are refused unless ``allow_str`` (YAML reads
@@ -363,12 +365,17 @@ def number(value: Any, key: str, what: str = "", *, allow_str: bool = False) -> 
         Prefix naming where the value came from (``"projectile 'x'"``).
     allow_str : bool
         Accept a string in plain decimal notation.
+    label : str
+        How messages name the value, for a quantity that has the range of ``key`` but
+        is not it (a search tolerance in m/s); default: the label of ``key``.
 
     Returns
     -------
     float
     """
     lim = LIMITS[key]
+    if label:
+        lim = replace(lim, label=label)
     where = f"{what}: " if what else ""
     unit = f" {lim.unit}" if lim.unit and lim.unit != "SI" else ""
     v = as_float(value, allow_str)
