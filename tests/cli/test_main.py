@@ -165,7 +165,10 @@ def test_bad_projectile_or_target(tmp_path, capsys, kind, make, needles):
         (lambda d: d / "out.txt", ["out.txt", ".nc"]),
         (lambda d: d / "no" / "such" / "dir" / "out.nc", ["does not exist", "dir"]),
         (lambda d: (d / "adir.nc").mkdir() or d / "adir.nc", ["adir.nc", "directory"]),
-        (lambda d: write(d / "afile", "") / "out.nc", ["afile", "does not exist"]),
+        (
+            lambda d: write(d / "afile", "") / "out.nc",
+            ["afile", "is not a directory: it is a regular file"],
+        ),
     ],
     ids=["suffix", "missing-dir", "is-directory", "parent-is-file"],
 )

@@ -445,6 +445,21 @@ def _out_cases(folder: Path) -> dict[str, tuple[list[str], str, int]]:
         "out-is-fifo": ([*base, "--out", str(folder / "fifo.nc")], "a FIFO", 2),
         "out-is-directory": ([*base, "--out", str(folder / "dir.nc")], "directory", 2),
         "out-is-dev-null": ([*SIM, "--velocity", "300", "--out", "/dev/null"], ".nc", 2),
+        "out-under-a-file": (
+            [*base, "--out", str(target / "x.nc")],
+            f"of '{target / 'x.nc'}' is not a directory: it is a regular file",
+            2,
+        ),
+        "out-deep-under-a-file": (
+            [*base, "--out", str(target / "sub" / "x.nc")],
+            f"is not a directory: '{target}' is a regular file",
+            2,
+        ),
+        "out-under-a-fifo": (
+            [*base, "--out", str(folder / "fifo.nc" / "x.nc")],
+            "is not a directory: it is a FIFO",
+            2,
+        ),
         "fit-table3-to-dev-null": (["fit-table3", "--write", "/dev/null"], "character device", 1),
         "fit-table3-to-fifo": (["fit-table3", "--write", str(folder / "fifo.nc")], "FIFO", 1),
     }
@@ -452,7 +467,8 @@ def _out_cases(folder: Path) -> dict[str, tuple[list[str], str, int]]:
 
 OUT_CASES = [
     "out-is-input", "out-is-hard-link-of-input", "out-is-fifo", "out-is-directory",
-    "out-is-dev-null", "fit-table3-to-dev-null", "fit-table3-to-fifo",
+    "out-is-dev-null", "out-under-a-file", "out-deep-under-a-file", "out-under-a-fifo",
+    "fit-table3-to-dev-null", "fit-table3-to-fifo",
 ]  # fmt: skip
 
 

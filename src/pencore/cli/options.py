@@ -14,6 +14,7 @@ from __future__ import annotations
 import argparse
 import errno
 import os
+import stat
 import tempfile
 from collections.abc import Callable, Sequence
 from pathlib import Path
@@ -23,7 +24,7 @@ from pencore.errors import INTERRUPTED, InputError, WriteError
 from pencore.inputs.gate import DECIMAL_WORDS, brief, brief_path, decimal, load_yaml_text
 from pencore.inputs.limits import number
 from pencore.inputs.numerics import NUMERIC_FIELDS
-from pencore.io.atomic import check_replaceable, describe_os_error
+from pencore.io.atomic import check_replaceable, describe_os_error, file_kind
 
 __all__ = [
     "PROG",
@@ -286,12 +287,7 @@ def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
     except WriteError as exc:
         raise CommandFailure(str(exc), 2) from None
     parent = path.parent
-    if not parent.is_dir():
-        raise CommandFailure(
-            f"output directory {brief_path(parent)} of {brief_path(out)} does not exist; "
-            "create it first",
-            2,
-        )
+    _check_directory(parent, out)
     # a real probe: os.access alone is fooled by root, read-only mounts, ACLs
     try:
         fd, probe = tempfile.mkstemp(dir=parent, prefix=".pencore-probe-", suffix=".probe")
@@ -305,6 +301,36 @@ def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
             1 if exc.errno in (errno.ENOSPC, errno.EDQUOT) else 2,
         ) from None
     return path
+
+
+def _check_directory(parent: Path, out: str) -> None:
+    """Refuse an output directory ``parent`` (of ``out``) that is not a directory: one
+    that does not exist, or one that is, or lies under, a file of another kind."""
+    where = f"output directory {brief_path(parent)} of {brief_path(out)}"
+    try:
+        st = os.stat(parent)
+    except FileNotFoundError:
+        raise CommandFailure(f"{where} does not exist; create it first", 2) from None
+    except NotADirectoryError:  # a file where a directory of the path should be
+        blocker = next(
+            (a for a in reversed(parent.parents) if a.exists() and not a.is_dir()), parent
+        )
+        raise CommandFailure(
+            f"{where} is not a directory: {brief_path(blocker)} is {_kind(blocker)}", 2
+        ) from None
+    except OSError as exc:
+        raise CommandFailure(f"{where} cannot be reached: {exc.strerror or exc}", 2) from None
+    if not stat.S_ISDIR(st.st_mode):
+        raise CommandFailure(f"{where} is not a directory: it is {_kind(parent)}", 2)
+
+
+def _kind(path: Path) -> str:
+    """What the existing non-directory ``path`` is, in words."""
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        return "not a directory"
+    return "a regular file" if stat.S_ISREG(mode) else file_kind(mode)
 
 
 def cli_inputs(args: argparse.Namespace) -> dict[str, Any]:
