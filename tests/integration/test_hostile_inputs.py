@@ -159,6 +159,14 @@ def test_api_huge_integer_target_mapping(field):
     _api(lambda: get_target({"name": "t", "layers": [layer]}))
 
 
+def test_api_layer_medium_given_as_huge_text():
+    from pencore.inputs.target import Layer, Target
+
+    text = _api(lambda: pencore.simulate("p2", Target("t", (Layer(HUGE_TEXT, 0.1),)), 300.0))
+    assert "got str '111" in text and "(402 characters)" in text
+    assert "pencore.get_target(NAME).medium" in text
+
+
 # ------------------------------------------------------------ huge integers: CLI
 
 CLI_NUMBER_OPTIONS = [
