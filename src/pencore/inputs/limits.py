@@ -353,7 +353,7 @@ def number(
     Booleans are not numbers. Strings are refused unless ``allow_str`` (YAML reads
     ``1e6`` without a decimal point as a string, and a quoted ``"0.5"`` is a string too;
     YAML readers and the command line pass ``allow_str=True``); then a string must be
-    plain decimal (:func:`decimal`).
+    plain decimal (:func:`pencore.inputs.gate.decimal`).
 
     Parameters
     ----------
@@ -396,7 +396,8 @@ def number(
 
 def as_float(value: Any, allow_str: bool) -> float | None:
     """``value`` as a float when it is a real number (not a bool; a 0-d numeric array;
-    with ``allow_str``, a string in plain decimal notation, :func:`decimal`), else None."""
+    with ``allow_str``, a string in plain decimal notation,
+    :func:`pencore.inputs.gate.decimal`), else None."""
     if isinstance(value, bool):
         return None
     if isinstance(value, numbers.Real):
