@@ -149,6 +149,16 @@ API_OBJECT_CASES = [
         "only the last layer",
         "layer 0",
     ),
+    (
+        lambda: pencore.simulate("p2", target.Target("t", (target.Layer("concrete", 0.1),)), 300.0),
+        "layer 0 medium must be a Medium or None (gap), got str 'concrete'",
+        "; for a named medium use pencore.get_target('concrete').medium",
+    ),
+    (
+        lambda: target.Target("t", (target.Layer(library.MEDIA["soil"], 1.0), target.Layer(7))),
+        "layer 1 medium",
+        "got int 7",
+    ),
     (lambda: geometry.OgiveNose(0.4, 7850.0), "CRH", "0.4"),
     (lambda: geometry.OgiveNose(1e12, 7850.0), "CRH", "1000000000000.0"),
     (lambda: geometry.OgiveNose(3.0, 1e6), "density", "1000000.0"),
@@ -302,6 +312,7 @@ CLI_CASES = [
     ([*SIM, "--velocity", "1e300"], ["--velocity", "'1e300'"]),
     ([*SIM, "--velocity", "true"], ["--velocity", "'true'"]),
     ([*SIM, "--velocity", "0x10"], ["--velocity", "'0x10'"]),
+    ([*SIM, "--velocity", "3: 0"], ["--velocity: velocity must be a number", "'3: 0'"]),
     ([*SIM, "--velocity", "300", "--omega", "1e300"], ["--omega", "'1e300'"]),
     ([*SIM, "--velocity", "300", "--omega", "nan"], ["--omega", "'nan'"]),
     ([*SIM, "--velocity", "300", "--yaw=-inf"], ["--yaw", "'-inf'"]),
@@ -325,6 +336,8 @@ CLI_CASES = [
     (["simulate", "--projectile", "p2", "--target", "soil", "--velocity", "300", "--frob"],
      ["--frob"]),
     (["simulat"], ["'simulat'"]),
+    (["ballistic-limit", "--projectile", "p2", "--target", "plate.yaml", "--tol", "-5"],
+     ["argument --tol: tolerance must be in (0, 10000] m/s, got '-5'"]),
 ]  # fmt: skip
 
 

@@ -2,13 +2,14 @@
 
 Doors: the Python API (``pencore.simulate``, ``pencore.prepare``, the searches), YAML
 files (``--projectile FILE`` / ``--target FILE``), the command line, and the output
-paths. Classes: integers no float can hold, hostile files (alias bombs, deep nesting,
-repeated keys, FIFOs, devices, directories, oversized files), writes that would replace
-a non-regular file or the run's own input, search arguments, standard output that
-cannot be written. Every case asserts the exit status (or exception), exactly one line,
-no traceback, that the line quotes at most a short prefix of the value, that no file is
-left behind, and a time bound (a hang guard: every case is refused before any
-integration, measured well under a second each). Valid edge inputs are accepted.
+paths. Classes: integers no float can hold, numbers written as text in any notation but
+plain decimal, hostile files (alias bombs, deep nesting, repeated keys, FIFOs, devices,
+directories, oversized files), writes that would replace a non-regular file or the
+run's own input, search arguments, standard output that cannot be written. Every case
+asserts the exit status (or exception), exactly one line, no traceback, that the line
+quotes at most a short prefix of the value, that no file is left behind, and a time
+bound (a hang guard: every case is refused before any integration, measured well under
+a second each). Valid edge inputs are accepted.
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import xarray as xr
 
 import pencore
 from pencore.cli.main import main
@@ -157,6 +159,14 @@ def test_api_huge_integer_target_mapping(field):
     _api(lambda: get_target({"name": "t", "layers": [layer]}))
 
 
+def test_api_layer_medium_given_as_huge_text():
+    from pencore.inputs.target import Layer, Target
+
+    text = _api(lambda: pencore.simulate("p2", Target("t", (Layer(HUGE_TEXT, 0.1),)), 300.0))
+    assert "got str '111" in text and "(402 characters)" in text
+    assert "pencore.get_target(NAME).medium" in text
+
+
 # ------------------------------------------------------------ huge integers: CLI
 
 CLI_NUMBER_OPTIONS = [
@@ -196,6 +206,19 @@ def test_cli_huge_numerics_key(capsys, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     status, _ = _cli([*SIM, "--velocity", "300", "--numerics", f"{HUGE_TEXT}=1"], capsys, tmp_path)
     assert status == 2
+
+
+#: --numerics values YAML reads as null (which in a mapping means the default).
+EMPTY_NUMERICS = ["method=", "rtol=", "max_steps=~", "eps=null", "t_max= ", "jacobian=NULL"]
+
+
+@pytest.mark.parametrize("option", EMPTY_NUMERICS)
+def test_cli_empty_numerics_value(option, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    status, line = _cli([*SIM, "--velocity", "300", "--numerics", option], capsys, tmp_path)
+    assert status == 2
+    key = option.partition("=")[0]
+    assert f"--numerics: {key!r} has no value" in line, line
 
 
 # ------------------------------------------------------------ huge integers: YAML files
@@ -246,6 +269,80 @@ def test_yaml_target_huge_integer(edit, capsys, tmp_path, monkeypatch):
     )
     assert status == 2
     assert "t.yaml" in line
+
+
+# ------------------------------------------------------------ numbers written as text
+
+#: Text that Python's float() or YAML 1.1 reads as a number but pencore refuses.
+EXOTIC_NUMBERS = {
+    "separator": "1_0",  # float() and YAML 1.1: 10
+    "arabic-indic": "\u0661",  # float(): 1
+    "fullwidth": "\uff15",  # float(): 5
+    "blanks": " 5 ",  # float(): 5
+    "leading-zero": "0750",  # float(): 750; YAML 1.1: the octal 488
+    "hexadecimal": "0x10",  # YAML 1.1: 16
+    "binary": "0b11",  # YAML 1.1: 3
+    "base-60": "1:30",  # YAML 1.1: 90
+}
+#: The forms Python's float() reads (the others never passed float()).
+FLOAT_EXOTIC = ["separator", "arabic-indic", "fullwidth", "blanks", "leading-zero"]
+#: (form, quoted): quoted, every form; plain, the forms YAML 1.1 reads as numbers.
+YAML_EXOTIC = [(form, True) for form in EXOTIC_NUMBERS] + [
+    (form, False) for form in ("separator", "leading-zero", "hexadecimal", "binary", "base-60")
+]
+NOTATION = "plain decimal"
+
+
+@pytest.mark.parametrize(("form", "quoted"), YAML_EXOTIC, ids=lambda x: str(x))
+def test_yaml_exotic_number_refused(form, quoted, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    text = EXOTIC_NUMBERS[form]
+    value = f'"{text}"' if quoted else text
+    (tmp_path / "t.yaml").write_text(
+        f"name: t\nlayers:\n  - {{medium: concrete, thickness: {value}}}\n  - {{medium: soil}}\n"
+    )
+    status, line = _cli(
+        ["simulate", "--projectile", "p2", "--target", "t.yaml", "--velocity", "300"],
+        capsys,
+        tmp_path,
+    )
+    assert status == 2
+    assert "layer thickness" in line and NOTATION in line and repr(text) in line, line
+
+
+@pytest.mark.parametrize("form", FLOAT_EXOTIC)
+def test_api_mapping_exotic_number_refused(form):
+    text = EXOTIC_NUMBERS[form]
+    layer = {"medium": "concrete", "thickness": text}
+    message = _api(lambda: get_target({"name": "t", "layers": [layer, {"medium": "soil"}]}))
+    assert "layer thickness" in message and NOTATION in message, message
+
+
+@pytest.mark.parametrize("form", FLOAT_EXOTIC)
+def test_cli_exotic_number_option_refused(form, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    text = EXOTIC_NUMBERS[form]
+    status, line = _cli([*SIM, f"--velocity={text}"], capsys, tmp_path)
+    assert status == 2
+    assert "--velocity" in line and NOTATION in line and repr(text) in line, line
+
+
+@pytest.mark.parametrize("form", [f for f in EXOTIC_NUMBERS if f != "blanks"])
+def test_cli_exotic_numerics_value_refused(form, capsys, tmp_path, monkeypatch):
+    # (a --numerics value is a YAML scalar: blanks around it are not part of it)
+    monkeypatch.chdir(tmp_path)
+    text = EXOTIC_NUMBERS[form]
+    status, line = _cli(
+        [*SIM, "--velocity", "300", "--numerics", f"max_steps={text}"], capsys, tmp_path
+    )
+    assert status == 2
+    assert "max_steps" in line and NOTATION in line, line
+
+
+def test_yaml_text_that_yaml_1_1_reads_as_a_number_stays_text(tmp_path):
+    path = tmp_path / "t.yaml"
+    path.write_text("name: 1_0\ncoefficients: [1.0e7, 0.0, 100.0]\n")
+    assert get_target(str(path)).name == "1_0"
 
 
 # ------------------------------------------------------------ hostile files
@@ -367,6 +464,21 @@ def _out_cases(folder: Path) -> dict[str, tuple[list[str], str, int]]:
         "out-is-fifo": ([*base, "--out", str(folder / "fifo.nc")], "a FIFO", 2),
         "out-is-directory": ([*base, "--out", str(folder / "dir.nc")], "directory", 2),
         "out-is-dev-null": ([*SIM, "--velocity", "300", "--out", "/dev/null"], ".nc", 2),
+        "out-under-a-file": (
+            [*base, "--out", str(target / "x.nc")],
+            f"of '{target / 'x.nc'}' is not a directory: it is a regular file",
+            2,
+        ),
+        "out-deep-under-a-file": (
+            [*base, "--out", str(target / "sub" / "x.nc")],
+            f"is not a directory: '{target}' is a regular file",
+            2,
+        ),
+        "out-under-a-fifo": (
+            [*base, "--out", str(folder / "fifo.nc" / "x.nc")],
+            "is not a directory: it is a FIFO",
+            2,
+        ),
         "fit-table3-to-dev-null": (["fit-table3", "--write", "/dev/null"], "character device", 1),
         "fit-table3-to-fifo": (["fit-table3", "--write", str(folder / "fifo.nc")], "FIFO", 1),
     }
@@ -374,8 +486,9 @@ def _out_cases(folder: Path) -> dict[str, tuple[list[str], str, int]]:
 
 OUT_CASES = [
     "out-is-input", "out-is-hard-link-of-input", "out-is-fifo", "out-is-directory",
-    "out-is-dev-null", "fit-table3-to-dev-null", "fit-table3-to-fifo", "out-is-symlink",
-    "out-is-dangling-symlink", "out-name-too-long",
+    "out-is-dev-null", "out-under-a-file", "out-deep-under-a-file", "out-under-a-fifo",
+    "fit-table3-to-dev-null", "fit-table3-to-fifo", "out-is-symlink", "out-is-dangling-symlink",
+    "out-name-too-long",
 ]  # fmt: skip
 
 
@@ -550,6 +663,34 @@ def test_valid_numerics_at_the_limits_accepted(kwargs):
     pr = pencore.prepare("p2", "soil", kwargs)
     for key, value in kwargs.items():
         assert getattr(pr.numerics, key) == value
+
+
+def test_valid_numbers_written_as_text(capsys, tmp_path, monkeypatch):
+    # text in plain decimal is a number in a YAML file (quoted too) and on the command line
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "t.yaml").write_text(
+        'name: t\nlayers:\n  - {medium: concrete, thickness: "0.5"}\n'
+        "  - {medium: {name: m, coefficients: [3e8, 0, +2e3], friction: .1}, thickness: 1E-1}\n"
+    )
+    target = get_target("t.yaml")
+    assert [lay.thickness for lay in target.layers] == [0.5, 0.1]
+    assert target.layers[1].medium.coefficients == (3e8, 0.0, 2e3)
+    argv = [*SIM, "--velocity=+3e2", "--numerics", "max_wall=inf", "--numerics", "rtol=1E-5"]
+    assert main(argv) == 0, capsys.readouterr().err
+    assert "300 m/s" in capsys.readouterr().out
+
+
+def test_negative_obliquity_on_the_command_line_as_in_the_api(capsys, tmp_path, monkeypatch):
+    # the command line takes the obliquity range of the limits table, (-90, 90) deg
+    monkeypatch.chdir(tmp_path)
+    assert main([*SIM, "--velocity", "300", "--obliquity", "-30", "--out", "m.nc"]) == 0
+    out = capsys.readouterr().out
+    ds = pencore.simulate("p2", "soil", 300.0, -30.0)
+    assert f"{float(ds['penetration_depth']):.6g} m" in out
+    assert "obliquity -30 deg" in out
+    with xr.open_dataset(tmp_path / "m.nc") as written:
+        assert written.attrs["obliquity_deg"] == -30.0
+        assert float(written.cm_x[-1]) == float(ds.cm_x[-1]) < 0.0
 
 
 # ------------------------------------------------------------ workflow configuration

@@ -43,7 +43,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         type=obliquity,
         default=0.0,
         metavar="DEG",
-        help="obliquity in deg, 0 <= DEG < 90 (default: 0)",
+        help="obliquity in deg, positive towards +x; -90 < DEG < 90 (default: 0)",
     )
     p.add_argument(
         "--yaw", type=number_type("yaw"), default=0.0, metavar="DEG", help="yaw in deg (default: 0)"
@@ -56,7 +56,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     )
     p.add_argument(
         "--tol",
-        type=velocity,
+        type=number_type("velocity", "tolerance"),
         default=5.0,
         metavar="M_S",
         help="width of the final bracket in m/s (default: 5)",

@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import argparse
 import errno
-import math
 import os
+import stat
 import sys
 import tempfile
 from collections.abc import Callable, Sequence
@@ -22,9 +22,10 @@ from pathlib import Path
 from typing import Any, NoReturn
 
 from pencore.errors import INTERRUPTED, InputError, WriteError
-from pencore.inputs.gate import brief, brief_path, load_yaml_text
+from pencore.inputs.gate import DECIMAL_WORDS, brief, brief_path, decimal, load_yaml_text
 from pencore.inputs.limits import number
-from pencore.io.atomic import check_replaceable, describe_os_error
+from pencore.inputs.numerics import NUMERIC_FIELDS
+from pencore.io.atomic import check_replaceable, describe_os_error, file_kind
 
 __all__ = [
     "PROG",
@@ -109,19 +110,18 @@ def one_line(text: str) -> str:
     return " ".join(str(text).split())
 
 
-def number_type(key: str, ok: Callable[[float], bool] = lambda v: True, allowed: str = "") -> Any:
+def number_type(key: str, label: str = "") -> Any:
     """Make an argparse ``type=`` for a number checked against the package's limits.
 
     Parameters
     ----------
     key : str
         Key into :data:`pencore.inputs.limits.LIMITS`, which gives the unit (m/s, deg,
-        rad/s, m, calibers) and the allowed range, e.g. ``"velocity"``, ``"yaw"``.
-    ok : callable, optional
-        A narrower condition the command line promises, on the value in the unit of
-        ``key``; checked only when ``allowed`` is given. Default: always true.
-    allowed : str, optional
-        Words for ``ok``, used in the error (``"a number of degrees in [0, 90)"``).
+        rad/s, m, calibers) and the allowed range, e.g. ``"velocity"``, ``"yaw"``: the
+        command line accepts what the API accepts.
+    label : str, optional
+        How the error names the value when it is not the quantity ``key`` names
+        (``"tolerance"`` for a width in m/s); default: the label of ``key``.
 
     Returns
     -------
@@ -132,23 +132,18 @@ def number_type(key: str, ok: Callable[[float], bool] = lambda v: True, allowed:
 
     def conv(text: str) -> float:
         try:
-            v = float(text)
-        except ValueError:
-            v = math.nan
-        if allowed and not (math.isfinite(v) and ok(v)):
-            raise argparse.ArgumentTypeError(f"must be {allowed}, got {brief(text)}")
-        try:
-            return number(text, key, allow_str=True)
+            return number(text, key, allow_str=True, label=label)
         except InputError as exc:
-            raise argparse.ArgumentTypeError(str(exc).split(": ", 1)[-1]) from None
+            raise argparse.ArgumentTypeError(str(exc)) from None
 
     return conv
 
 
 #: argparse type: a speed in m/s, > 0, up to the 10 km/s guard of ``LIMITS["velocity"]``.
 velocity = number_type("velocity")
-#: argparse type: an obliquity in deg, 0 <= DEG < 90.
-obliquity = number_type("obliquity", lambda v: 0.0 <= v < 90.0, "a number of degrees in [0, 90)")
+#: argparse type: an obliquity in deg, in ``LIMITS["obliquity"]`` (-90, 90); negative
+#: tilts the axis towards -x.
+obliquity = number_type("obliquity")
 
 
 def numerics_option(text: str) -> tuple[str, Any]:
@@ -158,9 +153,10 @@ def numerics_option(text: str) -> tuple[str, Any]:
     ----------
     text : str
         ``KEY=VALUE``, e.g. ``rtol=1e-6``, ``t_max=2`` (s), ``method=Radau``. The value is
-        read as a YAML scalar; text that reads as a number (YAML leaves ``1e-6`` a
-        string) becomes a float. Keys and ranges are checked later, by
-        :func:`pencore.inputs.numerics.resolve_numerics`.
+        read as a YAML scalar; text in plain decimal notation
+        (:data:`pencore.inputs.gate.DECIMAL`; YAML leaves ``1e-6`` a string) becomes a
+        float; other text given to a numeric key is refused here. Keys and ranges are
+        checked later, by :func:`pencore.inputs.numerics.resolve_numerics`.
 
     Returns
     -------
@@ -170,21 +166,32 @@ def numerics_option(text: str) -> tuple[str, Any]:
     Raises
     ------
     argparse.ArgumentTypeError
-        When ``text`` has no ``=`` or an empty key.
+        When ``text`` has no ``=``, an empty key, or an empty value (nothing, ``~`` or
+        ``null``: YAML's null, which would mean the default), or gives a numeric key text
+        that is not plain decimal.
     """
     key, sep, value = text.partition("=")
+    key = key.strip()
     if not sep or not key:
         raise argparse.ArgumentTypeError(f"must be KEY=VALUE (e.g. rtol=1e-6), got {brief(text)}")
     try:
         parsed = load_yaml_text(value, f"--numerics value of {brief(key)}")
     except InputError:
         parsed = value
+    if parsed is None:  # YAML's null: an empty value, ~ or null
+        raise argparse.ArgumentTypeError(
+            f"{brief(key)} has no value, got {brief(text)}; give KEY=VALUE, or leave the "
+            "option out for the default"
+        )
     if isinstance(parsed, str):  # YAML reads 1e-6 (no decimal point) as text
-        try:
-            parsed = float(parsed)
-        except ValueError:
-            pass
-    return key.strip(), parsed
+        value_f = decimal(parsed)
+        if value_f is not None:
+            parsed = value_f
+        elif key in NUMERIC_FIELDS:
+            raise argparse.ArgumentTypeError(
+                f"{key} must be a number {DECIMAL_WORDS}, got {brief(parsed)}"
+            )
+    return key, parsed
 
 
 def add_window_options(p: argparse.ArgumentParser) -> None:
@@ -294,12 +301,7 @@ def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
     except WriteError as exc:
         raise CommandFailure(str(exc), 2) from None
     parent = path.parent
-    if not parent.is_dir():
-        raise CommandFailure(
-            f"output directory {brief_path(parent)} of {brief_path(out)} does not exist; "
-            "create it first",
-            2,
-        )
+    _check_directory(parent, out)
     # a real probe: os.access alone is fooled by root, read-only mounts, ACLs
     try:
         fd, probe = tempfile.mkstemp(dir=parent, prefix=".pencore-probe-", suffix=".probe")
@@ -313,6 +315,36 @@ def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
             1 if exc.errno in (errno.ENOSPC, errno.EDQUOT) else 2,
         ) from None
     return path
+
+
+def _check_directory(parent: Path, out: str) -> None:
+    """Refuse an output directory ``parent`` (of ``out``) that is not a directory: one
+    that does not exist, or one that is, or lies under, a file of another kind."""
+    where = f"output directory {brief_path(parent)} of {brief_path(out)}"
+    try:
+        st = os.stat(parent)
+    except FileNotFoundError:
+        raise CommandFailure(f"{where} does not exist; create it first", 2) from None
+    except NotADirectoryError:  # a file where a directory of the path should be
+        blocker = next(
+            (a for a in reversed(parent.parents) if a.exists() and not a.is_dir()), parent
+        )
+        raise CommandFailure(
+            f"{where} is not a directory: {brief_path(blocker)} is {_kind(blocker)}", 2
+        ) from None
+    except OSError as exc:
+        raise CommandFailure(f"{where} cannot be reached: {exc.strerror or exc}", 2) from None
+    if not stat.S_ISDIR(st.st_mode):
+        raise CommandFailure(f"{where} is not a directory: it is {_kind(parent)}", 2)
+
+
+def _kind(path: Path) -> str:
+    """What the existing non-directory ``path`` is, in words."""
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        return "not a directory"
+    return "a regular file" if stat.S_ISREG(mode) else file_kind(mode)
 
 
 def cli_inputs(args: argparse.Namespace) -> dict[str, Any]:

@@ -31,7 +31,7 @@ simulate options (all SI, angles in degrees):
   --projectile NAME|FILE  p1..p4, validation projectiles, or a projectile YAML file
   --target NAME|FILE      soil, concrete, aluminium, or a target YAML file
   --velocity M_S          impact speed (m/s), > 0
-  --obliquity DEG         axis angle from the target normal (deg), in [0, 90)
+  --obliquity DEG         axis angle from the target normal (deg), in (-90, 90)
   --yaw DEG               velocity angle minus axis angle (deg)
   --omega RAD_S           initial angular velocity about +z (rad/s)
   --start X Y Z           initial nose-tip position (m)
@@ -85,7 +85,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         default=0.0,
         metavar="DEG",
         help="obliquity in deg: angle between the projectile axis and the "
-        "target normal, towards +x; 0 <= DEG < 90 (default: 0 deg)",
+        "target normal, positive towards +x; -90 < DEG < 90 (default: 0 deg)",
     )
     sim.add_argument(
         "--yaw",

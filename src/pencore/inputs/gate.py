@@ -17,11 +17,23 @@ before it can hang or exhaust the process:
 * when its aliases would expand it beyond :data:`MAX_YAML_NODES` nodes (an "alias
   bomb": a few hundred bytes that expand to billions of values);
 * when a mapping repeats a key (YAML would silently keep the last value).
+
+Text is a number only in plain ASCII decimal notation (:data:`DECIMAL`, read by
+:func:`decimal`): an optional sign, digits without leading zeros, an optional fraction
+and an optional exponent (``5``, ``-0.25``, ``.5``, ``1e6``, ``2.5E-3``), or the words
+``inf``, ``infinity`` and ``nan`` in any letter case. Everything else Python's
+:class:`float` reads is not a number: digit separators (``1_0``), digits of other
+scripts (``١``), surrounding blanks, leading zeros (``0750``). The YAML reader holds its
+own numbers to the same notation: a scalar that YAML 1.1 would read as a number in
+another form (``1_0``, ``0750``, which it reads as the octal 488, ``0x10``, ``0b11``, the
+base-60 ``1:30``) stays text, which no number accepts. YAML's own ``.inf``, ``-.inf``
+and ``.nan`` are numbers.
 """
 
 from __future__ import annotations
 
 import os
+import re
 import stat
 from typing import Any
 
@@ -33,6 +45,9 @@ from pencore.io.atomic import file_kind
 __all__ = [
     "brief",
     "brief_path",
+    "DECIMAL",
+    "DECIMAL_WORDS",
+    "decimal",
     "read_yaml",
     "load_yaml_text",
     "MAX_YAML_BYTES",
@@ -50,6 +65,28 @@ MAX_YAML_DEPTH = 64
 MAX_YAML_NODES = 2_000_000
 #: Longest quote of a user value in a message (characters of its ``repr``).
 MAX_QUOTE = 60
+
+
+#: The text :func:`decimal` reads as a number: plain ASCII decimal notation without
+#: leading zeros, or the words inf, infinity and nan (any letter case), signed or not.
+DECIMAL = re.compile(
+    r"[+-]?(?:(?:0|[1-9][0-9]*)(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?"
+    r"|[+-]?(?:inf|infinity|nan)",
+    re.IGNORECASE,
+)
+
+#: How messages describe the text :data:`DECIMAL` admits.
+DECIMAL_WORDS = "written in plain decimal (such as 5, -0.25 or 1.5e-3)"
+
+#: YAML's own words for the special floats (``.inf``, ``-.Inf``, ``.NAN``, ...).
+_YAML_SPECIAL = re.compile(r"[+-]?\.(?:inf|nan)", re.IGNORECASE)
+
+
+def decimal(text: str) -> float | None:
+    """``text`` as a float when it is plain ASCII decimal (:data:`DECIMAL`), else None."""
+    if not DECIMAL.fullmatch(text):
+        return None
+    return float(text)
 
 
 def brief(value: Any, limit: int = MAX_QUOTE) -> str:
@@ -118,6 +155,28 @@ class _BoundedLoader(yaml.SafeLoader):
                     line = key_node.start_mark.line + 1
                     raise _Refused(f"repeats the key {brief(key)} (line {line})")
         return super().construct_mapping(node, deep=deep)
+
+
+def _plain_number(construct: Any, *, special: bool = False) -> Any:
+    """A YAML constructor that builds the number ``construct`` builds when the scalar is
+    plain decimal (:data:`DECIMAL`; with ``special``, also YAML's ``.inf`` and ``.nan``)
+    and keeps any other form as its text."""
+
+    def build(loader: yaml.SafeLoader, node: Any) -> Any:
+        text = loader.construct_scalar(node)
+        if DECIMAL.fullmatch(text) or (special and _YAML_SPECIAL.fullmatch(text)):
+            return construct(loader, node)
+        return text
+
+    return build
+
+
+_BoundedLoader.add_constructor(
+    "tag:yaml.org,2002:int", _plain_number(yaml.SafeLoader.construct_yaml_int)
+)
+_BoundedLoader.add_constructor(
+    "tag:yaml.org,2002:float", _plain_number(yaml.SafeLoader.construct_yaml_float, special=True)
+)
 
 
 class _Refused(Exception):

@@ -1,6 +1,11 @@
 """Input checking: the valid range of every quantity a user gives pencore, and strict
 readers for numbers, integers and mappings.
 
+Text is read as a number only where a reader allows it (YAML files, mappings of a
+projectile or target, the command line) and only in the input gate's plain decimal
+notation (:data:`pencore.inputs.gate.DECIMAL`); the ranges then judge the value like any
+other (only a range that reaches infinity, such as ``max_wall``'s, admits ``inf``).
+
 Every user-facing entry point (the API, YAML files, the CLI) checks its inputs here, so
 a bad value stops with one :class:`InputError` whose message names the value, its unit
 and what is allowed, before any computation.
@@ -24,11 +29,11 @@ import difflib
 import math
 import numbers
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from pencore.errors import InputError
-from pencore.inputs.gate import brief
+from pencore.inputs.gate import DECIMAL_WORDS, brief, decimal
 
 __all__ = [
     "Limit",
@@ -340,11 +345,15 @@ def _type_name(value: Any) -> str:
     return type(value).__name__
 
 
-def number(value: Any, key: str, what: str = "", *, allow_str: bool = False) -> float:
+def number(
+    value: Any, key: str, what: str = "", *, allow_str: bool = False, label: str = ""
+) -> float:
     """``value`` as a float within ``LIMITS[key]``, else :class:`InputError`.
 
     Booleans are not numbers. Strings are refused unless ``allow_str`` (YAML reads
-    ``1e6`` without a decimal point as a string; YAML readers pass ``allow_str=True``).
+    ``1e6`` without a decimal point as a string, and a quoted ``"0.5"`` is a string too;
+    YAML readers and the command line pass ``allow_str=True``); then a string must be
+    plain decimal (:func:`pencore.inputs.gate.decimal`).
 
     Parameters
     ----------
@@ -355,17 +364,27 @@ def number(value: Any, key: str, what: str = "", *, allow_str: bool = False) -> 
     what : str
         Prefix naming where the value came from (``"projectile 'x'"``).
     allow_str : bool
-        Accept a string that reads as a number.
+        Accept a string in plain decimal notation.
+    label : str
+        How messages name the value, for a quantity that has the range of ``key`` but
+        is not it (a search tolerance in m/s); default: the label of ``key``.
 
     Returns
     -------
     float
     """
     lim = LIMITS[key]
+    if label:
+        lim = replace(lim, label=label)
     where = f"{what}: " if what else ""
     unit = f" {lim.unit}" if lim.unit and lim.unit != "SI" else ""
     v = as_float(value, allow_str)
     if v is None:
+        if allow_str and isinstance(value, str):
+            raise InputError(
+                f"{where}{lim.label} must be a number{unit and ' of' + unit} {DECIMAL_WORDS}, "
+                f"got {brief(value)}"
+            )
         raise InputError(
             f"{where}{lim.label} must be a number of{unit or ' (dimensionless)'}, "
             f"got {brief(value)} ({_type_name(value)})"
@@ -377,7 +396,8 @@ def number(value: Any, key: str, what: str = "", *, allow_str: bool = False) -> 
 
 def as_float(value: Any, allow_str: bool) -> float | None:
     """``value`` as a float when it is a real number (not a bool; a 0-d numeric array;
-    with ``allow_str``, a numeric string), else None."""
+    with ``allow_str``, a string in plain decimal notation,
+    :func:`pencore.inputs.gate.decimal`), else None."""
     if isinstance(value, bool):
         return None
     if isinstance(value, numbers.Real):
@@ -386,10 +406,7 @@ def as_float(value: Any, allow_str: bool) -> float | None:
         except OverflowError:  # an integer no float can hold: out of every range
             return math.inf if value > 0 else -math.inf
     if allow_str and isinstance(value, str):
-        try:
-            return float(value)
-        except ValueError:
-            return None
+        return decimal(value)
     if isinstance(value, numbers.Integral):  # numpy integers are Integral, not always Real
         try:
             return float(value)

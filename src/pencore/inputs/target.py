@@ -222,6 +222,19 @@ class Layer:
         return self.medium is None
 
 
+def _not_a_medium(k: int, medium: object) -> str:
+    """Why layer ``k``'s ``medium`` is refused, naming what was given; a name gets the
+    call that gives its medium."""
+    text = (
+        f"layer {k} medium must be a Medium or None (gap), "
+        f"got {type(medium).__name__} {brief(medium)}"
+    )
+    if isinstance(medium, str):
+        name = brief(medium) if len(medium) <= 30 else "NAME"
+        text += f"; for a named medium use pencore.get_target({name}).medium"
+    return text
+
+
 @dataclass(frozen=True)
 class Target:
     """A layered half-space, or a stack of plates, below ``y = 0``."""
@@ -244,7 +257,7 @@ class Target:
                     "medium (the first layer starts at the surface y = 0)"
                 )
             if not lay.is_gap and not isinstance(lay.medium, Medium):
-                raise TargetError(f"{what}: layer {k} medium must be a Medium or None (gap)")
+                raise TargetError(f"{what}: {_not_a_medium(k, lay.medium)}")
             if last and math.isinf(lay.thickness) and lay.thickness > 0:
                 continue
             if math.isinf(lay.thickness):
