@@ -11,6 +11,7 @@ builds the kernel arrays once. SI units throughout.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -88,7 +89,7 @@ class Problem:
         """Gauss points of the friction integral; 0 (no friction pass) when frictionless."""
         return self.numerics.n_gauss if not self.target.frictionless else 0
 
-    @property
+    @cached_property
     def band_length(self) -> float:
         """Meridian length (m) of the shortest surface band (``w / r`` of the loaded
         rings): the finest scale on which the contact loads vary as the body moves."""
@@ -96,7 +97,7 @@ class Problem:
         r = rings[:, 1]
         return float(np.min(rings[r > 0.0, 4] / r[r > 0.0]))
 
-    @property
+    @cached_property
     def thin_layers(self) -> np.ndarray:
         """The layers and gaps thinner than twice ``numerics.max_travel``, shape (k, 3):
         top and bottom heights ``y`` (m) and the half-width ``max(thickness,
