@@ -86,7 +86,7 @@ from pencore.kernels.state import (
     SI_N_RHS,
     SI_REV,
     STEP_UNDERFLOW,
-    layer_travel_bound,
+    layer_step_bound,
     lu_factor,
     lu_solve,
     normalise_quaternion,
@@ -260,7 +260,7 @@ def integrate_chunk(
     largest distance from its centre of mass to a surface ring; ``thin`` (k, 2) holds
     the top and bottom heights (m) of the target's thin layers and gaps, near which a step
     is bounded so that it cannot carry the body over one
-    (:func:`pencore.kernels.state.layer_travel_bound`). ``model`` is the kernel tuple of
+    (:func:`pencore.kernels.state.layer_step_bound`). ``model`` is the kernel tuple of
     :mod:`pencore.kernels.forces`; with the cavity shank model every accepted step extends its
     tip path (rejected steps do not), and the chunk ends early, to be called again with
     a larger path buffer, when the buffer is nearly full.
@@ -310,10 +310,8 @@ def integrate_chunk(
             # free flight: do not step past the first touch of the surface
             hmax = min(hmax, max(clear, 1e-6 * reach) / max(speed + wmag * reach, 1e-3))
         if thin.shape[0] > 0:
-            # near a thin layer or gap the body does not span: do not step over it
-            bound = layer_travel_bound(y, rings, thin)
-            if bound < np.inf:
-                hmax = min(hmax, bound / max(speed + wmag * reach, 1e-3))
+            # near a thin layer or gap: do not step over it
+            hmax = min(hmax, layer_step_bound(y, rings, thin, reach))
         h = min(h, hmax, t_max - t)
         in_target = clear <= 0.0
         if age >= jacobian_age or in_target != jac_in_target:

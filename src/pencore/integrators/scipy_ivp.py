@@ -14,9 +14,9 @@ Differences from the compiled integrator, all below the error tolerance:
 * the attitude quaternion is normalised inside the right-hand side rather than after each
   step;
 * the step bound ``max_travel`` (m) becomes a time bound ``max_travel / V0``; near a thin
-  layer the body does not span, the bound of
-  :func:`pencore.kernels.state.layer_travel_bound` is set as scipy's ``max_step`` before
-  every step (a subclass of the method that sets it; scipy reads it at every step);
+  layer the bound of :func:`pencore.kernels.state.layer_step_bound` is set as scipy's
+  ``max_step`` before every step (a subclass of the method that sets it; scipy reads it
+  at every step);
 * the step budget ``max_steps`` counts right-hand-side calls, :data:`CALLS_PER_STEP` to a
   step, and is enforced inside the right-hand side; the same subclass records every
   accepted step, so a run that ends on a budget reports where it got to.
@@ -36,7 +36,7 @@ from scipy.integrate import BDF, OdeSolver, Radau, solve_ivp
 from pencore.integrators.driver import RunGuard, RunResult
 from pencore.integrators.problem import Problem
 from pencore.kernels.forces import rhs_model
-from pencore.kernels.state import body_top, layer_travel_bound
+from pencore.kernels.state import body_top, layer_step_bound
 
 __all__ = ["CALLS_PER_STEP", "integrate_scipy"]
 
@@ -122,15 +122,9 @@ def integrate_scipy(
     max_step = max_travel / max(speed0, 1e-3)
 
     def step_bound(y: np.ndarray) -> float:
-        # the time bound of the next step: max_step, and near a thin layer the body
-        # does not span, the time any surface point needs to cross half of it
-        yn = state(y)
-        bound = float(compiled(layer_travel_bound, yn, rings, thin))
-        if not bound < math.inf:
-            return max_step
-        speed = math.sqrt(float(yn[7:10] @ yn[7:10]))
-        wmag = math.sqrt(float(yn[10:13] @ yn[10:13]))
-        return min(max_step, bound / max(speed + wmag * reach, 1e-3))
+        # the time bound of the next step: max_step, and near a thin layer that of
+        # pencore.kernels.state.layer_step_bound
+        return min(max_step, float(compiled(layer_step_bound, state(y), rings, thin, reach)))
 
     try:
         with guard, np.errstate(over="ignore"):  # scipy's numerical Jacobian probes wide steps

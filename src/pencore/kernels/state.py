@@ -169,6 +169,20 @@ def layer_travel_bound(y, rings, thin):
 
 
 @nb.njit(cache=True)
+def layer_step_bound(y, rings, thin, reach):
+    """Longest step (s) from state ``y`` that moves no surface point further than
+    :func:`layer_travel_bound`: a point moves at most ``|v| + |omega| reach`` (m/s),
+    ``reach`` (m) the body's largest distance from its centre of mass to a ring. ``inf``
+    when no thin layer bounds the step. Used by every integrator with a step control."""
+    bound = layer_travel_bound(y, rings, thin)
+    if not bound < np.inf:
+        return np.inf
+    speed = math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2)
+    wmag = math.sqrt(y[10] ** 2 + y[11] ** 2 + y[12] ** 2)
+    return bound / max(speed + wmag * reach, 1e-3)
+
+
+@nb.njit(cache=True)
 def perforated(y, rings, bounds):
     """True when the target is finite and every surface ring of state ``y`` lies below
     the rear face of its last plate (``bounds[-1, 1]``) while the centre of mass moves
