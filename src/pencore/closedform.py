@@ -18,6 +18,13 @@ The nose-entry phase is integrated exactly: with ``a1 = 0``, ``m d(V^2)/dz = -2 
 linear in ``V^2`` and solved by quadrature (:func:`nose_entry_speed`), so
 :func:`depth` is the exact depth of the DAFL model for normal impact, up to quadrature
 error, including the entry phase.
+
+Three-term laws (``a1 != 0``, the cavity-expansion form ``Y (A + B V/c + C V^2/c^2)`` of
+the metal-target literature) add the linear nose factor ``N1 = B1 / (pi a^2)``; the
+tunnel phase ``m V dV = -pi a^2 (a0 + a1 N1 V + a2 N* V^2) dz`` integrates in closed form
+(:func:`tunnel_depth`: a logarithm and an arctangent), and the entry phase, no longer
+linear in ``V^2``, is integrated numerically over the same band profile
+(:func:`nose_entry_speed`, scipy's ``solve_ivp`` at ``rtol = 1e-10``).
 """
 
 from __future__ import annotations
@@ -30,6 +37,7 @@ from pencore.inputs.geometry import Projectile
 from pencore.inputs.target import Medium
 
 __all__ = [
+    "linear_nose_factor",
     "axial_force",
     "tunnel_depth",
     "nose_entry_speed",
@@ -39,35 +47,80 @@ __all__ = [
 ]
 
 
-def _coeffs(medium: Medium) -> tuple[float, float]:
+def _coeffs3(medium: Medium) -> tuple[float, float, float]:
     c = list(medium.coefficients) + [0.0, 0.0, 0.0]
-    if any(x != 0.0 for x in c[3:]) or c[1] != 0.0:
-        raise ValueError("closed forms need sigma_n = a0 + a2 Vn^2 (a1 = 0, no higher terms)")
+    if any(x != 0.0 for x in c[3:]):
+        raise ValueError("closed forms need sigma_n = a0 + a1 Vn + a2 Vn^2 (no higher terms)")
     if not medium.frictionless:
         raise ValueError("closed forms are frictionless")
-    return c[0], c[2]
+    return c[0], c[1], c[2]
+
+
+def _coeffs(medium: Medium) -> tuple[float, float]:
+    a0, a1, a2 = _coeffs3(medium)
+    if a1 != 0.0:
+        raise ValueError("this closed form needs sigma_n = a0 + a2 Vn^2 (a1 = 0)")
+    return a0, a2
+
+
+def linear_nose_factor(projectile: Projectile, n: int = 4000) -> float:
+    """Linear nose factor ``N1`` (dimensionless): the axial force of the term ``a1 Vn`` on
+    the fully embedded nose at zero yaw is ``pi a^2 a1 N1 V``.
+
+    ``N1 = int 2 pi r na^2 dl / (pi a^2)`` over the nose (``na`` the axial component of the
+    unit normal), by the same band quadrature as the entry profile (``n`` bands; for a
+    tangent ogive of CRH 3 the value converges to 1e-7 by ``n = 4000``). A flat nose has
+    ``N1 = 1``, a hemisphere ``2/3``.
+    """
+    _, _, b1, _ = _entry_profile(projectile, n)
+    a = projectile.radius
+    return float(b1[-1] / (math.pi * a * a))
 
 
 def axial_force(projectile: Projectile, medium: Medium, velocity: float) -> float:
-    """Axial resistance (N) on the fully embedded nose at speed ``velocity`` (m/s)."""
-    a0, a2 = _coeffs(medium)
+    """Axial resistance (N) on the fully embedded nose at speed ``velocity`` (m/s):
+    ``pi a^2 (a0 + a1 N1 V + a2 N* V^2)``."""
+    a0, a1, a2 = _coeffs3(medium)
     a = projectile.radius
-    return math.pi * a * a * (a0 + projectile.nose_factor() * a2 * velocity**2)
+    lin = a1 * linear_nose_factor(projectile) * velocity if a1 != 0.0 else 0.0
+    return math.pi * a * a * (a0 + lin + projectile.nose_factor() * a2 * velocity**2)
 
 
 def tunnel_depth(projectile: Projectile, medium: Medium, v1: float) -> float:
-    """Distance (m) travelled after full nose embedment from speed ``v1`` (m/s) to rest."""
-    a0, a2 = _coeffs(medium)
+    """Distance (m) travelled after full nose embedment from speed ``v1`` (m/s) to rest.
+
+    Two-term law: ``(m / (2 pi a^2 N* a2)) ln(1 + N* a2 V1^2 / a0)``. Three-term law, with
+    ``k = N* a2``, ``b = N1 a1``, ``D = 4 k a0 - b^2 > 0``::
+
+        m / (pi a^2) [ ln((k V1^2 + b V1 + a0) / a0) / (2 k)
+                       - b / (k sqrt(D)) (atan((2 k V1 + b) / sqrt(D)) - atan(b / sqrt(D))) ]
+
+    (``int V dV / (k V^2 + b V + a0)``); ``D <= 0`` or ``k = 0`` by quadrature.
+    """
+    a0, a1, a2 = _coeffs3(medium)
     a = projectile.radius
     m = projectile.mass_properties().mass
     ns = projectile.nose_factor()
     if a0 == 0.0:
         raise ValueError("a0 = 0: the projectile never stops")
-    return m / (2.0 * math.pi * a * a * ns * a2) * math.log1p(ns * a2 * v1 * v1 / a0)
+    if a1 == 0.0:
+        return m / (2.0 * math.pi * a * a * ns * a2) * math.log1p(ns * a2 * v1 * v1 / a0)
+    k, b = ns * a2, linear_nose_factor(projectile) * a1
+    disc = 4.0 * k * a0 - b * b
+    scale = m / (math.pi * a * a)
+    if k > 0.0 and disc > 0.0:
+        r = math.sqrt(disc)
+        log_part = math.log1p((k * v1 + b) * v1 / a0) / (2.0 * k)
+        atan_part = b / (k * r) * (math.atan((2.0 * k * v1 + b) / r) - math.atan(b / r))
+        return scale * (log_part - atan_part)
+    from scipy.integrate import quad
+
+    val, _ = quad(lambda v: v / (a0 + b * v + k * v * v), 0.0, v1, epsabs=0.0, epsrel=1e-12)
+    return scale * val
 
 
 def _entry_profile(projectile: Projectile, n: int = 4000) -> tuple[np.ndarray, ...]:
-    """Tip depth z, A(z), B2(z) on a fine grid over the nose length."""
+    """Tip depth z, A(z), B1(z), B2(z) on a fine grid over the nose length."""
     rings = projectile.rings(n_nose=n, n_shank=1, n_face=max(1, n // 10))
     sel = rings.part != 1
     sel &= rings.na > 0  # nose surface and blunt face, not the rear face
@@ -79,8 +132,9 @@ def _entry_profile(projectile: Projectile, n: int = 4000) -> tuple[np.ndarray, .
     # band contributions, accumulated by tip depth (a band is loaded once its axial
     # position is below the surface)
     da = 2.0 * np.pi * w * na  # d(projected area) = 2 pi r dl na
+    db1 = 2.0 * np.pi * w * na**2
     db = 2.0 * np.pi * w * na**3
-    return s, np.cumsum(da), np.cumsum(db)
+    return s, np.cumsum(da), np.cumsum(db1), np.cumsum(db)
 
 
 def nose_entry_speed(
@@ -88,15 +142,19 @@ def nose_entry_speed(
 ) -> tuple[float, float]:
     """Speed (m/s) when the nose is fully embedded, and the tip depth (m) reached.
 
-    Solves ``m d(V^2)/dz = -2 (a0 A(z) + a2 B2(z) V^2)`` over the nose length. If the
-    projectile stops before full embedment, returns ``(0, z_stop)``.
+    Solves ``m d(V^2)/dz = -2 (a0 A(z) + a1 B1(z) V + a2 B2(z) V^2)`` over the nose
+    length: exactly per band piece when ``a1 = 0`` (linear in ``V^2``), else numerically
+    (:func:`_entry_three_term`). If the projectile stops before full embedment, returns
+    ``(0, z_stop)``.
     """
-    a0, a2 = _coeffs(medium)
+    a0, a1, a2 = _coeffs3(medium)
     m = projectile.mass_properties().mass
-    z, area, b2 = _entry_profile(projectile)
+    z, area, b1, b2 = _entry_profile(projectile)
     ln = projectile.nose_length
     if ln == 0.0:
         return velocity, 0.0
+    if a1 != 0.0:
+        return _entry_three_term(z, area, b1, b2, (a0, a1, a2), m, ln, velocity)
     # piecewise-constant A, B2 between band positions; exact exponential update of V^2
     v2 = velocity * velocity
     zprev = 0.0
@@ -115,6 +173,33 @@ def nose_entry_speed(
         if stopped_at is not None:
             return 0.0, zprev + stopped_at
     return math.sqrt(v2), ln
+
+
+def _entry_three_term(z, area, b1, b2, coeffs, m, ln, velocity) -> tuple[float, float]:
+    """Entry phase of a three-term law: ``du/dz = -2 (a0 A + a1 B1 sqrt(u) + a2 B2 u) / m``
+    for ``u = V^2``, with ``A, B1, B2`` interpolated linearly between the band positions of
+    the profile, integrated by scipy's ``solve_ivp`` (RK45, ``rtol = 1e-10``) to the end of
+    the nose or to rest (``u = 0``)."""
+    from scipy.integrate import solve_ivp
+
+    a0, a1, a2 = coeffs
+    zp = np.concatenate(([0.0], z))
+    ap, b1p, b2p = (np.concatenate(([0.0], c)) for c in (area, b1, b2))
+
+    def rhs(zz, y):
+        u = max(y[0], 0.0)
+        ak, b1k, b2k = (np.interp(zz, zp, c) for c in (ap, b1p, b2p))
+        return [-2.0 * (a0 * ak + a1 * b1k * math.sqrt(u) + a2 * b2k * u) / m]
+
+    def rest(_z, y):
+        return y[0]
+
+    rest.terminal = True
+    rest.direction = -1
+    sol = solve_ivp(rhs, (0.0, ln), [velocity * velocity], rtol=1e-10, atol=1e-9, events=rest)
+    if sol.status == 1:
+        return 0.0, float(sol.t_events[0][0])
+    return math.sqrt(max(float(sol.y[0, -1]), 0.0)), ln
 
 
 def _advance(v2, a, b, a0, a2, m, dz):

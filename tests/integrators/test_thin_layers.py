@@ -9,7 +9,7 @@ import pytest
 
 import pencore
 
-ROD = "aluminium_crh3"  # 71 mm long: shorter than the default step travel of 0.1 m
+ROD = "al_ogive_var4340"  # 71 mm long: shorter than the default step travel of 0.1 m
 
 
 def _plate(thickness: float) -> dict:

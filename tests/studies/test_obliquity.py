@@ -84,7 +84,7 @@ def test_comparison_statistics_by_hand():
 
 
 def test_map_has_the_line_of_sight_rule():
-    ds = ballistic_map("aluminium_crh3", "aluminium", [2.0], [0.0, 30.0], {"none": {}}, tol=4.0)
+    ds = ballistic_map("al_ogive_var4340", "aluminium", [2.0], [0.0, 30.0], {"none": {}}, tol=4.0)
     v0 = float(ds["v_bl"].sel(option="none", t_over_d=2.0, obliquity=0.0))
     v30 = float(ds["v_bl"].sel(option="none", t_over_d=2.0, obliquity=30.0))
     assert v30 > v0 > 0.0
@@ -95,4 +95,4 @@ def test_map_has_the_line_of_sight_rule():
         v30 / v0
     )
     with pytest.raises(InputError, match="unknown key"):
-        ballistic_map("aluminium_crh3", "aluminium", [2.0], [0.0], {"x": {"crater": 2.0}})
+        ballistic_map("al_ogive_var4340", "aluminium", [2.0], [0.0], {"x": {"crater": 2.0}})

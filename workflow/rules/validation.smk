@@ -14,10 +14,8 @@ validate(
     pd.read_csv(VALIDATION["table2"]["csv"], comment="#"),
     "../schemas/table2.schema.yaml",
 )
-validate(
-    pd.read_csv(VALIDATION["fig5"]["experiments_csv"], comment="#"),
-    "../schemas/fig5_experiments.schema.yaml",
-)
+for shot_table in VALIDATION["fig5"]["shots"]:
+    validate(pd.read_csv(shot_table, comment="#"), "../schemas/shot_table.schema.yaml")
 
 
 rule table2:
@@ -43,7 +41,7 @@ rule table2:
 
 rule fig5:
     input:
-        experiments=VALIDATION["fig5"]["experiments_csv"],
+        shots=VALIDATION["fig5"]["shots"],
     output:
         nc="results/validation/fig5.nc",
     log:

@@ -11,14 +11,25 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from pencore.plotting.style import _DEPTH, _VI, _c, new_figure, styled
+from pencore.plotting.style import (
+    _DEPTH,
+    _LINESTYLES,
+    _MARKERS,
+    _VI,
+    _c,
+    _pname,
+    new_figure,
+    styled,
+)
 
 __all__ = ["plot_table2", "plot_fig5", "plot_verification"]
 
 
+_ALUMINIUM = "Aluminium 6061-T6511 (rods and shots: Piekutowski et al. 1999; Forrestal & Piekutowski 2000)"
 _TARGET_TITLES = {
     "concrete": "Concrete (Forrestal et al. 1994)",
-    "aluminium": "Aluminium 6061-T6511 (Piekutowski et al. 1999)",
+    "aluminium": _ALUMINIUM,
+    "aluminium_3term": _ALUMINIUM,
     "soil": "Soil (Forrestal & Luk 1992)",
 }
 
@@ -77,83 +88,116 @@ def plot_table2(ds: xr.Dataset) -> Figure:
     return fig
 
 
+def _fig5_panels(ds: xr.Dataset) -> dict[tuple[float, float], list[str]]:
+    """Cases grouped into panels: one per target density and nose (CRH), in case order."""
+    panels: dict[tuple[float, float], list[str]] = {}
+    dens = ds["target_density"].values if "target_density" in ds.coords else None
+    for k, c in enumerate(ds["case"].values):
+        rho = float(dens[k]) if dens is not None else float("nan")
+        key = (round(rho, 6), round(float(ds["crh"].values[k]), 6))
+        panels.setdefault(key, []).append(str(c))
+    return panels
+
+
+_LAW_LABELS = {
+    "aluminium": "paper's Table 1 law",
+    "aluminium_3term": "source's three-term law",
+}
+
+
 @styled
 def plot_fig5(ds: xr.Dataset) -> Figure:
-    """Depth against impact velocity, one panel per target (paper Fig. 5).
+    """Depth against impact velocity, one panel per target and nose (paper Fig. 5).
 
-    Thin lines with dots: pencore; wide pale lines: the closed form; open symbols: experiments
-    (from the dataset's ``experiment`` dimension, when it has points).
+    Colour: the target's law; line style: the projectile. Lines with dots: pencore; wide
+    pale lines: the closed form with exact nose entry; dotted: the closed form with the
+    full nose force from first contact (the sources' Eq. 1). Measured shots: filled when
+    the projectile stayed rigid by its authors' limits, open when it deformed or eroded.
     """
-    targets = list(dict.fromkeys(str(t) for t in ds["target"].values))
-    fig = new_figure(4.0 * len(targets) + 0.6, 4.2)
-    axes = fig.subplots(1, len(targets), squeeze=False)[0]
-    colours = ["tab:blue", "tab:red", "tab:green", "tab:purple", "tab:brown", "tab:olive"]
-    markers = ["o", "s", "^", "D", "v", "P"]
+    from matplotlib.lines import Line2D
+
+    panels = _fig5_panels(ds)
+    ncol = 2 if len(panels) > 1 else 1
+    nrow = -(-len(panels) // ncol)
+    fig = new_figure(5.2 * ncol, 3.9 * nrow + 0.9)
+    axes = fig.subplots(nrow, ncol, squeeze=False).ravel()
+    v = ds["velocity"].values
     n_exp = ds.sizes.get("experiment", 0)
-    for ax, tgt in zip(axes, targets, strict=True):
-        sel = [
-            str(c)
-            for c, t in zip(ds["case"].values, ds["target"].values, strict=True)
-            if str(t) == tgt
-        ]
-        for k, c in enumerate(sel):
+    targets = list(dict.fromkeys(str(t) for t in ds["target"].values))
+    projectiles = list(dict.fromkeys(str(p) for p in ds["projectile"].values))
+    colour = {t: _c(k) for k, t in enumerate(targets)}
+    style = {p: _LINESTYLES[k % len(_LINESTYLES)] for k, p in enumerate(projectiles)}
+    marker = {p: _MARKERS[k % len(_MARKERS)] for k, p in enumerate(projectiles)}
+    for ax in axes[len(panels) :]:
+        ax.set_visible(False)
+    for ax, cases in zip(axes, panels.values(), strict=False):
+        shown = []
+        for c in cases:
             sub = ds.sel(case=c)
-            col, mk = colours[k % len(colours)], markers[k % len(markers)]
-            lab = _crh_label(float(sub["crh"])) or str(sub["label"].item())
-            v = ds["velocity"].values
-            # the two agree to a fraction of a percent: closed form as a wide pale band
-            # underneath, pencore as a thin line with dots on top
-            ok = np.isfinite(sub["closedform_depth"].values)
-            ax.plot(
-                v[ok],
-                sub["closedform_depth"].values[ok],
-                "-",
-                color=col,
-                lw=5.0,
-                alpha=0.25,
-                solid_capstyle="round",
-                label=f"{lab}, closed form",
-            )
+            tgt, prj = str(sub["target"].item()), str(sub["projectile"].item())
+            col, ls = colour[tgt], style[prj]
             ok = np.isfinite(sub["pencore_depth"].values)
-            ax.plot(
-                v[ok],
-                sub["pencore_depth"].values[ok],
-                "-",
-                marker=".",
-                color=col,
-                lw=1.0,
-                label=f"{lab}, pencore",
-            )
-            if n_exp:
-                e = ds["experiment_case"].values.astype(str) == c
-                if e.any():
-                    ax.plot(
-                        ds["experiment_velocity"].values[e],
-                        ds["experiment_depth"].values[e],
-                        mk,
-                        mfc="none",
-                        color=col,
-                        ls="none",
-                        label=f"{lab}, experiment",
-                    )
-        ax.set_title(_TARGET_TITLES.get(tgt, tgt), fontsize=10)
+            ax.plot(v[ok], sub["closedform_depth"].values[ok], "-", color=col, lw=5.0,
+                    alpha=0.22, solid_capstyle="round")  # fmt: skip
+            if "cavity_form_depth" in sub:
+                ax.plot(v[ok], sub["cavity_form_depth"].values[ok], ":", color=col, lw=1.2)
+            ax.plot(v[ok], sub["pencore_depth"].values[ok], ls, marker=".", ms=4, color=col,
+                    lw=1.0)  # fmt: skip
+            if prj not in shown:
+                shown.append(prj)
+        if n_exp:
+            for prj in shown:
+                e = ds["experiment_projectile"].values.astype(str) == prj
+                rigid = ds["experiment_rigid"].values.astype(bool)
+                for keep, fill in ((e & rigid, "k"), (e & ~rigid, "none")):
+                    ax.plot(ds["experiment_velocity"].values[keep],
+                            ds["experiment_depth"].values[keep], marker[prj], mfc=fill,
+                            mec="k", ms=5, ls="none")  # fmt: skip
+        first = ds.sel(case=cases[0])
+        tgt = str(first["target"].item())
+        title = _TARGET_TITLES.get(tgt, tgt)
+        crh = _crh_label(float(first["crh"]))
+        assumed = " (projectile assumed)" if tgt == "concrete" else ""
+        ax.set_title(f"{title}\n{crh}{assumed}", fontsize=9)
         ax.set_xlabel(_VI)
         ax.set_ylabel(_DEPTH)
         ax.set_xlim(left=0)
         ax.set_ylim(bottom=0)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7, frameon=False)
-        if not n_exp:
-            ax.text(
-                0.98,
-                0.02,
-                "no experimental points supplied",
-                transform=ax.transAxes,
-                ha="right",
-                va="bottom",
-                fontsize=7,
-                color="0.4",
-            )
+        handles = [
+            Line2D([], [], color=colour[t], lw=1.2, label=_LAW_LABELS.get(t, t))
+            for t in dict.fromkeys(str(ds.sel(case=c)["target"].item()) for c in cases)
+        ]
+        handles += [
+            Line2D(
+                [], [], color="0.3", ls=style[p], marker=marker[p], ms=5, mfc="0.3", label=_pname(p)
+            )  # fmt: skip
+            for p in shown
+        ]
+        ax.legend(handles=handles, fontsize=7, frameon=False, loc="upper left")
+    key = [
+        Line2D([], [], color="0.3", marker=".", lw=1.0, label="pencore (normal, no yaw)"),
+        Line2D([], [], color="0.3", lw=5.0, alpha=0.22, label="closed form, exact nose entry"),
+        Line2D(
+            [],
+            [],
+            color="0.3",
+            ls=":",
+            lw=1.2,
+            label="closed form, full nose force from contact (sources' Eq. 1)",
+        ),  # fmt: skip
+        Line2D([], [], color="k", marker="o", ls="none", label="measured, rigid"),
+        Line2D(
+            [],
+            [],
+            color="k",
+            marker="o",
+            mfc="none",
+            ls="none",
+            label="measured, deformed or eroded",
+        ),  # fmt: skip
+    ]
+    fig.legend(handles=key, loc="outside lower center", ncol=3, fontsize=7, frameon=False)
     return fig
 
 

@@ -77,50 +77,73 @@ def plot_residual_velocity(ds: xr.Dataset) -> Figure:
 
 @styled
 def plot_measurements(ds: xr.Dataset) -> Figure:
-    """Measured against predicted, one panel per quantity, with the error statistics.
+    """Measured against predicted, one panel per quantity, log-log, with the statistics.
 
-    The 1:1 line and +-10 % / +-20 % bands; each data file in its own marker; the text
-    box gives n, the mean relative error with its 95 % interval, the RMS and the largest
-    relative error (pencore.studies.measurements.error_statistics).
+    The 1:1 line and +-10 % / +-20 % bands; marker: the data file; colour: the target law;
+    filled: a shot whose projectile stayed rigid by its authors' limits, open: one that
+    deformed or eroded (left out of the statistics). The box gives, per data file and law,
+    the rigid shots' number, bias (mean of predicted / measured - 1) and mean |error|
+    (pencore.studies.measurements.summary).
     """
     quantities = list(ds["quantity"].values)
-    fig = new_figure(5.2 * len(quantities), 4.8)
+    fig = new_figure(5.6 * len(quantities), 7.0)
+    rigid_all = ds["rigid"].values.astype(bool) if "rigid" in ds else None
+    targets = list(dict.fromkeys(str(t) for t in ds["target"].values))
+    datasets = list(dict.fromkeys(str(d) for d in ds["dataset"].values))
     for iq, q in enumerate(quantities):
         ax = fig.add_subplot(1, len(quantities), iq + 1)
-        sel = ds["quantity_of_shot"].values == q
+        sel = (ds["quantity_of_shot"].values == q) & np.isfinite(ds["measured"].values)
         sub = ds.isel(shot=np.flatnonzero(sel))
         units = str(sub["measured_units"].values[0]).replace("m s-1", "m/s")
         m, p = sub["measured"].values, sub["predicted"].values
-        lo, hi = 0.0, 1.1 * float(max(m.max(), p.max()))
-        x = np.array([lo, hi])
+        rigid = rigid_all[sel] if rigid_all is not None else np.ones(m.shape, bool)
+        pos = (m > 0) & (p > 0)
+        lo, hi = 0.7 * float(min(m[pos].min(), p[pos].min())), 1.4 * float(max(m.max(), p.max()))
+        x = np.geomspace(lo, hi, 50)
         ax.plot(x, x, "-", color="0.3", lw=0.8, label="predicted = measured")
         for f, alpha in ((0.1, 0.18), (0.2, 0.09)):
             ax.fill_between(x, x * (1 - f), x * (1 + f), color="0.5", alpha=alpha, lw=0,
                             label=f"±{f:.0%}")  # fmt: skip
-        for k, name in enumerate(dict.fromkeys(sub["dataset"].values)):
-            d = sub["dataset"].values == name
-            label = str(sub["label"].values[d][0]) if "label" in sub else name
-            ax.plot(m[d], p[d], _MARKERS[k % len(_MARKERS)], color=_c(k), ms=6, label=label)
-        s = {k[5:]: float(ds[k].sel(quantity=q)) for k in ds.data_vars if k.startswith("stat_")}
-        ax.text(
-            0.03,
-            0.97,
-            f"n = {s['n']:.0f}\nmean error {s['mean_rel_error']:+.1%} "
-            f"(95 % CI {s['ci95_lo']:+.1%} to {s['ci95_hi']:+.1%})\n"
-            f"RMS {s['rms_rel_error']:.1%}, largest {s['max_abs_rel_error']:.1%}",
-            transform=ax.transAxes,
-            va="top",
-            fontsize=8,
-            bbox={"facecolor": "white", "edgecolor": "0.7", "alpha": 0.9},
-        )
+        lines = []
+        for name in datasets:
+            for tgt in targets:
+                d = (sub["dataset"].values == name) & (sub["target"].values == tgt)
+                if not d.any():
+                    continue
+                mk, col = _MARKERS[datasets.index(name) % len(_MARKERS)], _c(targets.index(tgt))
+                label = f"{sub['label'].values[d][0]}: {tgt}"
+                ax.plot(m[d & rigid], p[d & rigid], mk, color=col, ms=6, ls="none", label=label)
+                ax.plot(m[d & ~rigid], p[d & ~rigid], mk, mfc="none", color=col, ms=5,
+                        ls="none", alpha=0.7)  # fmt: skip
+                g = f"{name}/{tgt}"
+                if "summary_n" in ds and g in ds["group"].values:
+                    st = ds.sel(group=g, model="predicted", subset="rigid")
+                    n = int(st["summary_n"])
+                    lines.append(
+                        f"{name}, {tgt}: "
+                        + (
+                            f"n = {n}, bias {float(st['summary_bias']):+.1%}, "
+                            f"mean |e| {float(st['summary_mean_abs_rel_error']):.1%}"
+                            if n
+                            else "no rigid shot"
+                        )
+                    )
+        ax.text(0.02, 0.98, "rigid shots:\n" + "\n".join(lines), transform=ax.transAxes,
+                va="top", fontsize=6.5,
+                bbox={"facecolor": "white", "edgecolor": "0.7", "alpha": 0.9})  # fmt: skip
+        ax.plot([], [], "o", mfc="none", color="0.4", ls="none",
+                label="open: projectile deformed or eroded")  # fmt: skip
         qname = q.replace("_", " ")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
         ax.set_xlabel(f"Measured {qname} ({units})")
         ax.set_ylabel(f"pencore {qname} ({units})")
         ax.set_xlim(lo, hi)
         ax.set_ylim(lo, hi)
         ax.set_aspect("equal")
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=7, frameon=False, loc="lower right")
+        ax.grid(alpha=0.3, which="both")
+    handles, labels = fig.axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="outside lower center", fontsize=6.5, frameon=False, ncol=1)
     return fig
 
 

@@ -14,17 +14,43 @@ and one measured quantity:
 
 Projectile and target come from the file's entry in the configuration (the file names
 neither when its source does not), or from optional ``projectile`` / ``target`` columns.
+An entry may name several targets (``targets``: the same medium under different laws);
+every shot is then run once per target, and the statistics are kept per law.
+
+A *shot table* (:data:`SHOT_COLUMNS`) is the other accepted form: the shots of a
+penetration paper as it prints them, at normal incidence (the target face normal to the
+line of flight), with ``striking_velocity_m_s``, ``depth_m``, the angles of attack
+``pitch_deg`` and ``yaw_deg`` read from the X-rays, the authors' remark, a ``rigid`` flag
+set by the authors' stated limits, and the table and page. The two angles of attack
+combine into the total angle between axis and velocity,
+``delta = atan(sqrt(tan^2 pitch + tan^2 yaw))``; an axisymmetric body at normal
+incidence is rotated about the target normal so that this angle lies in pencore's x-y
+plane, which is exact, and run with the axis tilted by ``delta`` and the velocity along
+the normal (:func:`pencore.inputs.conventions.normal_impact_angles`, ``axis_tilted``:
+``obliquity = delta``, ``yaw = -delta``). Shots flagged not rigid are run and kept,
+but left out of the statistics (the model is of a rigid body).
+
+Beside pencore's 3-D run, every depth shot gets two closed forms of the same law at the
+striking speed, normal incidence, no yaw: :func:`pencore.closedform.depth` (the model's
+exact 1-D depth, nose entry included) and :func:`pencore.closedform.tunnel_depth` from
+the striking speed (the cavity-expansion literature's form, with the full nose force
+from first contact: Piekutowski et al. 1999, Eq. 1, and Forrestal & Piekutowski 2000 use
+it). 3-D against the exact closed form is the solver's and the angles' share of the
+error; the exact closed form against the literature's is the nose entry's; the
+literature's form against the measurement is the law's.
 
 Only numbers read from a citable source belong in these files; none are filled in by
-guess. What ships today: paper Table 2, the five soil shots of Forrestal & Luk (1992)
-as the paper quotes them (``config/table2.csv``). Concrete depths (e.g. Forrestal et al.
-1994; Frew et al. 1998) and perforation residual velocities (e.g. Hanchak et al. 1992)
-could not be read from a source available to the project, so no file carries them;
-a user who has the tables adds a file in this format and an entry in the config.
+guess. What ships: paper Table 2, the five soil shots of Forrestal & Luk (1992) as the
+paper quotes them (``config/table2.csv``), and the aluminium shots of Piekutowski et al.
+(1999) and Forrestal & Piekutowski (2000) read from the papers' tables
+(``config/aluminium_*_shots.csv``). A user who has another table adds a file in one of
+these forms and an entry in the config.
 
 Error statistics (:func:`error_statistics`): relative error ``e = predicted / measured - 1``
 per shot (shots measured at 0, e.g. no perforation, have only an absolute error); mean,
-RMS and largest ``|e|``, and the mean with a 95 % Student-t interval.
+RMS and largest ``|e|``, and the mean with a 95 % Student-t interval. The validation
+summary (:func:`summary`) gives, per data set and law, the rigid shots' mean ``|e|``,
+bias (mean ``e``) and worst ``e`` of pencore and of both closed forms.
 """
 
 from __future__ import annotations
@@ -40,8 +66,10 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
+from pencore import closedform
 from pencore.errors import InputError
-from pencore.inputs.library import get_target
+from pencore.inputs.conventions import normal_impact_angles
+from pencore.inputs.library import get_projectile, get_target
 from pencore.inputs.limits import check_keys
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.target import Target
@@ -52,9 +80,14 @@ from pencore.studies.perforation import slab_target
 __all__ = [
     "QUANTITIES",
     "NEAR_SURFACE_KEYS",
+    "SHOT_COLUMNS",
+    "MODELS",
     "load_measurements",
+    "read_shot_table",
+    "total_angle_of_attack",
     "measured_vs_predicted",
     "error_statistics",
+    "summary",
     "statistics_by_option",
 ]
 
@@ -68,7 +101,28 @@ QUANTITIES: dict[str, tuple[str, str, str]] = {
 }
 REQUIRED = ("test", "velocity_m_s", "obliquity_deg", "yaw_deg", "source")
 DEPTH_MEASURES = {"path_length": "path_length", "vertical_depth": "penetration_depth"}
-ENTRY_KEYS = ("name", "csv", "projectile", "target", "depth_measure", "label")
+ENTRY_KEYS = ("name", "csv", "projectile", "target", "targets", "depth_measure", "label")
+
+#: Columns of a shot table (a penetration paper's shots as printed; see the module notes).
+SHOT_COLUMNS = (
+    "shot",
+    "projectile",
+    "striking_velocity_m_s",
+    "depth_m",
+    "pitch_deg",
+    "yaw_deg",
+    "rigid",
+    "table",
+    "page",
+    "source",
+)
+
+#: Predictions compared with each depth shot in :func:`summary`: variable -> label.
+MODELS = {
+    "predicted": "pencore (3-D, measured angles)",
+    "closedform_depth": "closed form, exact nose entry",
+    "cavity_form_depth": "closed form, full nose force from contact",
+}
 
 
 def _entry(entry: Mapping[str, Any]) -> dict[str, Any]:
@@ -79,6 +133,21 @@ def _entry(entry: Mapping[str, Any]) -> dict[str, Any]:
         if not isinstance(entry.get(k), str) or not entry[k]:
             raise InputError(f"measurements entry needs a non-empty {k!r}, got {entry.get(k)!r}")
     e = {"depth_measure": "path_length", "label": entry["name"], **entry}
+    if "targets" in e:
+        t = e["targets"]
+        if "target" in e:
+            raise InputError(f"measurements {e['name']}: give target or targets, not both")
+        if (
+            not isinstance(t, Sequence)
+            or isinstance(t, str)
+            or not t
+            or not all(isinstance(x, str) and x for x in t)
+            or len(set(t)) != len(t)
+        ):
+            raise InputError(
+                f"measurements {e['name']}: targets must be a non-empty list of distinct "
+                f"target names, got {t!r}"
+            )
     if e["depth_measure"] not in DEPTH_MEASURES:
         raise InputError(
             f"measurements {e['name']}: depth_measure must be one of "
@@ -107,6 +176,97 @@ def read_data_csv(path: str | Path, columns: Sequence[str], label: str) -> pd.Da
     return df
 
 
+def total_angle_of_attack(pitch_deg: float, yaw_deg: float) -> float:
+    """Angle (deg) between axis and velocity from the pitch and yaw angles of attack (deg)
+    measured in two perpendicular planes: ``atan(sqrt(tan^2 pitch + tan^2 yaw))``."""
+    tp, ty = math.tan(math.radians(pitch_deg)), math.tan(math.radians(yaw_deg))
+    return math.degrees(math.atan(math.hypot(tp, ty)))
+
+
+def _shot_row(r: pd.Series, where: str) -> dict[str, Any]:
+    """One row of a shot table in the common form (impact angles mapped, see the notes)."""
+    for c in ("table", "page", "source", "projectile"):
+        if pd.isna(r[c]) or not str(r[c]).strip():
+            raise InputError(f"{where}: no {c}")
+    for c in ("striking_velocity_m_s", "depth_m"):
+        v = r[c]
+        if c == "depth_m" and pd.isna(v):
+            continue  # no depth printed (e.g. a channel length only): kept, compared with nothing
+        if not isinstance(v, (int, float, np.number)) or not math.isfinite(float(v)) or v <= 0:
+            raise InputError(f"{where}: {c} must be a finite number > 0, got {v!r}")
+    angles = []
+    for c in ("pitch_deg", "yaw_deg"):
+        v = r[c]
+        if pd.isna(v):
+            angles.append(0.0)  # not measured: taken as none, recorded as NaN below
+            continue
+        if not isinstance(v, (int, float, np.number)) or not abs(float(v)) < 45.0:
+            raise InputError(f"{where}: {c} must be a number in (-45, 45) deg, got {v!r}")
+        angles.append(float(v))
+    rigid = r["rigid"]
+    if isinstance(rigid, str) and rigid.strip().lower() in ("true", "false"):
+        rigid = rigid.strip().lower() == "true"
+    if not isinstance(rigid, (bool, np.bool_)):
+        raise InputError(f"{where}: rigid must be true or false, got {rigid!r}")
+    obliquity, yaw = normal_impact_angles(total_angle_of_attack(*angles), "axis_tilted")
+    remark = r.get("remark", "")
+    return {
+        "test": r["shot"],
+        "projectile": str(r["projectile"]),
+        "velocity_m_s": float(r["striking_velocity_m_s"]),
+        "obliquity_deg": obliquity,
+        "yaw_deg": yaw,
+        "measured_depth_m": float(r["depth_m"]),
+        "unmeasured": bool(pd.isna(r["depth_m"])),
+        "pitch_measured_deg": float(r["pitch_deg"]),
+        "yaw_measured_deg": float(r["yaw_deg"]),
+        "rigid": bool(rigid),
+        "remark": "" if pd.isna(remark) else str(remark),
+        "source": f"{r['source']}, Table {r['table']}, p. {r['page']}",
+    }
+
+
+def read_shot_table(path: str | Path, label: str | None = None) -> pd.DataFrame:
+    """A shot table (:data:`SHOT_COLUMNS`) in the common form of :func:`load_measurements`'s
+    files: ``test``, ``projectile``, ``velocity_m_s``, ``obliquity_deg`` and ``yaw_deg``
+    (mapped from the angles of attack, see the module notes), ``measured_depth_m`` (NaN
+    where the source prints none; ``unmeasured`` is then true), the measured angles, the
+    ``rigid`` flag, the ``remark`` and the ``source`` with its table and page.
+
+    Raises
+    ------
+    InputError
+        One line naming the file and row: a missing column, a duplicate shot, a value out
+        of range, a row with no table, page or source.
+    """
+    label = label or f"shot table {str(path)!r}"
+    df = read_data_csv(path, SHOT_COLUMNS, label)
+    dup = df["shot"].duplicated()
+    if dup.any():
+        raise InputError(f"{label}: duplicate shots {sorted(set(df['shot'][dup]))}")
+    return pd.DataFrame(
+        [_shot_row(r, f"{label} row {i + 1} (shot {r['shot']!r})") for i, r in df.iterrows()]
+    )
+
+
+def _read_rows(e: Mapping[str, Any]) -> pd.DataFrame:
+    """The entry's file in the common form (a shot table by :func:`read_shot_table`)."""
+    label = f"measurements {e['name']}"
+    df = read_data_csv(e["csv"], (), label)
+    if "striking_velocity_m_s" in df.columns:
+        return read_shot_table(e["csv"], label)
+    missing = [c for c in REQUIRED if c not in df.columns]
+    if missing:
+        raise InputError(f"{label}: {e['csv']} lacks column(s) {missing}")
+    return df.assign(
+        pitch_measured_deg=np.nan,
+        yaw_measured_deg=np.nan,
+        rigid=True,
+        remark="",
+        unmeasured=False,
+    )
+
+
 def load_measurements(entry: Mapping[str, Any]) -> pd.DataFrame:
     """Rows of one data file, checked, with ``projectile`` and ``target`` filled in.
 
@@ -114,12 +274,15 @@ def load_measurements(entry: Mapping[str, Any]) -> pd.DataFrame:
     ----------
     entry : mapping
         ``name``, ``csv`` (path), and ``projectile`` / ``target`` (library names) unless
-        the file has those columns; ``depth_measure`` (default ``path_length``).
+        the file has those columns, or ``targets`` (a list: every shot once per target);
+        ``depth_measure`` (default ``path_length``).
 
     Returns
     -------
     pandas.DataFrame
-        One row per shot with ``quantity`` (a :data:`QUANTITIES` name) and ``measured``.
+        One row per shot (and target) with ``quantity`` (a :data:`QUANTITIES` name),
+        ``measured``, ``rigid`` and the measured angles of attack (NaN where the file
+        has none).
 
     Raises
     ------
@@ -128,48 +291,61 @@ def load_measurements(entry: Mapping[str, Any]) -> pd.DataFrame:
         or non-finite number, or a row with no source; the message names the row.
     """
     e = _entry(entry)
-    path = Path(e["csv"])
-    df = read_data_csv(path, REQUIRED, f"measurements {e['name']}")
+    df = _read_rows(e)
     qcols = [c for c in QUANTITIES if c in df.columns]
+    targets = e.get("targets") or [None]
     rows = []
     for i, r in df.iterrows():
         where = f"measurements {e['name']} row {i + 1} (test {r['test']!r})"
         if not isinstance(r["source"], str) or not r["source"].strip():
             raise InputError(f"{where}: no source")
         given = [c for c in qcols if pd.notna(r[c])]
+        if r["unmeasured"]:
+            given = ["measured_depth_m"]
         if len(given) != 1:
             raise InputError(f"{where}: exactly one measured value needed, got {given or 'none'}")
         col = given[0]
-        for c in ("velocity_m_s", "obliquity_deg", "yaw_deg", col):
+        checked = ("velocity_m_s", "obliquity_deg", "yaw_deg")
+        for c in checked if r["unmeasured"] else (*checked, col):
             v = r[c]
             if not isinstance(v, (int, float, np.number)) or not math.isfinite(float(v)):
                 raise InputError(f"{where}: {c} must be a finite number, got {v!r}")
-        if float(r["velocity_m_s"]) <= 0 or float(r[col]) < 0:
+        if float(r["velocity_m_s"]) <= 0 or float(r[col]) < 0:  # NaN passes: unmeasured
             raise InputError(f"{where}: velocity must be > 0 and {col} >= 0")
         proj = r.get("projectile") if pd.notna(r.get("projectile", np.nan)) else e.get("projectile")
-        targ = r.get("target") if pd.notna(r.get("target", np.nan)) else e.get("target")
-        if not proj or not targ:
-            raise InputError(f"{where}: no projectile/target (column or config entry)")
-        thick = r.get("thickness_m", np.nan)
-        if QUANTITIES[col][0] == "residual_velocity" and not (pd.notna(thick) and float(thick) > 0):
-            raise InputError(f"{where}: a residual velocity needs thickness_m > 0")
-        rows.append(
-            {
-                "shot": f"{e['name']}:{r['test']}",
-                "dataset": e["name"],
-                "label": e["label"],
-                "projectile": str(proj),
-                "target": str(targ),
-                "thickness_m": float(thick) if pd.notna(thick) else math.inf,
-                "velocity_m_s": float(r["velocity_m_s"]),
-                "obliquity_deg": float(r["obliquity_deg"]),
-                "yaw_deg": float(r["yaw_deg"]),
-                "quantity": QUANTITIES[col][0],
-                "measured": float(r[col]),
-                "depth_measure": e["depth_measure"],
-                "source": str(r["source"]),
-            }
-        )
+        for tgt in targets:
+            targ = tgt or (
+                r.get("target") if pd.notna(r.get("target", np.nan)) else e.get("target")
+            )
+            if not proj or not targ:
+                raise InputError(f"{where}: no projectile/target (column or config entry)")
+            thick = r.get("thickness_m", np.nan)
+            if QUANTITIES[col][0] == "residual_velocity" and not (
+                pd.notna(thick) and float(thick) > 0
+            ):
+                raise InputError(f"{where}: a residual velocity needs thickness_m > 0")
+            shot = f"{e['name']}:{r['test']}" if tgt is None else f"{e['name']}:{tgt}:{r['test']}"
+            rows.append(
+                {
+                    "shot": shot,
+                    "dataset": e["name"],
+                    "label": e["label"],
+                    "projectile": str(proj),
+                    "target": str(targ),
+                    "thickness_m": float(thick) if pd.notna(thick) else math.inf,
+                    "velocity_m_s": float(r["velocity_m_s"]),
+                    "obliquity_deg": float(r["obliquity_deg"]),
+                    "yaw_deg": float(r["yaw_deg"]),
+                    "pitch_measured_deg": float(r["pitch_measured_deg"]),
+                    "yaw_measured_deg": float(r["yaw_measured_deg"]),
+                    "rigid": bool(r["rigid"]),
+                    "remark": str(r["remark"]),
+                    "quantity": QUANTITIES[col][0],
+                    "measured": float(r[col]),
+                    "depth_measure": e["depth_measure"],
+                    "source": str(r["source"]),
+                }
+            )
     return pd.DataFrame(rows)
 
 
@@ -204,6 +380,34 @@ def _predict(
     if row["quantity"] == "residual_velocity":
         return (float(ds.attrs["residual_velocity"]) if outcome == "perforated" else 0.0), outcome
     return float(ds[DEPTH_MEASURES[row["depth_measure"]]]), outcome
+
+
+def _closed_forms(row: pd.Series, cache: dict) -> tuple[float, float]:
+    """The two closed-form depths (m) of a depth shot into a half-space at its striking
+    speed (normal incidence, no yaw): exact nose entry, and full nose force from contact.
+    NaN for other quantities, finite targets, or laws the closed forms do not cover."""
+    if row["quantity"] != "penetration_depth" or math.isfinite(row["thickness_m"]):
+        return math.nan, math.nan
+    key = (row["projectile"], row["target"])
+    if key not in cache:
+        layers = get_target(row["target"]).layers
+        cache[key] = (get_projectile(row["projectile"]), layers[0].medium, len(layers) == 1)
+    proj, medium, single = cache[key]
+    if not single:
+        return math.nan, math.nan
+    try:
+        v = row["velocity_m_s"]
+        return closedform.depth(proj, medium, v), closedform.tunnel_depth(proj, medium, v)
+    except ValueError:  # friction, higher terms, near-surface options: no closed form
+        return math.nan, math.nan
+
+
+def _rel(measured: np.ndarray, predicted: np.ndarray) -> np.ndarray:
+    """predicted / measured - 1, NaN where the measured value is 0."""
+    rel = np.full(measured.shape, np.nan)
+    pos = measured > 0  # False for NaN (no printed value)
+    rel[pos] = predicted[pos] / measured[pos] - 1.0
+    return rel
 
 
 def error_statistics(measured: Sequence[float], predicted: Sequence[float]) -> dict[str, float]:
@@ -242,12 +446,21 @@ def measured_vs_predicted(
 ) -> xr.Dataset:
     """Run every shot of every data file and compare with the measurement.
 
+    Parameters
+    ----------
+    entries : sequence of mappings
+        Data files (see :func:`load_measurements`).
+    numerics : Numerics or mapping, optional
+        Solver settings for every run.
+
     Returns
     -------
     xarray.Dataset
         On dimension ``shot``: inputs, ``measured``, ``predicted``, ``rel_error``
-        (predicted / measured - 1), ``outcome``, ``source``; per quantity (dimension
-        ``quantity``) the :func:`error_statistics`.
+        (predicted / measured - 1), ``outcome``, ``source``, ``rigid``, the measured
+        angles of attack, the two closed-form depths (:data:`MODELS`) and their relative
+        errors; per quantity (dimension ``quantity``) the :func:`error_statistics` of the
+        rigid shots; per data set and law (dimension ``group``) the :func:`summary`.
     """
     if not entries:
         raise InputError("measurements: no data files configured")
@@ -260,6 +473,10 @@ def measured_vs_predicted(
     cache: dict = {}
     pred, outcome = zip(*(_predict(r, num, cache) for _, r in df.iterrows()), strict=True)
     df["predicted"], df["outcome"] = pred, outcome
+    cf_cache: dict = {}
+    closed = [_closed_forms(r, cf_cache) for _, r in df.iterrows()]
+    df["closedform_depth"] = [c[0] for c in closed]
+    df["cavity_form_depth"] = [c[1] for c in closed]
 
     def a(units: str, long_name: str) -> dict[str, str]:
         return {"units": units, "long_name": long_name}
@@ -270,13 +487,23 @@ def measured_vs_predicted(
     units = df["quantity"].map({q: u for q, u, _ in QUANTITIES.values()})
     same = "(units: variable measured_units)"
     measured = df["measured"].to_numpy()
-    rel = np.full(measured.shape, np.nan)
-    rel[measured > 0] = df["predicted"].to_numpy()[measured > 0] / measured[measured > 0] - 1.0
+    rigid = df["rigid"].to_numpy(dtype=bool)
+    depth_m = a("m", "")
     ds = xr.Dataset(
         {
             "velocity": ("shot", df["velocity_m_s"].to_numpy(), a("m s-1", "impact velocity")),
             "obliquity": ("shot", df["obliquity_deg"].to_numpy(), a("degree", "obliquity")),
             "yaw": ("shot", df["yaw_deg"].to_numpy(), a("degree", "yaw angle")),
+            "pitch_measured": (
+                "shot",
+                df["pitch_measured_deg"].to_numpy(),
+                a("degree", "measured pitch angle of attack (NaN: none in the file)"),
+            ),
+            "yaw_measured": (
+                "shot",
+                df["yaw_measured_deg"].to_numpy(),
+                a("degree", "measured yaw angle of attack (NaN: none in the file)"),
+            ),
             "thickness": (
                 "shot",
                 df["thickness_m"].to_numpy(),
@@ -284,7 +511,21 @@ def measured_vs_predicted(
             ),
             "measured": ("shot", measured, {"long_name": f"measured value {same}"}),
             "predicted": ("shot", df["predicted"].to_numpy(), {"long_name": f"pencore {same}"}),
-            "rel_error": ("shot", rel, a("1", "predicted / measured - 1 (NaN: measured 0)")),
+            "rel_error": (
+                "shot",
+                _rel(measured, df["predicted"].to_numpy()),
+                a("1", "predicted / measured - 1 (NaN: measured 0)"),
+            ),
+            "rigid": (
+                "shot",
+                rigid.astype(np.int8),
+                {
+                    "long_name": "1: the projectile stayed rigid by its authors' limits, "
+                    "0: it did not (run, kept, left out of the statistics)",
+                    "flag_values": np.array([0, 1], dtype=np.int8),
+                    "flag_meanings": "not_rigid rigid",
+                },
+            ),
             "measured_units": text(units),
             "quantity_of_shot": text(df["quantity"]),
             "dataset": text(df["dataset"]),
@@ -293,31 +534,114 @@ def measured_vs_predicted(
             "target": text(df["target"]),
             "depth_measure": text(df["depth_measure"]),
             "outcome": text(outcome),
+            "remark": text(df["remark"]),
             "source": text(df["source"]),
         },
         coords={"shot": df["shot"].to_numpy().astype(str)},
     )
+    for var, long_name in (
+        ("closedform_depth", "closed-form depth, exact nose entry (pencore.closedform.depth)"),
+        (
+            "cavity_form_depth",
+            "closed-form depth, full nose force from contact (pencore.closedform.tunnel_depth)",
+        ),
+    ):
+        values = df[var].to_numpy(dtype=float)
+        ds[var] = ("shot", values, {**depth_m, "long_name": f"{long_name}; normal, no yaw"})
+        ds[f"{var}_rel_error"] = (
+            "shot",
+            _rel(measured, values),
+            a("1", f"{var} / measured - 1"),
+        )
     quantities = sorted(df["quantity"].unique())
     st = {}
     for q in quantities:
-        sel = df["quantity"] == q
+        sel = (df["quantity"] == q).to_numpy() & rigid & np.isfinite(measured)
         st[q] = error_statistics(df["measured"][sel], df["predicted"][sel])
     for k in next(iter(st.values())):
         # the absolute error has the units of its quantity (variable measured_units), so
         # it carries no single CF units attribute; the other statistics are dimensionless
         attrs = (
-            a("1", k.replace("_", " "))
+            a("1", k.replace("_", " ") + " (rigid shots)")
             if k != "mean_abs_error"
-            else {"long_name": f"mean |predicted - measured| {same}"}
+            else {"long_name": f"mean |predicted - measured| {same} (rigid shots)"}
         )
         ds[f"stat_{k}"] = ("quantity", [st[q][k] for q in quantities], attrs)
     ds = ds.assign_coords(quantity=("quantity", np.array(quantities, dtype=str)))
+    ds = ds.merge(summary(ds))
     ds.attrs.update(
         title="pencore against published measurements",
         entries_json=json.dumps([_entry(e) for e in entries], sort_keys=True),
         numerics_json=json.dumps(asdict(num), sort_keys=True),
     )
     return ds
+
+
+def summary(ds: xr.Dataset) -> xr.Dataset:
+    """The validation summary: per data set and law, how each model meets the shots.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A :func:`measured_vs_predicted` result (its per-shot variables).
+
+    Returns
+    -------
+    xarray.Dataset
+        On ``group`` (``dataset/target``), ``model`` (:data:`MODELS`) and ``subset``
+        (``rigid``: the shots whose projectile stayed rigid by its authors' limits, the
+        model's own domain; ``all``: every shot with a measured value, deformed and
+        eroding projectiles included, for comparison only): ``summary_n`` (shots
+        compared), ``summary_mean_abs_rel_error`` (mean ``|e|``), ``summary_bias`` (mean
+        ``e``) and ``summary_worst_rel_error`` (the ``e`` of largest magnitude, signed),
+        ``e = predicted / measured - 1``; on ``group``, ``summary_n_not_rigid``.
+    """
+    group = np.array(
+        [f"{d}/{t}" for d, t in zip(ds["dataset"].values, ds["target"].values, strict=True)]
+    )
+    groups = list(dict.fromkeys(group))
+    rigid = ds["rigid"].values.astype(bool)
+    models = list(MODELS)
+    subsets = {"rigid": rigid, "all": np.ones_like(rigid)}
+    shape = (len(groups), len(models), len(subsets))
+    out = {k: np.full(shape, np.nan) for k in ("n", "mean", "bias", "worst")}
+    n_out = np.zeros(len(groups))
+    for ig, g in enumerate(groups):
+        in_g = group == g
+        n_out[ig] = np.count_nonzero(in_g & ~rigid)
+        for im, m in enumerate(models):
+            rel = ds["rel_error" if m == "predicted" else f"{m}_rel_error"].values
+            for js, keep in enumerate(subsets.values()):
+                e = rel[in_g & keep & np.isfinite(rel)]
+                out["n"][ig, im, js] = e.size
+                if e.size:
+                    out["mean"][ig, im, js] = np.mean(np.abs(e))
+                    out["bias"][ig, im, js] = np.mean(e)
+                    out["worst"][ig, im, js] = e[np.argmax(np.abs(e))]
+
+    def a(long_name: str) -> dict[str, str]:
+        return {"units": "1", "long_name": long_name}
+
+    dims = ("group", "model", "subset")
+    return xr.Dataset(
+        {
+            "summary_n": (dims, out["n"], a("shots compared")),
+            "summary_n_not_rigid": ("group", n_out, a("shots whose projectile did not stay rigid")),
+            "summary_mean_abs_rel_error": (dims, out["mean"], a("mean |predicted / measured - 1|")),
+            "summary_bias": (dims, out["bias"], a("mean (predicted / measured - 1)")),
+            "summary_worst_rel_error": (
+                dims,
+                out["worst"],
+                a("predicted / measured - 1 of largest magnitude"),
+            ),
+            "model_label": ("model", np.array([MODELS[m] for m in models], dtype=str)),
+        },
+        coords={
+            "group": np.array(groups, dtype=str),
+            "model": np.array(models, dtype=str),
+            "subset": np.array(list(subsets), dtype=str),
+        },
+    )
 
 
 def statistics_by_option(
@@ -362,12 +686,13 @@ def statistics_by_option(
     rel = np.full(pred.shape, np.nan)
     pos = measured > 0
     rel[:, pos] = pred[:, pos] / measured[pos] - 1.0
+    rigid = df["rigid"].to_numpy(dtype=bool)
     groups = sorted({f"{t}/{q}" for t, q in zip(df["target"], df["quantity"], strict=True)})
     key = np.array([f"{t}/{q}" for t, q in zip(df["target"], df["quantity"], strict=True)])
     stats: dict[str, np.ndarray] = {}
     for i in range(len(names)):
         for g, grp in enumerate(groups):
-            sel = key == grp
+            sel = (key == grp) & rigid & np.isfinite(measured)
             for k, v in error_statistics(measured[sel], pred[i, sel]).items():
                 stats.setdefault(k, np.full((len(names), len(groups)), np.nan))[i, g] = v
     ds = xr.Dataset(

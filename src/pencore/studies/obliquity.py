@@ -15,7 +15,7 @@ pencore's ratio at the same ``t/d`` (linear interpolation between the map's thic
 columns; rows outside the map get NaN) and with ``sec(theta)``. None of the measured
 plates or projectiles is in pencore's library (6082, 2060, 6055, 7017, 7085 aluminium,
 and a steel; APM2 bullets and cores), so pencore's ratio is that of an analog -- the
-library's 7.1 mm CRH-3 steel rod in the library aluminium law -- and the comparison is of
+library's 7.11 mm CRH-3 steel rod in the library aluminium law -- and the comparison is of
 the shape of ``V_bl(theta)``, not of its level. Statistics per material class and per
 option (:func:`pencore.studies.measurements.error_statistics` on the ratio).
 """

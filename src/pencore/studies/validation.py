@@ -5,8 +5,8 @@
   depth measures; the candidate closest to the paper's predicted column is selected and
   reported.
 * :func:`fig5` - penetration depth against impact velocity into concrete and aluminium
-  (paper Fig. 5), with the closed-form depth beside it and experimental points when
-  supplied.
+  (paper Fig. 5), with both closed forms beside it and the measured shots of the sources
+  (each run at its measured impact by :mod:`pencore.studies.measurements`).
 * :func:`verification` - pencore against :func:`pencore.closedform.depth` for normal,
   frictionless impact over a velocity range (verification, not validation).
 
@@ -19,6 +19,7 @@ import json
 import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import asdict
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -33,6 +34,7 @@ from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.target import Medium
 from pencore.run.impact import prepare, simulate
 from pencore.studies.common import _attrs
+from pencore.studies.measurements import read_shot_table
 
 __all__ = [
     "fig5",
@@ -207,17 +209,15 @@ def _depth_grid(
 
 # ----------------------------------------------------------------------------- Fig. 5
 
-FIG5_EXPERIMENT_COLUMNS = ("target", "projectile", "velocity_m_s", "depth_m", "source")
-
 
 def fig5(
     cases: Iterable[Mapping[str, Any]] | Mapping[str, Mapping[str, Any]],
     velocities: Sequence[float],
     numerics: Numerics | Mapping[str, Any] | None = None,
     *,
-    experiments: pd.DataFrame | None = None,
+    shots: Sequence[str | Path] = (),
 ) -> xr.Dataset:
-    """Penetration depth against impact velocity (paper Fig. 5).
+    """Penetration depth against impact velocity (paper Fig. 5), with the measured shots.
 
     Parameters
     ----------
@@ -227,90 +227,107 @@ def fig5(
         Impact velocities (m/s), shared by all cases; each case runs those within its
         ``[v_min, v_max]``, the rest are NaN.
     numerics : Numerics or mapping, optional
-    experiments : pandas.DataFrame, optional
-        Measured points with columns ``target, projectile, velocity_m_s, depth_m, source``;
-        may be empty. Each point must match a case by (projectile, target); pencore is
-        also run at each point's velocity.
+    shots : sequence of paths
+        Shot tables (:func:`pencore.studies.measurements.read_shot_table`); every shot's
+        projectile must be the projectile of at least one case. The shots are drawn, not
+        run here: :func:`pencore.studies.measurements.measured_vs_predicted` runs each at
+        its measured impact.
 
     Returns
     -------
     xarray.Dataset
-        ``pencore_depth``, ``pencore_path_length``, ``closedform_depth``, ``rel_diff`` on
-        ``(case, velocity)``; and on ``experiment`` the measured points
-        (``experiment_case``, ``experiment_velocity``, ``experiment_depth``,
-        ``experiment_source``, ``experiment_pencore_depth``, ``experiment_rel_diff``).
+        On ``(case, velocity)``: ``pencore_depth``, ``pencore_path_length``,
+        ``closedform_depth`` (exact nose entry), ``cavity_form_depth`` (full nose force from
+        contact: :func:`pencore.closedform.tunnel_depth` from the impact speed, the form of
+        Piekutowski et al. 1999, Eq. 1) and ``rel_diff``; on ``experiment`` the measured
+        shots (``experiment_shot``, ``experiment_projectile``, ``experiment_velocity``,
+        ``experiment_depth`` (NaN where the source prints none), ``experiment_rigid``,
+        ``experiment_remark``, ``experiment_source``).
+
+    Raises
+    ------
+    InputError
+        A bad case, velocity or shot table, or a shot whose projectile no case draws.
     """
     cs = normalise_cases(cases)
     v = _velocity_axis(velocities)
     num = resolve_numerics(numerics)
     ds = _depth_grid(cs, v, num)
-
-    exp = (
-        experiments
-        if experiments is not None
-        else pd.DataFrame(columns=list(FIG5_EXPERIMENT_COLUMNS))
+    cavity = np.full(ds["closedform_depth"].shape, np.nan)
+    density = np.full(len(cs), np.nan)
+    for ic, c in enumerate(cs):
+        proj, medium = get_projectile(c["projectile"]), _half_space_medium(c["target"])
+        density[ic] = medium.density
+        for iv, vel in enumerate(v):
+            if c["v_min"] <= vel <= c["v_max"]:
+                cavity[ic, iv] = closedform.tunnel_depth(proj, medium, float(vel))
+    ds["cavity_form_depth"] = (
+        ("case", "velocity"),
+        cavity,
+        _attrs(
+            "m",
+            "closed-form depth with the full nose force from first contact "
+            "(pencore.closedform.tunnel_depth; Piekutowski et al. 1999, Eq. 1)",
+        ),
     )
-    missing = [c for c in FIG5_EXPERIMENT_COLUMNS if c not in exp.columns]
-    if missing:
-        raise InputError(f"experiments lack column(s) {', '.join(missing)}")
-    by_key = {(c["projectile"], c["target"]): c["name"] for c in cs}
-    e_case, e_v, e_d, e_src, e_pen = [], [], [], [], []
-    prepared: dict[str, Any] = {}
-    for k, row in exp.reset_index(drop=True).iterrows():
-        key = (str(row["projectile"]), str(row["target"]))
-        if key not in by_key:
-            raise InputError(
-                f"experiment row {k}: (projectile, target) = {key} matches no Fig. 5 case; "
-                f"cases: {sorted(by_key)}"
-            )
-        vel = float(row["velocity_m_s"])
-        if not (math.isfinite(vel) and vel > 0):
-            raise InputError(f"experiment row {k}: velocity must be > 0 m/s, got {vel!r}")
-        name = by_key[key]
-        if name not in prepared:
-            prepared[name] = prepare(key[0], key[1], num)
-        sim = simulate(key[0], key[1], vel, prepared=prepared[name])
-        e_case.append(name)
-        e_v.append(vel)
-        e_d.append(float(row["depth_m"]))
-        e_src.append(str(row["source"]))
-        e_pen.append(float(sim["penetration_depth"]))
-    e_d_arr = np.asarray(e_d, dtype=float)
-    e_pen_arr = np.asarray(e_pen, dtype=float)
-    ds["experiment_case"] = (
+    ds = ds.assign_coords(
+        target_density=("case", density, _attrs("kg m-3", "target density (NaN: not given)"))
+    )
+    table = (
+        pd.concat([read_shot_table(f) for f in shots], ignore_index=True)
+        if shots
+        else pd.DataFrame(columns=["test", "projectile", "velocity_m_s", "measured_depth_m"])
+    )
+    drawn = {c["projectile"] for c in cs}
+    stray = sorted(set(table["projectile"]) - drawn)
+    if stray:
+        raise InputError(
+            f"Fig. 5 shots of projectile(s) {stray} match no case; cases draw {sorted(drawn)}"
+        )
+
+    def col(name: str, dtype: Any = object) -> np.ndarray:
+        return np.asarray(table[name] if name in table else [], dtype=dtype)
+
+    ds["experiment_shot"] = ("experiment", col("test").astype(str).astype(object))
+    ds["experiment_shot"].attrs["long_name"] = "shot id as printed by its source"
+    ds["experiment_projectile"] = (
         "experiment",
-        np.asarray(e_case, dtype=object),
-        {"long_name": "Fig. 5 case of the measured point"},
+        col("projectile"),
+        {"long_name": "library projectile of the shot"},
     )
     ds["experiment_velocity"] = (
         "experiment",
-        np.asarray(e_v, dtype=float),
-        _attrs("m s-1", "measured impact velocity"),
+        col("velocity_m_s", float),
+        _attrs("m s-1", "measured striking velocity"),
     )
-    ds["experiment_depth"] = ("experiment", e_d_arr, _attrs("m", "measured penetration depth"))
+    ds["experiment_depth"] = (
+        "experiment",
+        col("measured_depth_m", float),
+        _attrs("m", "measured penetration depth (NaN: none printed)"),
+    )
+    ds["experiment_rigid"] = (
+        "experiment",
+        col("rigid", bool).astype(np.int8),
+        {
+            "long_name": "1: rigid by its authors' limits, 0: deformed or eroded",
+            "flag_values": np.array([0, 1], dtype=np.int8),
+            "flag_meanings": "not_rigid rigid",
+        },
+    )
+    ds["experiment_remark"] = ("experiment", col("remark"), {"long_name": "authors' remark"})
     ds["experiment_source"] = (
         "experiment",
-        np.asarray(e_src, dtype=object),
-        {"long_name": "provenance: paper, derived or assumed"},
+        col("source"),
+        {"long_name": "publication, table and page of the shot"},
     )
-    ds["experiment_pencore_depth"] = (
-        "experiment",
-        e_pen_arr,
-        _attrs("m", "pencore depth at the measured impact velocity"),
-    )
-    with np.errstate(divide="ignore", invalid="ignore"):
-        ds["experiment_rel_diff"] = (
-            "experiment",
-            (e_pen_arr - e_d_arr) / e_d_arr,
-            _attrs("1", "(pencore - measured) / measured"),
-        )
     ds.attrs.update(
         title="Paper Fig. 5: penetration depth against impact velocity, concrete and "
         "aluminium targets",
-        n_experiments=len(e_case),
-        note="Projectiles are assumed (the paper's text does not give them) until the "
-        "published geometry and points are supplied; experimental points come from the "
-        "experiments CSV.",
+        n_experiments=int(table.shape[0]),
+        note="Aluminium: the measured rods and shots of Piekutowski et al. (1999) and "
+        "Forrestal & Piekutowski (2000); the paper's Table 1 law ('aluminium') and its "
+        "source's three-term law ('aluminium_3term'). Concrete: projectiles assumed (the "
+        "source's shots and projectiles were not found).",
     )
     return ds
 
