@@ -41,6 +41,7 @@ print(json.dumps(build_info()))
 
 def compile_kernels(out: Path) -> bool:
     """Compile every kernel variant for the portable target into ``out``; True when done."""
+    out = out.resolve()
     tmp = out.with_name(out.name + ".partial")
     shutil.rmtree(tmp, ignore_errors=True)
     env = {k: v for k, v in os.environ.items() if k not in _UNSET}

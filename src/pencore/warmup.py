@@ -1,18 +1,21 @@
-"""Compile and cache every numba kernel once, as an install step.
+"""Compile and cache every numba kernel once, ahead of the first run.
 
-pencore's kernels are compiled on first use and cached on disk (``cache=True``; in
-``__pycache__`` next to the sources, or under ``NUMBA_CACHE_DIR``). A fresh clone, a CI
-run or the first jobs of a reproduction would otherwise each pay ~55 s of compilation
-before their first result (on the 2-core benchmark machine; the default path compiles
-nearly every kernel, ``benchmarks/bench_compile.py``), and say so once on stderr
-(:func:`pencore.run.impact._compile_notice`). ``python -m pencore.warmup`` runs one short
-trajectory of every kernel variant (the default DAFL on rings with the Rosenbrock
-integrator, the cavity and factor shank models, the panel surface and the explicit
-integrator), so that afterwards a fresh process loads the kernels from the cache
-(``benchmarks/bench_startup.py`` measures both). On a cold cache it says so once too,
-at its first variant: the variants share one process, and the notice is once per process.
+An installed pencore loads its kernels compiled: the build step (``setup.py``) runs this
+module with ``NUMBA_CPU_NAME=generic`` and ships the result with the package
+(:mod:`pencore.kernels.cache`). Where those do not fit (another numba, Python or
+architecture, a changed kernel source, a damaged file) the kernels are compiled on first
+use and cached on disk (``__pycache__`` next to the sources, ``NUMBA_CACHE_DIR``, or the
+user-wide cache), which costs ~45 s of CPU on the 2-core benchmark machine
+(``benchmarks/bench_compile.py``) and is said once on stderr
+(:func:`pencore.kernels.cache.compile_notice`). ``python -m pencore.warmup`` pays that ahead:
+it runs one short trajectory of every kernel variant (the default DAFL on rings with the
+Rosenbrock integrator, the cavity and factor shank models, the panel surface and the
+explicit integrator), so that afterwards a fresh process loads the kernels from a cache
+(``benchmarks/bench_startup.py`` measures both); with fitting shipped kernels it only
+loads them. On a cold cache it says so once too, at its first variant: the variants share
+one process, and the notice is once per process.
 
-Run: ``python -m pencore.warmup`` (the README's two set-up commands and ``.ci/run`` do).
+Run: ``python -m pencore.warmup`` (``setup.py``'s build step does, for the shipped kernels).
 """
 
 from __future__ import annotations
