@@ -24,6 +24,7 @@ def _child(code: str, cache) -> subprocess.CompletedProcess:
     """Run ``code`` in a fresh interpreter whose numba cache is ``cache``."""
     env = {k: v for k, v in os.environ.items() if k != "NUMBA_DISABLE_JIT"}
     env["NUMBA_CACHE_DIR"] = str(cache)
+    env["PENCORE_NO_SHIPPED_KERNELS"] = "1"  # a cold cache, whatever the package ships
     done = subprocess.run(
         [sys.executable, "-c", code], env=env, capture_output=True, text=True, timeout=120
     )

@@ -50,6 +50,7 @@ __all__ = [
     "PACKAGE",
     "PORTABLE_CPU",
     "SHIPPED",
+    "NO_SHIPPED_ENV",
     "KernelCache",
     "build_info",
     "cache_dir_of",
@@ -78,6 +79,10 @@ PORTABLE_CPU = "generic"
 #: process are saved into (the shipped kernels of a wheel); the local cache and the
 #: shipped kernels are then neither read nor written.
 BUILD_ENV = "PENCORE_KERNEL_BUILD"
+
+#: Environment variable that, set to ``1``, leaves the shipped kernels unused (the
+#: compile benchmarks and tests measure and check a first compile with it).
+NO_SHIPPED_ENV = "PENCORE_NO_SHIPPED_KERNELS"
 
 #: What a process that is about to compile the kernels says on stderr (once).
 COMPILE_NOTICE = (
@@ -274,7 +279,8 @@ class KernelCache:
         )
         self._local = cache_dir_of(source.parent)
         shipped = SHIPPED / source.parent.name
-        self._shipped = None if os.environ.get(BUILD_ENV) else shipped
+        unused = os.environ.get(BUILD_ENV) or os.environ.get(NO_SHIPPED_ENV) == "1"
+        self._shipped = None if unused else shipped
         self._enabled = True
 
     def __repr__(self) -> str:
