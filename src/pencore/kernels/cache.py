@@ -28,6 +28,11 @@ A cache that does not fit (another CPU family, numba or Python, an older source)
 used; one that is damaged (a truncated or garbage data file, an emptied index: a disk
 that filled, an interrupted copy) is discarded. Either way the kernels are compiled as on
 a first use, with :data:`COMPILE_NOTICE`, never an error.
+
+The local cache is looked in first, so kernels tuned for this CPU, once compiled
+(``PENCORE_NO_SHIPPED_KERNELS=1 python -m pencore.warmup``), take the place of the
+shipped ones; the twelve reference runs give the same bits with either
+(``benchmarks/reference_runs.py``).
 """
 
 from __future__ import annotations
