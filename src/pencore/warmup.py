@@ -15,11 +15,19 @@ explicit integrator), so that afterwards a fresh process loads the kernels from 
 loads them. On a cold cache it says so once too, at its first variant: the variants share
 one process, and the notice is once per process.
 
-Run: ``python -m pencore.warmup`` (``setup.py``'s build step does, for the shipped kernels).
+``python -m pencore.warmup --host`` compiles them tuned for this CPU instead, leaving the
+shipped kernels unused (``PENCORE_NO_SHIPPED_KERNELS=1``): later processes load those
+first. Tuned kernels ran the benchmark trajectory about 2-3 % faster than the portable
+ones, at the edge of the noise of the 2-core benchmark machine (``docs/performance.md``),
+for one compile (~45 s of CPU).
+
+Run: ``python -m pencore.warmup [--host]`` (``setup.py``'s build step runs it, for the
+shipped kernels).
 """
 
 from __future__ import annotations
 
+import os
 import sys
 import time
 from collections.abc import Sequence
@@ -52,10 +60,19 @@ def warmup(verbose: bool = True) -> float:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Entry point of ``python -m pencore.warmup``; returns the exit status."""
-    if list(argv if argv is not None else sys.argv[1:]):
-        print("usage: python -m pencore.warmup (takes no options)", file=sys.stderr)
+    """Entry point of ``python -m pencore.warmup [--host]``; returns the exit status."""
+    args = list(argv if argv is not None else sys.argv[1:])
+    if args not in ([], ["--host"]):
+        print("usage: python -m pencore.warmup [--host]", file=sys.stderr)
         return 2
+    if args:
+        if "pencore.kernels" in sys.modules:  # its compiled functions have chosen already
+            print(
+                "pencore warmup: --host needs a fresh process (python -m pencore.warmup --host)",
+                file=sys.stderr,
+            )
+            return 2
+        os.environ["PENCORE_NO_SHIPPED_KERNELS"] = "1"  # read when the kernels are defined
     total = warmup()
     print(f"pencore warmup: kernels compiled and cached in {total:.1f} s")
     return 0

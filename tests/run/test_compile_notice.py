@@ -155,3 +155,40 @@ def test_warmup_says_it_once(fresh_notice, monkeypatch, capsys):
     err = capsys.readouterr().err
     assert err.count(COMPILE_NOTICE) == 1
     assert len(fresh_notice) == len(warmup.VARIANTS)
+
+
+# python -m pencore.warmup --host, with the compile itself left out: the kernels defined
+# after it leave the shipped (portable) kernels unused, so the warm-up compiles for this CPU
+HOST = """
+import sys
+from pencore import warmup
+warmup.warmup = lambda verbose=True: 0.0
+status = warmup.main(["--host"])
+from pencore.kernels.state import speed_of
+print(status, speed_of._cache._shipped)
+"""
+
+
+def test_warmup_host_leaves_the_shipped_kernels_unused(tmp_path):
+    env = {k: v for k, v in os.environ.items() if not k.startswith("PENCORE_")}
+    env["NUMBA_CACHE_DIR"] = str(tmp_path)
+    done = subprocess.run(
+        [sys.executable, "-c", HOST], env=env, capture_output=True, text=True, timeout=120
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.split()[-2:] == ["0", "None"]
+
+
+@pytest.mark.parametrize("argv", [["--hots"], ["--host", "x"], ["-h"]])
+def test_warmup_refuses_other_options(argv, capsys):
+    from pencore import warmup
+
+    assert warmup.main(argv) == 2
+    assert capsys.readouterr().err.startswith("usage: python -m pencore.warmup [--host]")
+
+
+def test_warmup_host_needs_a_fresh_process(capsys):
+    from pencore import warmup
+
+    assert warmup.main(["--host"]) == 2  # this process has defined its kernels already
+    assert "needs a fresh process" in capsys.readouterr().err
