@@ -34,6 +34,23 @@ def test_every_compiled_module_is_in_a_guarded_folder():
     assert compiled <= guarded, compiled - guarded
 
 
+def test_every_cached_compiled_function_has_the_kernel_cache():
+    # a compiled module that forgot use_kernel_cache(globals()) would keep numba's own
+    # cache: no shipped kernels, and a damaged file would raise again
+    import importlib
+
+    from numba.core.dispatcher import Dispatcher
+
+    found = []
+    for f in cache.compiled_sources():
+        module = importlib.import_module(f"pencore.{f.parent.name}.{f.stem}")
+        for value in vars(module).values():
+            if isinstance(value, Dispatcher) and value.py_func.__module__ == module.__name__:
+                found.append(value)
+                assert isinstance(value._cache, cache.KernelCache), value
+    assert len(found) > 50  # the pattern still finds the compiled functions
+
+
 def test_guard_clears_a_stale_numba_cache_dir(tmp_path):
     # with NUMBA_CACHE_DIR (clusters, read-only installs) the caches live there, not in
     # __pycache__: a planted cache file under an out-of-date stamp must be dropped on
