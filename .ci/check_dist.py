@@ -1,6 +1,7 @@
 #!/usr/bin/env python
-"""Check a built wheel and sdist: every module of src/pencore and the shipped data are in
-the wheel, and the sdist holds the sources, README, LICENSE and pyproject.toml.
+"""Check a built wheel and sdist: every module of src/pencore, the shipped data and the
+compiled kernels of the build step (setup.py) are in the wheel, and the sdist holds the
+sources, README, LICENSE and pyproject.toml (and no compiled kernels).
 
     python .ci/check_dist.py DIST_DIR
 
@@ -27,6 +28,9 @@ def main(dist: Path) -> int:
     wanted |= {p.relative_to(src).as_posix() for p in (src / "pencore").rglob("data/*.yaml")}
     in_wheel = set(zipfile.ZipFile(wheels[0]).namelist())
     missing = sorted(wanted - in_wheel)
+    compiled = "pencore/kernels/compiled/"
+    if not any(n.startswith(compiled) and n.endswith(".nbc") for n in in_wheel):
+        missing.append(f"{compiled}*.nbc (the kernels compiled by setup.py's build step)")
     with tarfile.open(sdists[0]) as tar:
         names = {n.split("/", 1)[1] for n in tar.getnames() if "/" in n}
     missing += [
@@ -34,6 +38,7 @@ def main(dist: Path) -> int:
         for n in ("README.md", "LICENSE", "pyproject.toml", "src/pencore/__init__.py")
         if n not in names
     ]
+    missing += [f"sdist: no compiled kernels, but {n}" for n in names if "/compiled/" in n]
     for m in missing:
         print(f"check_dist: missing {m}")
     if not missing:

@@ -16,8 +16,8 @@ python benchmarks/bench_startup.py && python benchmarks/bench_reproduction.py
 python benchmarks/speed_summary.py
 
 ``python benchmarks/speed_summary.py --markdown`` prints the docs' performance table
-from ``speed.csv`` and ``compile.csv`` (:func:`markdown_table`; the docs include it at
-every build).
+from ``speed.csv``, ``compile.csv`` and ``fresh_install.csv`` (:func:`markdown_table`;
+the docs include it at every build).
 """
 
 from __future__ import annotations
@@ -55,6 +55,8 @@ TABLE_ROWS = (
      "of a search costs), median", "bench_trajectory.py"),
     ("speed", "first_result_warm_cache", "fresh process to its first result, after the "
      "install step", "bench_startup.py"),
+    ("fresh", "first_result_fresh_install", "first result of a wheel installed in a fresh "
+     "environment (its shipped kernels, wall)", "bench_fresh_install.py"),
     ("compile", "first_result", "first result on an empty kernel cache: compiling the "
      "default path (CPU)", "bench_compile.py"),
     ("compile", "warmup", "the install step `python -m pencore.warmup` (CPU)",
@@ -71,11 +73,12 @@ TABLE_ROWS = (
 
 
 def markdown_table(results: Path = HERE / "results") -> str:
-    """The docs' performance table (markdown) from ``speed.csv`` and ``compile.csv``:
-    each figure with its unit, the commit and date it was measured at, and the script
-    that measures it."""
+    """The docs' performance table (markdown) from ``speed.csv``, ``compile.csv`` and
+    ``fresh_install.csv``: each figure with its unit, the commit and date it was measured
+    at, and the script that measures it."""
     speed = pd.read_csv(results / "speed.csv").set_index("figure")
     compile_ = pd.read_csv(results / "compile.csv").set_index("case")
+    fresh = pd.read_csv(results / "fresh_install.csv").set_index("case")
     lines = [
         "| figure | value | measured (commit, UTC) | rerun with |",
         "|---|---|---|---|",
@@ -84,6 +87,9 @@ def markdown_table(results: Path = HERE / "results") -> str:
         if source == "speed":
             row = speed.loc[key]
             value = f"{row['value']:.3g} {row['unit']}"
+        elif source == "fresh":
+            row = fresh.loc[key]
+            value = f"{row['wall_s']:.3g} s"
         else:
             row = compile_.loc[key]
             value = f"{row['cpu_s']:.3g} s"

@@ -42,8 +42,17 @@ def test_table_shows_each_figure_with_its_commit(load_benchmark, tmp_path):
             "measured_utc": "2026-01-03T00:00Z",
         }
     ).to_csv(tmp_path / "compile.csv", index=False)
+    pd.DataFrame(
+        {
+            "case": ["first_result_fresh_install", "build_wheel"],
+            "wall_s": [2.25, 150.0],
+            "commit": "0123abc",
+            "measured_utc": "2026-01-04T00:00Z",
+        }
+    ).to_csv(tmp_path / "fresh_install.csv", index=False)
     table = summary.markdown_table(tmp_path)
     rows = table.strip().splitlines()[2:]
     assert len(rows) == len(summary.TABLE_ROWS)
     assert "| 44.8 s | def5678, 2026-01-03 |" in table
+    assert "| 2.25 s | 0123abc, 2026-01-04 |" in table
     assert all(re.search(r"\| 1\.5 ms \| abc1234, 2026-01-02 \|", r) for r in rows if "ms" in r)

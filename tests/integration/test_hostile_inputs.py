@@ -5,7 +5,9 @@ files (``--projectile FILE`` / ``--target FILE``), the command line, and the out
 paths. Classes: integers no float can hold, numbers written as text in any notation but
 plain decimal, hostile files (alias bombs, deep nesting, repeated keys, FIFOs, devices,
 directories, oversized files), writes that would replace a non-regular file or the
-run's own input, search arguments, standard output that cannot be written. Every case
+run's own input, search arguments, standard output that cannot be written, ``NUMBA_*``
+settings numba refuses (the damaged and unwritable numba caches are in
+``tests/kernels/test_cache.py``). Every case
 asserts the exit status (or exception), exactly one line, no traceback, that the line
 quotes at most a short prefix of the value, that no file is left behind, and a time
 bound (a hang guard: every case is refused before any integration, measured well under
@@ -585,6 +587,40 @@ def test_cli_help_and_version_to_a_full_device(args, tmp_path):
     assert proc.stderr.strip().splitlines() == [
         "pencore: error: cannot write to standard output: disk full"
     ]
+
+
+# ------------------------------------------------------------ numba's environment
+
+
+@pytest.mark.parametrize("door", ["cli", "api"])
+def test_numba_setting_numba_refuses(door, tmp_path):
+    # numba stops at import on NUMBA_NUM_THREADS=0 ("must be > 0"): one line naming the
+    # variable, exit 2 on the command line, InputError from the API; nothing written
+    env = {**os.environ, "NUMBA_NUM_THREADS": "0"}
+    if door == "cli":
+        cmd = [sys.executable, "-m", "pencore", "simulate", "--projectile", "p2",
+               "--target", "soil", "--velocity", "280", "--out", "r.nc"]  # fmt: skip
+    else:
+        code = (
+            "import pencore\n"
+            "try:\n    pencore.simulate('p2', 'soil', 280.0)\n"
+            "except pencore.InputError as e:\n    print('InputError:', e)\n"
+        )
+        cmd = [sys.executable, "-c", code]
+    t0 = time.monotonic()
+    proc = subprocess.run(cmd, cwd=tmp_path, env=env, capture_output=True, text=True, timeout=120)
+    assert time.monotonic() - t0 < HANG_GUARD_S
+    assert list(tmp_path.iterdir()) == []
+    out = proc.stderr if door == "cli" else proc.stdout
+    lines = out.strip().splitlines()
+    assert len(lines) == 1, proc.stderr + proc.stdout
+    _check_line(lines[0])
+    assert "NUMBA_NUM_THREADS='0'" in lines[0] and "must be > 0" in lines[0]
+    if door == "cli":
+        assert proc.returncode == 2
+        assert lines[0].startswith("pencore: error: numba refused its environment settings")
+    else:
+        assert proc.returncode == 0 and lines[0].startswith("InputError: numba refused")
 
 
 @pytest.mark.parametrize("role", ["--projectile", "--target"])

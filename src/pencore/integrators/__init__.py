@@ -13,3 +13,5 @@ module             contents
 Each integrator is ``integrate(problem, y0, velocity, *, stop_at_reversal)`` and
 returns a :class:`driver.RunResult`.
 """
+
+import pencore.kernels  # noqa: E402,F401  (numba set up before the compiled modules)

@@ -47,6 +47,7 @@ from pencore.integrators.driver import (
     start_path,
 )
 from pencore.integrators.problem import Problem
+from pencore.kernels.cache import use_kernel_cache
 from pencore.kernels.contact_points import MAX_SAMPLES_PER_STEP, push_path
 from pencore.kernels.dynamics import quat_to_matrix
 from pencore.kernels.forces import model_loads
@@ -280,3 +281,6 @@ def _integrate(
         math.nan,
         path_of(model),
     )
+
+
+use_kernel_cache(globals())  # pencore's cache for the compiled functions above

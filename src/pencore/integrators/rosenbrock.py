@@ -65,6 +65,7 @@ from pencore.integrators.driver import (
     start_path,
 )
 from pencore.integrators.problem import Problem
+from pencore.kernels.cache import use_kernel_cache
 from pencore.kernels.contact_points import MAX_SAMPLES_PER_STEP, push_path
 from pencore.kernels.crater import has_crater
 from pencore.kernels.forces import rhs_model
@@ -487,3 +488,6 @@ def _integrate(
         path_of(model),
         int(si[SI_N_JAC]),
     )
+
+
+use_kernel_cache(globals())  # pencore's cache for the compiled functions above

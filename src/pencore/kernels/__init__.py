@@ -16,7 +16,7 @@ module              contents
 ``forces``          the right-hand side with a selectable shank model and surface
 ``jacobian``        closed-form velocity Jacobian of the ring loads
 ``state``           outcome codes, stopping test, LU solve, quaternion helpers
-``cache``           the guard that drops stale compiled code (runs on import)
+``cache``           where compiled code is kept, shipped and found (set up on import)
 ==================  ==============================================================
 
 Compile-time habit: a value passed to another compiled function is never a literal
@@ -25,6 +25,8 @@ compiles the callee once more for a literal's own type; the first use compiles e
 function once (``benchmarks/bench_compile.py`` lists any that compile twice).
 """
 
-from pencore.kernels.cache import invalidate_stale_caches
+from pencore.kernels.cache import _register_locator, import_numba, invalidate_stale_caches
 
+import_numba()  # a NUMBA_* setting numba refuses is one line (InputError), not a traceback
+_register_locator()  # before any compiled function is defined
 invalidate_stale_caches()

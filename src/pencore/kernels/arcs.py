@@ -20,6 +20,8 @@ import math
 import numba as nb
 import numpy as np
 
+from pencore.kernels.cache import use_kernel_cache
+
 TWO_PI = 2.0 * math.pi
 _MAXI = 16  # max number of arcs in an interval set
 _MAXD = 10  # max polynomial degree + 2
@@ -441,3 +443,6 @@ def band_regions(
                 rpar[nreg, 2] = we
                 nreg += 1
     return nreg
+
+
+use_kernel_cache(globals())  # pencore's cache for the compiled functions above

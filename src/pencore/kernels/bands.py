@@ -15,6 +15,8 @@ import math
 
 import numba as nb
 
+from pencore.kernels.cache import use_kernel_cache
+
 __all__ = ["band_half_height", "band_eps"]
 
 
@@ -64,3 +66,6 @@ def band_eps(eps, r, na, w, w2, w3):
         return eps, 0.0  # exactly eps (and a zero gradient) without lateral spin
     epsr = math.sqrt(eps * eps + s2)
     return epsr, c2 / epsr
+
+
+use_kernel_cache(globals())  # pencore's cache for the compiled functions above

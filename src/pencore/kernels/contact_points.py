@@ -31,6 +31,7 @@ import math
 import numba as nb
 import numpy as np
 
+from pencore.kernels.cache import use_kernel_cache
 from pencore.kernels.dynamics import body_velocity, quat_to_matrix
 from pencore.kernels.friction import friction_coefficient
 from pencore.kernels.windows import depth_factor
@@ -286,3 +287,6 @@ def point_loads(y, pts, bounds, coef, fric, eps, with_friction, cavity, cav, pat
         mom[1] += pz * fx - px * fz
         mom[2] += px * fy - py * fx
     return f, mom, clearance
+
+
+use_kernel_cache(globals())  # pencore's cache for the compiled functions above

@@ -52,6 +52,8 @@ import math
 
 import numba as nb
 
+from pencore.kernels.cache import use_kernel_cache
+
 __all__ = [
     "has_crater",
     "crater_shape",
@@ -173,3 +175,6 @@ def crater_factor(y, rings, bounds, coef, lay, z, va, ref_axial_force):
     if not resist > 0.0:
         return g
     return g * full / resist
+
+
+use_kernel_cache(globals())  # pencore's cache for the compiled functions above

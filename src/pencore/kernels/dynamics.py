@@ -83,6 +83,7 @@ from pencore.kernels.arcs import (
     side_poly,
 )
 from pencore.kernels.bands import band_eps, band_half_height
+from pencore.kernels.cache import use_kernel_cache
 from pencore.kernels.friction import _friction_ring, _leggauss
 from pencore.kernels.wholering import whole_ring_integrals
 from pencore.kernels.windows import depth_factor
@@ -443,3 +444,6 @@ def equations_of_motion(y, fb, mb, mass, inertia, gravity):
     v1, v2, v3 = body_velocity(rot, y)
     dy[13] = fb[0] * v1 + fb[1] * v2 + fb[2] * v3 + mb[0] * w1 + mb[1] * w2 + mb[2] * w3
     return dy
+
+
+use_kernel_cache(globals())  # pencore's cache for the compiled functions above

@@ -25,6 +25,7 @@ import numpy as np
 
 from pencore.inputs.geometry import Projectile, Rings
 from pencore.inputs.models import SHANK_CAVITY, SURFACE_PANELS, Emulation, ShankModel
+from pencore.kernels.cache import use_kernel_cache
 from pencore.kernels.contact_points import point_loads
 from pencore.kernels.crater import (
     crater_depth_and_speed,
@@ -173,3 +174,6 @@ def kernel_model(
         arr = arr.copy()
         arr[shank_rows, 4] *= shank.factor
     return arr, (ipar, cav, pts, np.zeros((1, 4)), np.ones(1, dtype=np.int64))
+
+
+use_kernel_cache(globals())  # pencore's cache for the compiled functions above

@@ -15,6 +15,8 @@ import math
 import numba as nb
 import numpy as np
 
+from pencore.kernels.cache import use_kernel_cache
+
 
 @nb.njit(cache=True)
 def _leggauss(n):
@@ -118,3 +120,6 @@ def _friction_ring(
                 mom[0] += py * fz - pz * fy
                 mom[1] += pz * fx - px * fz
                 mom[2] += px * fy - py * fx
+
+
+use_kernel_cache(globals())  # pencore's cache for the compiled functions above

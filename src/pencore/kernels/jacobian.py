@@ -71,6 +71,7 @@ from pencore.kernels.arcs import (
     side_poly,
 )
 from pencore.kernels.bands import band_eps, band_half_height
+from pencore.kernels.cache import use_kernel_cache
 from pencore.kernels.contact_points import point_loads
 from pencore.kernels.dynamics import (
     arc_angles,
@@ -500,3 +501,6 @@ def analytic_jacobian_applies(eps: float, n_gauss: int, crater: bool = False) ->
     closed form leaves out). Every shank model and surface of :mod:`pencore.kernels.forces`
     is covered (rings, panels, the cavity shank's points)."""
     return eps > 0.0 and n_gauss == 0 and not crater
+
+
+use_kernel_cache(globals())  # pencore's cache for the compiled functions above

@@ -15,6 +15,7 @@ import numba as nb
 import numpy as np
 
 from pencore.kernels.bands import band_half_height
+from pencore.kernels.cache import use_kernel_cache
 
 #: Outcome names, indexed by the integer codes the compiled integrator returns.
 OUTCOMES = (
@@ -211,3 +212,6 @@ def stop_code(y, t, t_max, entered, clear, v_stop):
     if t >= t_max:
         return 2
     return RUNNING
+
+
+use_kernel_cache(globals())  # pencore's cache for the compiled functions above

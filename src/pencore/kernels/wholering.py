@@ -20,6 +20,7 @@ import numba as nb
 import numpy as np
 
 from pencore.kernels.arcs import _MAXD, side_poly
+from pencore.kernels.cache import use_kernel_cache
 
 
 @nb.njit(cache=True, inline="always")
@@ -206,3 +207,6 @@ def whole_ring_moments(tab, nf, polys, levels, deg, out):
                 out[3, m] += c * c * icc + s * s * iss
                 out[4, m] += c * s * (icc - iss)
                 out[5, m] += s * s * icc + c * c * iss
+
+
+use_kernel_cache(globals())  # pencore's cache for the compiled functions above

@@ -13,6 +13,8 @@ import math
 
 import numba as nb
 
+from pencore.kernels.cache import use_kernel_cache
+
 __all__ = ["depth_factor", "finite_sphere_factor"]
 
 
@@ -71,3 +73,6 @@ def depth_factor(height, bounds, lay):
     if rbot > 0.0:
         g *= finite_sphere_factor(height - bounds[lay, 1], bounds[lay, 8], rbot)
     return g
+
+
+use_kernel_cache(globals())  # pencore's cache for the compiled functions above

@@ -22,11 +22,8 @@ from __future__ import annotations
 
 import json
 import math
-import os
-import sys
 import time
 from collections.abc import Mapping
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -41,7 +38,8 @@ from pencore.inputs.target import Target
 from pencore.integrators.driver import CHUNK_STEPS, RunResult
 from pencore.integrators.problem import Problem
 from pencore.integrators.rosenbrock import integrate, integrate_chunk
-from pencore.kernels.cache import cache_dir_of
+from pencore.kernels.cache import COMPILE_NOTICE, compiled_in_cache
+from pencore.kernels.cache import compile_notice as _compile_notice
 from pencore.kernels.forces import kernel_model, rhs_model
 from pencore.kernels.state import body_reach
 from pencore.run.dataset import trajectory_dataset
@@ -51,7 +49,7 @@ from pencore.run.initial import (
     initial_state,
 )
 
-__all__ = ["prepare", "simulate", "run_impact"]
+__all__ = ["prepare", "simulate", "run_impact", "COMPILE_NOTICE", "compiled_in_cache"]
 
 
 def prepare(
@@ -293,52 +291,6 @@ def _run(pr: Problem, y0: np.ndarray, velocity: float, stop_at_reversal: bool) -
         compiled = rhs_model
     _compile_notice(compiled)
     return integrator(pr, y0, velocity, stop_at_reversal=stop_at_reversal)
-
-
-#: What a process that is about to compile the kernels says on stderr (once).
-COMPILE_NOTICE = (
-    "pencore: compiling the numba kernels on first use (about a minute, once; "
-    "`python -m pencore.warmup` does it at install time)"
-)
-_compile_notice_printed = False
-_compile_checked: set[Any] = set()  # the compiled entry points looked up in the cache
-
-
-def _compile_notice(dispatcher: Any) -> None:
-    """Print :data:`COMPILE_NOTICE` to stderr, at most once per process, when the compiled
-    entry point of a run (``dispatcher``: the integrator's chunk, or the right-hand side
-    for scipy) is not in numba's cache, i.e. the run is about to compile the kernels.
-    Each entry point is looked up once per process (one ``stat``)."""
-    global _compile_notice_printed
-    if _compile_notice_printed or dispatcher in _compile_checked:
-        return
-    _compile_checked.add(dispatcher)
-    if not compiled_in_cache(dispatcher):
-        _compile_notice_printed = True
-        print(COMPILE_NOTICE, file=sys.stderr, flush=True)
-
-
-def compiled_in_cache(dispatcher: Any) -> bool:
-    """Whether numba's on-disk cache holds compiled code of ``dispatcher`` (a
-    ``cache=True`` function): its index file ``<module>.<function>-<line>.py<XY>.nbi``
-    exists in the cache directory numba uses for it (``NUMBA_CACHE_DIR``, ``__pycache__``
-    or the user-wide cache). Stale caches are dropped on import
-    (:mod:`pencore.kernels.cache`), so an index file here is of the current sources.
-    True when numba will not compile or cannot cache the function (``NUMBA_DISABLE_JIT``,
-    no cache directory): there is nothing to announce."""
-    cache = getattr(dispatcher, "_cache", None)
-    index = getattr(getattr(cache, "_cache_file", None), "_index_path", None)
-    if index is not None:  # where numba itself looks
-        return os.path.exists(index)
-    py_func = getattr(dispatcher, "py_func", None)
-    if cache is None or py_func is None or type(cache).__name__ == "NullCache":
-        return True  # not compiled, or compiled without a cache (nothing to look up)
-    code = py_func.__code__  # another numba layout: the same name, in the same place
-    folder = cache_dir_of(Path(code.co_filename).parent)
-    if folder is None:
-        return True
-    stem = f"{Path(code.co_filename).stem}.{py_func.__qualname__}-{code.co_firstlineno}"
-    return any(folder.glob(f"{stem}.py*.nbi"))
 
 
 def _small_step_cause(num: Numerics) -> str:
