@@ -33,7 +33,8 @@ SRC = ROOT / "src"
 _UNSET = ("NUMBA_CPU_FEATURES", "NUMBA_CACHE_DIR", "NUMBA_DISABLE_JIT", "NUMBA_OPT")
 
 BUILD_INFO = """
-import json
+import json, sys
+sys.path.insert(0, {src!r})
 from pencore.kernels.cache import build_info
 print(json.dumps(build_info()))
 """
@@ -49,10 +50,19 @@ def compile_kernels(out: Path) -> bool:
     env["NUMBA_CPU_NAME"] = "generic"
     env["PENCORE_KERNEL_BUILD"] = str(tmp)
     t0 = time.perf_counter()
-    done = subprocess.run([sys.executable, "-m", "pencore.warmup"], env=env, cwd=str(tmp.parent))
+    # the sources on sys.path explicitly: pip's isolated build environment rewrites the
+    # path of its interpreter at start-up, and PYTHONPATH alone did not reach it
+    run = (
+        f"import sys, runpy; sys.path.insert(0, {str(SRC)!r}); "
+        "runpy.run_module('pencore.warmup', run_name='__main__')"
+    )
+    done = subprocess.run([sys.executable, "-c", run], env=env, cwd=str(tmp.parent))
     seconds = time.perf_counter() - t0
     info = subprocess.run(
-        [sys.executable, "-c", BUILD_INFO], env=env, capture_output=True, text=True
+        [sys.executable, "-c", BUILD_INFO.format(src=str(SRC))],
+        env=env,
+        capture_output=True,
+        text=True,
     )
     if done.returncode != 0 or info.returncode != 0:
         shutil.rmtree(tmp, ignore_errors=True)
