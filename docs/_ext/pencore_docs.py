@@ -373,27 +373,54 @@ def residual_velocity_text() -> str:
         )
 
 
-def measurements_table() -> str:
-    """Statistics of pencore against every measured quantity in the archive."""
+def _validation_summary():  # noqa: ANN202 (pandas.DataFrame)
+    """The validation summary of the archive (:func:`pencore.studies.measurements.
+    summary_table` over the archived measurements and obliquity ratios)."""
     import xarray as xr
 
-    with xr.open_dataset(ARCHIVE / "validation" / "measurements.nc") as ds:
-        lines = [
-            "| quantity | shots | mean error | 95 % interval | RMS | largest |",
-            "|---|---|---|---|---|---|",
-        ]
-        for q in ds.quantity.values:
-            st = ds.sel(quantity=q)
+    from pencore.studies.measurements import summary_table
 
-            def pct(name: str, st: xr.Dataset = st) -> str:
-                return f"{100 * float(st[name]):+.1f} %"
+    with (
+        xr.open_dataset(ARCHIVE / "validation" / "measurements.nc") as m,
+        xr.open_dataset(ARCHIVE / "near_surface" / "obliquity_ratio.nc") as r,
+    ):
+        return summary_table(m.load(), r.load())
 
-            n = int(ds.sizes["shot"])
-            lines.append(
-                f"| {q} | {n} | {pct('stat_mean_rel_error')} | {pct('stat_ci95_lo')} to "
-                f"{pct('stat_ci95_hi')} | {pct('stat_rms_rel_error')[1:]} | "
-                f"{pct('stat_max_abs_rel_error')[1:]} |"
-            )
+
+def _pct(x: float) -> str:
+    return f"{100 * x:+.1f} %" if x == x else "-"  # NaN: no shot
+
+
+def measurements_table() -> str:
+    """The validation summary: every measurement, per data set, law and model."""
+    lines = [
+        "| data set | law | model | n | left out | mean abs(e) | bias | worst |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
+    for _, r in _validation_summary().iterrows():
+        lines.append(
+            f"| {r['data_set']} | {r['law']} | {r['model']} | {r['n']} | {r['n_left_out']} | "
+            f"{_pct(r['mean_abs_rel_error'])[1:] if r['n'] else '-'} | {_pct(r['bias'])} | "
+            f"{_pct(r['worst'])} |"
+        )
+    return "\n".join(lines)
+
+
+def validation_headline() -> str:
+    """The README's table of pencore against measured depths (pencore's 3-D rows)."""
+    t = _validation_summary()
+    t = t[t["model"].str.startswith("pencore (3-D")]
+    lines = [
+        "| measured shots | law | shots compared | bias | mean abs(e) |",
+        "|---|---|---|---|---|",
+    ]
+    for _, r in t.iterrows():
+        if not r["n"]:
+            continue
+        lines.append(
+            f"| {r['data_set']} | {r['law']} | {r['n']} (+{r['n_left_out']} deformed) | "
+            f"{_pct(r['bias'])} | {_pct(r['mean_abs_rel_error'])[1:]} |"
+        )
     return "\n".join(lines)
 
 
@@ -513,7 +540,10 @@ PAGES: dict[str, Callable[[], str]] = {
 }
 
 #: the README's generated blocks: marker name -> the function that writes it
-README_BLOCKS: dict[str, Callable[[], str]] = {"headline": headline_table}
+README_BLOCKS: dict[str, Callable[[], str]] = {
+    "headline": headline_table,
+    "validation": validation_headline,
+}
 
 _BLOCK = re.compile(
     r"(<!-- generated: (?P<name>[\w-]+) .*?-->\n)(?P<body>.*?)(\n<!-- end generated -->)",

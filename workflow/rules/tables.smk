@@ -15,6 +15,13 @@ REPORT_TABLES = {
         "Table 2 (soil)",
         "Table 2: candidate projectiles and depth measures",
     ),
+    "validation_summary": (
+        "results/validation/validation_summary.csv",
+        "validation_summary.rst",
+        "4 Beyond the paper",
+        "Validation against measurements",
+        "Validation summary: every measurement, per data set, law and model",
+    ),
     "paper_comparison": (
         "results/paper_comparison.csv",
         "paper_comparison.rst",

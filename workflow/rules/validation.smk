@@ -245,7 +245,27 @@ rule measurements_figure:
         "../scripts/plot.py"
 
 
+# One table over every measurement: the shots (per data set, law and model) and the
+# plates' obliquity ratios of the near-surface study.
+rule validation_summary:
+    input:
+        measurements="results/validation/measurements.nc",
+        ratios="results/near_surface/obliquity_ratio.nc",
+    output:
+        csv="results/validation/validation_summary.csv",
+    log:
+        "results/logs/validation/validation_summary.log",
+    localrule: True
+    conda:
+        "../envs/pencore.yaml"
+    params:
+        code=PHYSICS_CODE,
+    script:
+        "../scripts/validation_summary.py"
+
+
 ALL_TARGETS.extend(f"results/validation/measurements.{ext}" for ext in ("nc", "png", "pdf"))
+ALL_TARGETS.append("results/validation/validation_summary.csv")
 ALL_TARGETS.append("results/validation/measurements_options.nc")
 ARCHIVE_DATASETS.extend(
     ["results/validation/measurements.nc", "results/validation/measurements_options.nc"]

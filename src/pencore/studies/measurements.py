@@ -88,6 +88,7 @@ __all__ = [
     "measured_vs_predicted",
     "error_statistics",
     "summary",
+    "summary_table",
     "statistics_by_option",
 ]
 
@@ -642,6 +643,83 @@ def summary(ds: xr.Dataset) -> xr.Dataset:
             "subset": np.array(list(subsets), dtype=str),
         },
     )
+
+
+def _stats_row(e: np.ndarray) -> dict[str, float]:
+    e = e[np.isfinite(e)]
+    if not e.size:
+        return {"n": 0, "mean_abs_rel_error": math.nan, "bias": math.nan, "worst": math.nan}
+    return {
+        "n": int(e.size),
+        "mean_abs_rel_error": float(np.mean(np.abs(e))),
+        "bias": float(np.mean(e)),
+        "worst": float(e[np.argmax(np.abs(e))]),
+    }
+
+
+def summary_table(measurements: xr.Dataset, ratios: xr.Dataset | None = None) -> pd.DataFrame:
+    """The validation summary over every measurement, one row per data set, law and model.
+
+    Parameters
+    ----------
+    measurements : xarray.Dataset
+        A :func:`measured_vs_predicted` result (its :func:`summary` variables).
+    ratios : xarray.Dataset, optional
+        A :func:`pencore.studies.obliquity.compare_obliquity` result: the measured
+        obliquity ratios ``V_bl(theta) / V_bl(0)`` of plates, compared with pencore's
+        analog (the paper's model, option ``none``) and with the line-of-sight rule.
+
+    Returns
+    -------
+    pandas.DataFrame
+        Columns ``data_set``, ``quantity``, ``law``, ``model``, ``n`` (shots compared:
+        rigid ones for depths), ``n_left_out`` (shots whose projectile deformed or
+        eroded), ``mean_abs_rel_error``, ``bias`` (mean ``e``) and ``worst`` (the ``e`` of
+        largest magnitude, signed), with ``e = predicted / measured - 1``. No parameter of
+        any model is fitted to these data.
+    """
+    rows = []
+    for g in measurements["group"].values:
+        dataset, law = str(g).split("/", 1)
+        quantity = str(
+            measurements["quantity_of_shot"].values[(measurements["dataset"] == dataset).values][0]
+        )
+        for m in measurements["model"].values:
+            st = measurements.sel(group=g, model=m, subset="rigid")
+            n = int(st["summary_n"])
+            if m != "predicted" and n == 0:
+                continue  # no shot to compare (none rigid, or no closed form)
+            rows.append(
+                {
+                    "data_set": dataset,
+                    "quantity": quantity,
+                    "law": law,
+                    "model": MODELS[str(m)],
+                    "n": n,
+                    "n_left_out": int(st["summary_n_not_rigid"]),
+                    "mean_abs_rel_error": float(st["summary_mean_abs_rel_error"]),
+                    "bias": float(st["summary_bias"]),
+                    "worst": float(st["summary_worst_rel_error"]),
+                }
+            )
+    if ratios is not None:
+        measured = ratios["measured_ratio"].values
+        for model, predicted in (
+            ("pencore analog (paper's model)", ratios["pencore_ratio"].sel(option="none").values),
+            ("line of sight, sec(theta)", ratios["los_ratio"].values),
+        ):
+            ok = np.isfinite(predicted) & np.isfinite(measured) & (measured > 0)
+            rows.append(
+                {
+                    "data_set": "oblique_ballistic_limits",
+                    "quantity": "obliquity ratio V_bl(theta) / V_bl(0)",
+                    "law": "analog: " + str(ratios.attrs.get("analog", "")),
+                    "model": model,
+                    "n_left_out": int(np.count_nonzero(~ok)),
+                    **_stats_row(predicted[ok] / measured[ok] - 1.0),
+                }
+            )
+    return pd.DataFrame(rows)
 
 
 def statistics_by_option(

@@ -1,0 +1,13 @@
+"""Rule validation_summary: thin adapter to pencore.studies.measurements.summary_table."""
+
+from _common import start_log
+
+from pencore.io.netcdf import read_netcdf
+from pencore.studies.measurements import summary_table
+
+smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
+log = start_log(smk.log[0], "validation_summary")
+
+table = summary_table(read_netcdf(smk.input.measurements), read_netcdf(smk.input.ratios))
+table.to_csv(smk.output.csv, index=False, float_format="%.6g")
+log.info("validation summary:\n%s", table.to_string(index=False))
