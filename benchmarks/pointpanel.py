@@ -287,27 +287,33 @@ class Model:
             self.body, self.lc, res.n_nose, res.n_shank, res.n_face, res.n_phi
         )
         self.a0, self.a1, self.a2 = medium
+        pn = self.panels
+        self._half = h = pn.size // 2
+        self._normal_rows = np.stack([pn.n1, pn.n2, pn.lever])
+        self._point_rows = np.stack([pn.p1, pn.p2])
+        self._n1h, self._n2h, self._leverh = pn.n1[:h], pn.n2[:h], pn.lever[:h]
 
     def rhs(self, st: np.ndarray) -> np.ndarray:
         """Time derivative of ``st = (x, y, c, s, vx, vy, omega)``.
 
         Worked in the body frame: centre-of-mass velocity ``u = R^T v``, panel normal
-        velocity ``Vn = u . n + omega (p1 n2 - p2 n1)``, panel depth ``y + p1 s + p2 c``;
-        the body-frame force and the moment are summed in mirror pairs and the force turned
-        back to the world frame.
+        velocity ``Vn = u . n + omega (p1 n2 - p2 n1)``, panel height ``y + p1 s + p2 c``.
+        The body-frame force and the moment are summed in mirror pairs (``sig+`` and
+        ``sig-`` of a panel and its mirror image, :func:`make_panels`), so a symmetric
+        state gets exactly no side force and no moment; the force is then turned back to
+        the world frame.
         """
         _, y, c, s, vx, vy, w = st
         pn = self.panels
-        u1 = vx * c + vy * s
-        u2 = vy * c - vx * s
-        vn = pn.n1 * u1 + pn.n2 * u2 + pn.lever * w
-        on = (pn.p1 * s + pn.p2 * c <= -y) & (vn >= 0.0)
-        sig = on * (self.a0 + (self.a1 + self.a2 * vn) * vn) * pn.area
-        h = sig.size // 2
-        f1, f2, mz = (sig * pn.n1, sig * pn.n2, sig * pn.lever)
-        f1 = (f1[:h] + f1[h:]).sum()
-        f2 = (f2[:h] + f2[h:]).sum()
-        mz = (mz[:h] + mz[h:]).sum()
+        vn = np.dot((vx * c + vy * s, vy * c - vx * s, w), self._normal_rows)
+        on = (np.dot((s, c), self._point_rows) <= -y) & (vn >= 0.0)
+        sig = on * ((self.a0 + (self.a1 + self.a2 * vn) * vn) * pn.area)
+        h = self._half
+        plus = sig[:h] + sig[h:]
+        minus = sig[:h] - sig[h:]
+        f1 = np.dot(plus, self._n1h)
+        f2 = np.dot(minus, self._n2h)
+        mz = np.dot(minus, self._leverh)
         # load -sig A n: body force (-f1, -f2), moment -mz
         return np.array(
             [vx, vy, -w * s, w * c, -(c * f1 - s * f2) / self.mass,
@@ -441,35 +447,39 @@ def closed_form_depth(mass: float, a: float, crh: float, v1: float, medium=SOIL)
 # ------------------------------------------------------------------ the disputed cases
 
 #: Definitions as in config/config.yaml (section4: fig7/fig8, fig13, fig16) and
-#: pencore.paper.attribution.
+#: pencore.paper.attribution: #2 at 45 deg with its tip from (-1, 1) m (Vcr); #2 at
+#: 1000 m/s, normal, spun about the centre of mass, tip touching (alpha); #4, normal, the
+#: velocity normal and the axis tilted by 0.1 deg (the configured ``axis_tilted`` reading:
+#: ``simulate(obliquity=+0.1, yaw=-0.1)``), tip touching (phi).
 VCR_CASE = dict(key="p2", obliquity=45.0, start=(-1.0, 1.0))
-SPIN_CASE = dict(key="p2", velocity=1000.0)
-YAW_CASE = dict(key="p4", yaw=0.1)  # axis_tilted: obliquity +yaw, yaw -yaw
-#: pencore's archived values (results/archive/paper_comparison.csv)
-PENCORE_ARCHIVE = {
-    "vcr_bracket": (1571.88, 1575.49),
-    "alpha_5": 0.167499,
-    "alpha_20": 1.02196,
-    "alpha_25": 1.39359,
-    "phi_280": 0.165717,
-    "phi_1000": 0.259212,
+SPIN_CASE = dict(key="p2", velocity=1000.0, omegas=(5.0, 20.0, 25.0))
+YAW_CASE = dict(key="p4", yaw=0.1, velocities=(280.0, 1000.0))
+
+#: Base resolution of each case (the tests use the same); the results file adds the step
+#: halved and the panels doubled. The deviations need a small step: with the pure
+#: Heaviside, once the shank is in, its zero-normal-velocity panels switch on and off
+#: within a step and the direction drifts by an amount that falls with the step.
+PANELS = dict(n_nose=24, n_shank=24, n_face=4, n_phi=32)
+BASE = {
+    "vcr": Resolution(**PANELS, dt=5e-6),
+    "spin": Resolution(**PANELS, dt=2.5e-6),
+    "yaw": Resolution(**PANELS, dt=1.25e-6),
 }
-BASE = Resolution()
 
 
-def spin_alpha(res: Resolution, omega: float) -> tuple[float, bool]:
-    """(alpha in deg, turned back) of #2 at 1000 m/s, normal, spun at ``omega`` rad/s."""
-    tr = Model(SPIN_CASE["key"], res).run(SPIN_CASE["velocity"], omega=omega)
-    return tr.final_deviation(), tr.reversed
+def spin_run(res: Resolution, omega: float) -> Trajectory:
+    """#2 at 1000 m/s, normal, spun at ``omega`` (rad/s) about the centre of mass, run to
+    the stop (the turn-back verdict needs the whole run)."""
+    return Model(SPIN_CASE["key"], res).run(SPIN_CASE["velocity"], omega=omega)
 
 
-def yaw_phi(res: Resolution, velocity: float) -> float:
-    """phi (deg) of #4, normal impact, velocity normal and axis tilted by 0.1 deg."""
+def yaw_run(res: Resolution, velocity: float) -> Trajectory:
+    """#4, normal impact, velocity normal and axis tilted by 0.1 deg; run until the speed
+    is half the 0.1 x impact speed where phi is read."""
     yw = YAW_CASE["yaw"]
-    tr = Model(YAW_CASE["key"], res).run(
+    return Model(YAW_CASE["key"], res).run(
         velocity, yw, -yw, stop_speed=0.5 * SPEED_FRACTION * velocity
     )
-    return tr.final_deviation()
 
 
 def vcr_turns_back(res: Resolution, velocity: float, model: "Model | None" = None) -> bool:
@@ -481,8 +491,8 @@ def vcr_turns_back(res: Resolution, velocity: float, model: "Model | None" = Non
 
 
 def vcr_bisect(res: Resolution, lo: float, hi: float, tol: float = 1.0) -> tuple[float, float]:
-    """Bracket (m/s) of the reference's Vcr by bisection from ``lo`` (not turning back)
-    to ``hi`` (turning back); checks both ends."""
+    """Bracket (m/s) of the reference's Vcr by bisection from ``lo`` (must not turn back)
+    to ``hi`` (must turn back); both ends are checked."""
     m = Model(VCR_CASE["key"], res)
     if vcr_turns_back(res, lo, m) or not vcr_turns_back(res, hi, m):
         raise RuntimeError(f"Vcr not bracketed by [{lo}, {hi}] at {res.label()}")
@@ -505,124 +515,173 @@ def pencore_deviation(ds) -> float:
     return math.degrees(math.atan2(math.hypot(vx[i], vz[i]), -vy[i]))
 
 
-def pencore_turns_back(velocity: float) -> bool:
-    """pencore's Vcr verdict (``pencore.simulate(..., stop_at_reversal=True)``) for the
-    Vcr case at ``velocity``."""
+def pencore_turns_back(velocity: float, **numerics: float) -> bool:
+    """pencore's Vcr verdict (``pencore.simulate(..., stop_at_reversal=True)``)."""
     import pencore
 
     ds = pencore.simulate("p2", "soil", velocity, VCR_CASE["obliquity"],
-                          start=(*VCR_CASE["start"], 0.0), stop_at_reversal=True)  # fmt: skip
+                          start=(*VCR_CASE["start"], 0.0), stop_at_reversal=True,
+                          **numerics)  # fmt: skip
     return bool(int(ds.attrs["reversed"]))
 
 
-def pencore_values() -> dict[str, object]:
-    """pencore's values of the same cases through its public API (``pencore.simulate``)."""
+def pencore_vcr(lo: float = 1450.0, hi: float = 1700.0, tol: float = 1.0, **numerics: float):
+    """pencore's Vcr bracket (m/s) by the same bisection on its verdict."""
+    while hi - lo > tol:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (lo, mid) if pencore_turns_back(mid, **numerics) else (mid, hi)
+    return lo, hi
+
+
+def pencore_values(case: str, **numerics: float) -> dict[str, object]:
+    """pencore's values of one case through its public API (``pencore.simulate``);
+    ``numerics`` overrides (``rtol=...``) pass through."""
     import pencore
 
     out: dict[str, object] = {}
-    for w in (5.0, 20.0, 25.0):
-        ds = pencore.simulate("p2", "soil", 1000.0, omega=w)
-        out[f"alpha_{w:g}"] = pencore_deviation(ds)
-        out[f"back_{w:g}"] = bool(int(ds.attrs["reversed"]))
-    for v in (280.0, 1000.0):
-        ds = pencore.simulate("p4", "soil", v, YAW_CASE["yaw"], -YAW_CASE["yaw"])
-        out[f"phi_{v:g}"] = pencore_deviation(ds)
-    lo, hi = 1450.0, 1700.0
-    while hi - lo > 1.0:
-        mid = 0.5 * (lo + hi)
-        lo, hi = (lo, mid) if pencore_turns_back(mid) else (mid, hi)
-    out["vcr_bracket"] = (lo, hi)
+    if case == "spin":
+        for w in SPIN_CASE["omegas"]:
+            ds = pencore.simulate("p2", "soil", SPIN_CASE["velocity"], omega=w, **numerics)
+            out[f"alpha_{w:g}"] = pencore_deviation(ds)
+            out[f"back_{w:g}"] = bool(int(ds.attrs["reversed"]))
+    elif case == "yaw":
+        yw = YAW_CASE["yaw"]
+        for v in YAW_CASE["velocities"]:
+            ds = pencore.simulate("p4", "soil", v, yw, -yw, **numerics)
+            out[f"phi_{v:g}"] = pencore_deviation(ds)
+    else:
+        out["vcr"] = pencore_vcr(**numerics)
     return out
 
 
-def study(resolutions: dict[str, Resolution]) -> list[dict[str, object]]:
-    """Every disputed quantity at each resolution; rows for the results file."""
-    vals: dict[str, dict[str, object]] = {}
-    for name, res in resolutions.items():
+def reference_values(case: str, res: Resolution) -> dict[str, object]:
+    """The reference's values of one case at ``res``."""
+    out: dict[str, object] = {}
+    if case == "spin":
+        for w in SPIN_CASE["omegas"]:
+            tr = spin_run(res, w)
+            out[f"alpha_{w:g}"] = tr.final_deviation()
+            out[f"back_{w:g}"] = tr.reversed
+    elif case == "yaw":
+        for v in YAW_CASE["velocities"]:
+            out[f"phi_{v:g}"] = yaw_run(res, v).final_deviation()
+    else:
+        out["vcr"] = vcr_bisect(res, 1500.0, 1650.0)
+    return out
+
+
+QUANTITIES = {
+    "alpha_5": ("spin", "degree", "#2, 1000 m/s, normal, omega 5 rad/s: deviation alpha"),
+    "alpha_20": ("spin", "degree", "#2, 1000 m/s, normal, omega 20 rad/s: deviation alpha"),
+    "alpha_25": ("spin", "degree", "#2, 1000 m/s, normal, omega 25 rad/s: deviation alpha"),
+    "back_25": ("spin", "1", "#2, 1000 m/s, normal, omega 25 rad/s: turns back (1 = yes)"),
+    "phi_280": ("yaw", "degree", "#4, normal, axis tilted 0.1 deg, 280 m/s: deviation phi"),
+    "phi_1000": ("yaw", "degree", "#4, normal, axis tilted 0.1 deg, 1000 m/s: deviation phi"),
+    "vcr": ("vcr", "m s-1", "#2, soil, 45 deg, tip from (-1, 1) m: Vcr (bracket midpoint)"),
+}
+
+
+def case_rows(case: str) -> list[dict[str, str]]:
+    """Rows of the results file for one case: the reference at its base resolution and
+    its changes when the step is halved and when the panels are doubled, pencore's value
+    and its change from ``rtol`` 1e-5 to 1e-7, and the tolerance of the comparison.
+
+    The tolerance takes each reference change as the first-order error estimate it is at
+    most (a first-order error halves with the step, so the base's is twice the change;
+    the panels' free-surface crossing, a whole row of panels at once, is first order in
+    the panel size): ``2 |step change| + 2 |panel change| + |pencore rtol change|``, plus
+    the two bracket widths for Vcr.
+    """
+    base = BASE[case]
+    runs = {"base": base, "step halved": base.halved(), "panels doubled": base.refined()}
+    vals, cpu = {}, {}
+    for name, res in runs.items():
         t0 = time.process_time()
-        v: dict[str, object] = {}
-        for w in (5.0, 20.0, 25.0):
-            v[f"alpha_{w:g}"], v[f"back_{w:g}"] = spin_alpha(res, w)
-        for vel in (280.0, 1000.0):
-            v[f"phi_{vel:g}"] = yaw_phi(res, vel)
-        v["vcr_bracket"] = vcr_bisect(res, 1450.0, 1700.0)
-        v["cpu_s"] = time.process_time() - t0
-        vals[name] = v
-        print(f"{name} ({res.label()}): {v}", file=sys.stderr, flush=True)
-    pen = pencore_values()
+        vals[name] = reference_values(case, res)
+        cpu[name] = time.process_time() - t0
+        print(f"{case}, {name} ({res.label()}): {vals[name]}", file=sys.stderr, flush=True)
+    pen = pencore_values(case)
+    pen_fine = pencore_values(case, rtol=1e-7)
     rows = []
-    base = vals["base"]
-    for q, units, what in (
-        ("alpha_5", "degree", "spin: #2 1000 m/s normal, omega 5 rad/s, deviation alpha"),
-        ("alpha_20", "degree", "spin: #2 1000 m/s normal, omega 20 rad/s, deviation alpha"),
-        ("alpha_25", "degree", "spin: #2 1000 m/s normal, omega 25 rad/s, deviation alpha"),
-        ("back_25", "1", "spin: #2 1000 m/s normal, omega 25 rad/s, turns back"),
-        ("phi_280", "degree", "yaw: #4 normal (axis tilted 0.1 deg), 280 m/s, deviation phi"),
-        ("phi_1000", "degree", "yaw: #4 normal (axis tilted 0.1 deg), 1000 m/s, deviation phi"),
-        ("vcr", "m s-1", "Vcr: #2 soil 45 deg, tip from (-1, 1) m (bracket midpoint)"),
-    ):
+    for q, (c, units, what) in QUANTITIES.items():
+        if c != case:
+            continue
+
+        def num(d, q=q):
+            x = d[q]
+            return 0.5 * (x[0] + x[1]) if isinstance(x, tuple) else float(x)
+
+        ref = {k: num(v) for k, v in vals.items()}
+        d_step = ref["step halved"] - ref["base"]
+        d_panel = ref["panels doubled"] - ref["base"]
+        d_pen = num(pen_fine) - num(pen)
+        tol = 2.0 * abs(d_step) + 2.0 * abs(d_panel) + abs(d_pen)
         if q == "vcr":
-            ref = {k: 0.5 * sum(v["vcr_bracket"]) for k, v in vals.items()}
-            pv = 0.5 * sum(pen["vcr_bracket"])
-            note = "; ".join(
-                f"{k} [{v['vcr_bracket'][0]:.2f}, {v['vcr_bracket'][1]:.2f}]"
-                for k, v in vals.items()
-            )
-            note += f"; pencore [{pen['vcr_bracket'][0]:.2f}, {pen['vcr_bracket'][1]:.2f}]"
-        elif q == "back_25":
-            ref = {k: float(v[q]) for k, v in vals.items()}
-            pv = float(pen[q])
-            note = ", ".join(f"{k} {bool(v[q])}" for k, v in vals.items())
-        else:
-            ref = {k: float(v[q]) for k, v in vals.items()}
-            pv = float(pen[q])
-            note = ", ".join(f"{k} {v:.5g}" for k, v in ref.items())
-        spread = max(abs(r - ref["base"]) for r in ref.values())
+            tol += (vals["base"][q][1] - vals["base"][q][0]) + (pen[q][1] - pen[q][0])
+        diff = ref["base"] - num(pen)
+        notes = [f"{k} {_fmt(vals[k][q])}" for k in runs]
+        notes.append(f"pencore {_fmt(pen[q])} (rtol 1e-7: {_fmt(pen_fine[q])})")
+        notes.append(f"base {base.label()}; CPU s " + ", ".join(f"{cpu[k]:.0f}" for k in runs))
         rows.append(
             {
                 "case": what,
                 "quantity": q,
                 "reference": f"{ref['base']:.6g}",
-                "convergence_spread": f"{spread:.3g}",
-                "pencore": f"{pv:.6g}",
-                "difference": f"{ref['base'] - pv:.3g}",
+                "step_change": f"{d_step:.3g}",
+                "panel_change": f"{d_panel:.3g}",
+                "pencore": f"{num(pen):.6g}",
+                "pencore_rtol_change": f"{d_pen:.3g}",
+                "difference": f"{diff:.3g}",
+                "tolerance": f"{tol:.3g}",
+                "agrees": "yes" if abs(diff) <= tol else "no",
                 "units": units,
-                "note": note,
+                "note": "; ".join(notes),
             }
         )
-    rows.append(
-        {
-            "case": "resolutions",
-            "quantity": "cpu_s",
-            "reference": f"{base['cpu_s']:.1f}",
-            "convergence_spread": "",
-            "pencore": "",
-            "difference": "",
-            "units": "s",
-            "note": "; ".join(
-                f"{k}: {r.label()}, {vals[k]['cpu_s']:.0f} s CPU" for k, r in resolutions.items()
-            ),
-        }
-    )
     return rows
+
+
+def _fmt(x: object) -> str:
+    if isinstance(x, tuple):
+        return f"[{x[0]:.2f}, {x[1]:.2f}]"
+    if isinstance(x, bool):
+        return "yes" if x else "no"
+    return f"{float(x):.5g}"
+
+
+COLUMNS = ["case", "quantity", "reference", "step_change", "panel_change", "pencore",
+           "pencore_rtol_change", "difference", "tolerance", "agrees", "units",
+           "note"]  # fmt: skip
 
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--write", action="store_true", help=f"write {OUT.relative_to(ROOT)}")
+    ap.add_argument(
+        "--case", choices=sorted(BASE), action="append",
+        help="run only these cases (with --write, their rows replace those in the file)",
+    )  # fmt: skip
     args = ap.parse_args(argv)
-    resolutions = {"base": BASE, "dt_half": BASE.halved(), "panels_x2": BASE.refined()}
-    rows = study(resolutions)
-    cols = list(rows[0])
-    w = csv.DictWriter(sys.stdout, cols)
+    cases = args.case or list(BASE)
+    rows = [r for c in cases for r in case_rows(c)]
+    w = csv.DictWriter(sys.stdout, COLUMNS)
     w.writeheader()
     w.writerows(rows)
     if args.write:
+        kept = []
+        if args.case and OUT.exists():
+            mine = {q for q, (c, _, _) in QUANTITIES.items() if c in cases}
+            with OUT.open(newline="") as fh:
+                kept = [r for r in csv.DictReader(fh) if r["quantity"] not in mine]
+        order = list(QUANTITIES)
+        allrows = sorted(kept + rows, key=lambda r: order.index(r["quantity"]))
         OUT.parent.mkdir(parents=True, exist_ok=True)
-        with OUT.open("w", newline="") as fh:
-            wr = csv.DictWriter(fh, cols)
+        tmp = OUT.with_suffix(".tmp")
+        with tmp.open("w", newline="") as fh:
+            wr = csv.DictWriter(fh, COLUMNS)
             wr.writeheader()
-            wr.writerows(rows)
+            wr.writerows(allrows)
+        tmp.replace(OUT)
     return 0
 
 

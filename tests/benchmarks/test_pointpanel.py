@@ -10,6 +10,7 @@ cases, each within a tolerance set by the reference's own measured discretisatio
 
 from __future__ import annotations
 
+import csv
 import math
 import os
 import subprocess
@@ -128,3 +129,85 @@ def test_mirror_impact_gives_the_mirror_path(pp):
     flip = np.array([-1.0, 1.0, -1.0, 1.0, -1.0, 1.0, -1.0])
     np.testing.assert_array_equal(b.y, a.y * flip)
     assert abs(a.y[-1, 0] - a.y[0, 0]) > 0.1  # the path did curve sideways
+
+
+# ------------------------------------------------------------------ the disputed cases
+
+#: Tolerance of each comparison with pencore at the reference's base resolution
+#: (pointpanel.BASE): 2 |change when the step is halved| + 2 |change when the panels are
+#: doubled| + |pencore's change from rtol 1e-5 to 1e-7| (+ both bracket widths for Vcr),
+#: as measured in benchmarks/results/pointpanel.csv, rounded up. A first-order error is
+#: twice its change under halving; the changes are large for the small deviations because
+#: the pure Heaviside switches the shank's zero-normal-velocity panels on and off within
+#: a step, and a whole row of panels crosses the free surface at once.
+TOL = {
+    "alpha_5": 0.23,  # deg
+    "alpha_20": 0.15,  # deg
+    "alpha_25": 0.27,  # deg
+    "phi_280": 0.022,  # deg
+    "phi_1000": 0.12,  # deg
+    "vcr": 9.0,  # m/s
+}
+
+
+def test_results_file_records_agreement_within_the_test_tolerances(pp):
+    """benchmarks/results/pointpanel.csv (what the docs quote) was made at the base
+    resolutions the tests run, its tolerances are within those asserted here and every
+    case agrees within them."""
+    with pp.OUT.open(newline="") as fh:
+        rows = {r["quantity"]: r for r in csv.DictReader(fh)}
+    assert set(rows) == set(pp.QUANTITIES)
+    for q, r in rows.items():
+        case = pp.QUANTITIES[q][0]
+        assert f"base {pp.BASE[case].label()}" in r["note"], q
+        assert abs(float(r["difference"])) <= float(r["tolerance"]), q
+        assert r["agrees"] == "yes", q
+        if q in TOL:
+            assert float(r["tolerance"]) <= TOL[q], q
+
+
+@pytest.fixture(scope="module")
+def spin_runs(pp):
+    return {w: pp.spin_run(pp.BASE["spin"], w) for w in pp.SPIN_CASE["omegas"]}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("omega", [5.0, 20.0, 25.0])
+def test_spin_deviation_agrees_with_pencore(pp, spin_runs, omega):
+    """#2 at 1000 m/s, normal, spun about the centre of mass: the reference's alpha is
+    pencore's within TOL, and neither turns back (the paper: alpha 0.14 and 2.86 deg at
+    5 and 20 rad/s, turning back at 25). At 20 rad/s the paper's 2.86 deg lies far
+    outside the reference's tolerance."""
+    import pencore
+
+    ds = pencore.simulate("p2", "soil", 1000.0, omega=omega)
+    ref = spin_runs[omega]
+    assert abs(ref.final_deviation() - pp.pencore_deviation(ds)) <= TOL[f"alpha_{omega:g}"]
+    assert not ref.reversed and not int(ds.attrs["reversed"])
+    if omega == 20.0:
+        assert abs(ref.final_deviation() - 2.86) > 5 * TOL["alpha_20"]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("velocity", [280.0, 1000.0])
+def test_yaw_deviation_agrees_with_pencore(pp, velocity):
+    """#4, normal impact, velocity normal and axis tilted by 0.1 deg (the configured
+    axis_tilted reading): the reference's phi is pencore's within TOL."""
+    import pencore
+
+    ds = pencore.simulate("p4", "soil", velocity, 0.1, -0.1)
+    ref = pp.yaw_run(pp.BASE["yaw"], velocity).final_deviation()
+    assert abs(ref - pp.pencore_deviation(ds)) <= TOL[f"phi_{velocity:g}"]
+
+
+@pytest.mark.slow
+def test_vcr_brackets_pencores(pp):
+    """#2 in soil at 45 deg from the tip at (-1, 1) m: the reference does not turn back
+    TOL below pencore's Vcr bracket and does turn back TOL above it (the paper's Vcr,
+    1641-1650 m/s, is far above both)."""
+    lo, hi = pp.pencore_vcr()
+    assert hi - lo <= 1.0
+    model = pp.Model("p2", pp.BASE["vcr"])
+    assert not pp.vcr_turns_back(pp.BASE["vcr"], lo - TOL["vcr"], model)
+    assert pp.vcr_turns_back(pp.BASE["vcr"], hi + TOL["vcr"], model)
+    assert hi + TOL["vcr"] < 1641.0
