@@ -659,7 +659,7 @@ COLUMNS = ["case", "quantity", "reference", "step_change", "panel_change", "penc
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--write", action="store_true", help=f"write {OUT.relative_to(ROOT)}")
+    ap.add_argument("--write", action="store_true", help="write benchmarks/results/pointpanel.csv")
     ap.add_argument(
         "--case", choices=sorted(BASE), action="append",
         help="run only these cases (with --write, their rows replace those in the file)",
