@@ -400,7 +400,7 @@ def measurements_table() -> str:
     for _, r in _validation_summary().iterrows():
         lines.append(
             f"| {r['data_set']} | {r['law']} | {r['model']} | {r['n']} | {r['n_left_out']} | "
-            f"{_pct(r['mean_abs_rel_error'])[1:] if r['n'] else '-'} | {_pct(r['bias'])} | "
+            f"{_pct(r['mean_abs_rel_error']).lstrip('+')} | {_pct(r['bias'])} | "
             f"{_pct(r['worst'])} |"
         )
     return "\n".join(lines)
@@ -415,11 +415,10 @@ def validation_headline() -> str:
         "|---|---|---|---|---|",
     ]
     for _, r in t.iterrows():
-        if not r["n"]:
-            continue
+        mean = _pct(r["mean_abs_rel_error"]).lstrip("+")
         lines.append(
             f"| {r['data_set']} | {r['law']} | {r['n']} (+{r['n_left_out']} deformed) | "
-            f"{_pct(r['bias'])} | {_pct(r['mean_abs_rel_error'])[1:]} |"
+            f"{_pct(r['bias'])} | {mean} |"
         )
     return "\n".join(lines)
 
