@@ -27,7 +27,7 @@ import xarray as xr
 import pencore
 from pencore.cli.main import main
 from pencore.errors import InputError
-from pencore.inputs.gate import MAX_YAML_BYTES, MAX_YAML_DEPTH
+from pencore.inputs.gate import MAX_YAML_BYTES, MAX_YAML_DEPTH, MAX_YAML_NODES
 from pencore.inputs.library import get_projectile, get_target
 from pencore.search import critical, perforation
 
@@ -400,15 +400,27 @@ def _hostile_file(kind: str, folder: Path) -> tuple[str, str]:
     if kind == "syntax-error":
         path.write_text("name: [unclosed\n")
         return str(path), "not valid YAML"
+    if kind in CONTROL_CHARACTERS:
+        char = CONTROL_CHARACTERS[kind]
+        path.write_text(f"name: probe\nnote: a{char}b\n")
+        return str(path), f"U+{ord(char):04X} is not allowed"
+    if kind == "too-many-values":
+        path.write_text("name: x\nnote: [" + "1, " * MAX_YAML_NODES + "1]\n")
+        return str(path), f"more than {MAX_YAML_NODES} values"
     if kind == "missing":
         return str(path), "No such file"
     raise AssertionError(kind)
 
 
+#: Characters YAML does not allow anywhere in a document.
+CONTROL_CHARACTERS = {"bel": "\x07", "esc": "\x1b", "nul": "\x00"}
+
+
 HOSTILE_FILES = [
     "alias-bomb", "recursive-alias", "deep-nesting", "deep-mapping", "duplicate-key",
     "duplicate-nested-key", "fifo", "directory", "dev-zero", "dev-null", "oversized",
-    "binary", "not-a-mapping", "syntax-error", "missing",
+    "binary", "not-a-mapping", "syntax-error", "missing", *CONTROL_CHARACTERS,
+    "too-many-values",
 ]  # fmt: skip
 
 
@@ -435,6 +447,45 @@ def test_api_hostile_file(kind, tmp_path):
     path, word = _hostile_file(kind, tmp_path)
     text = _api(lambda: get_target(path))
     assert word in text
+
+
+@pytest.mark.parametrize("char", list(CONTROL_CHARACTERS.values()), ids=list(CONTROL_CHARACTERS))
+def test_control_character_located_by_line_and_column(char, tmp_path):
+    path = tmp_path / "t.yaml"
+    path.write_text(f"name: t\ncoefficients: [1.0e7, 0.0, 1{char}00.0]\n")
+    text = _api(lambda: get_target(str(path)))
+    assert f"target file {str(path)!r} is not valid YAML: the character U+{ord(char):04X}" in text
+    assert text.endswith("at line 2, column 29"), text  # 28 characters before it
+
+
+@pytest.mark.parametrize("char", [*CONTROL_CHARACTERS.values(), "\ud800"])
+def test_cli_numerics_value_with_a_control_character(char, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    status, line = _cli(
+        [*SIM, "--velocity", "300", "--numerics", f"rtol=1e-5{char}"], capsys, tmp_path
+    )
+    assert status == 2
+    # the value is not YAML, so it stays text, which is not plain decimal
+    assert "rtol must be a number written in plain decimal" in line, line
+    assert f"got {'1e-5' + char!r}" in line, line
+
+
+def test_yaml_merge_keys_accepted(tmp_path):
+    # a merge key (<<) takes the keys of an anchored mapping; the mapping's own keys win
+    path = tmp_path / "t.yaml"
+    path.write_text(
+        "name: merged\nlayers:\n"
+        "  - medium: &m {name: m, coefficients: [1.0e7, 0.0, 100.0], friction: 0.1}\n"
+        "    thickness: 0.1\n"
+        "  - medium: {<<: *m, name: rough, friction: 0.3}\n"
+    )
+    target = get_target(str(path))
+    assert [lay.medium.name for lay in target.layers] == ["m", "rough"]
+    assert target.layers[1].medium.coefficients == (1.0e7, 0.0, 100.0)
+    assert target.layers[1].medium.friction_mu[0] == 0.3
+    # a key repeated in the mapping itself is still refused, merged or not
+    path.write_text("name: t\ncoefficients: &c [1.0e7, 0.0, 100.0]\nx: {<<: {a: 1}, b: 2, b: 3}\n")
+    assert "repeats the key 'b' (line 3)" in _api(lambda: get_target(str(path)))
 
 
 # ------------------------------------------------------------ writes
