@@ -863,3 +863,148 @@ def test_a_one_micron_foil_is_perforated(tmp_path, capsys):
     argv = ["simulate", "--projectile", "p2", "--target", str(path), "--velocity", "300"]
     assert main(argv) == 0
     assert "perforated" in capsys.readouterr().out
+
+
+# ------------------------------------------------------------ workflow configuration: the gate
+
+CONFIG_GATE = [
+    # (text of a --configfile, what the one line says)
+    ("archive:\n  max_points: 23:20\n", "archive.max_points: must be of type integer, got '23:20'"),
+    ("archive: {max_points: 4}\narchive: {max_points: 3}\n", "repeats the key 'archive' (line 2)"),
+    ("archive:\n  max_points: -0.0\n", "archive.max_points: must be of type integer, got -0.0"),
+    ("archive:\n  max_points: 1_0\n", "must be of type integer, got '1_0'"),
+    ("archive:\n  max_points: 4\x07\n", "U+0007 is not allowed"),
+    ("- 1\n", "must hold a mapping of sections, got list"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("text, word", CONFIG_GATE, ids=lambda x: str(x)[:30])
+def test_workflow_config_read_through_the_gate(text, word, tmp_path):
+    import yaml
+
+    from pencore.errors import ConfigError
+    from pencore.studies.config_check import read_config, strict_schema_error
+
+    extra = tmp_path / "extra.yaml"
+    extra.write_text(text)
+    schema = yaml.safe_load((REPO / "workflow" / "schemas" / "config.schema.yaml").read_text())
+    t0 = time.monotonic()
+    try:
+        cfg = read_config([REPO / "config" / "config.yaml", extra])
+        message = strict_schema_error(cfg, schema)
+    except ConfigError as exc:
+        message = str(exc)
+    assert time.monotonic() - t0 < HANG_GUARD_S
+    assert message is not None and "\n" not in message
+    _check_line(message)
+    assert word in message, message
+
+
+def test_workflow_config_merged_as_snakemake_merges_it(tmp_path):
+    import yaml
+
+    from pencore.errors import ConfigError
+    from pencore.studies.config_check import check_config, read_config, strict_schema_error
+
+    # a --configfile updates the shipped one section by section; --config KEY=VALUE on top
+    extra = tmp_path / "extra.yaml"
+    extra.write_text("numerics: {rtol: 1.0e-6}\narchive: {max_points: 300}\n")
+    cfg = read_config([REPO / "config" / "config.yaml", extra], ["archive={max_points: 200}"])
+    assert cfg["numerics"] == {"rtol": 1e-6} and cfg["archive"] == {"max_points": 200}
+    assert cfg["validation"] == _config()["validation"]
+    schema = yaml.safe_load((REPO / "workflow" / "schemas" / "config.schema.yaml").read_text())
+    assert strict_schema_error(cfg, schema) is None
+    check_config(cfg, REPO)
+    # a --config value goes through the gate too
+    with pytest.raises(ConfigError, match="U\\+001B is not allowed"):
+        read_config([REPO / "config" / "config.yaml"], ["archive={max_points: 2\x1b}"])
+
+
+@pytest.mark.parametrize(
+    "path, value, word",
+    [
+        ("ensemble.cases.0.n_chunks", 10**5, "n_chunks must be in [1, 1000], got 100000"),
+        ("ensemble.cases.0.n_chunks", 10**7, "n_chunks must be in [1, 1000], got 10000000"),
+        ("ensemble.cases.0.n_samples", 10**9, "n_samples must be in [1, 1e+06], got 1000000000"),
+    ],
+)
+def test_workflow_counts_refused_before_the_plan(path, value, word):
+    from pencore.errors import ConfigError
+    from pencore.studies.config_check import check_config
+
+    t0 = time.monotonic()
+    with pytest.raises(ConfigError) as info:
+        check_config(_edit(_config(), path, value), REPO)
+    assert time.monotonic() - t0 < 1.0
+    assert word in str(info.value), info.value
+
+
+# ------------------------------------------------------------ counts
+
+COUNT_CASES = {
+    "layers": (
+        lambda: get_target({"name": "x", "layers": [{"medium": "soil", "thickness": 0.1}] * 10**5}),
+        "number of layers must be in [1, 1000], got 100000",
+    ),
+    "shank-segments": (
+        lambda: get_projectile(
+            {
+                "name": "p",
+                "diameter": 0.0254,
+                "nose": {"kind": "ogive", "crh": 3, "density": 7850},
+                "shank": [{"length": 0.001, "density": 7850}] * 10**5,
+            }
+        ),
+        "number of shank segments must be in [0, 1000], got 100000",
+    ),  # fmt: skip
+    "friction-rows": (
+        lambda: get_target(
+            {
+                "name": "r",
+                "coefficients": [1e7, 0, 100],
+                "friction": [[i, 0.1] for i in range(10**6)],
+            }
+        ),
+        "friction table rows must be in [1, 10000], got 1000000",
+    ),
+    "layer-objects": (
+        lambda: pencore.Target("x", [pencore.Layer(get_target("soil").medium, 0.1)] * 10**5),
+        "number of layers must be in [1, 1000], got 100000",
+    ),
+    "samples": (
+        lambda: __import__("pencore.studies.ensemble", fromlist=["x"]).sample_conditions(
+            {
+                "name": "a",
+                "projectile": "p2",
+                "target": "soil",
+                "n_samples": 10**9,
+                "velocity_m_s": 300,
+            }
+        ),
+        "n_samples must be in [1, 1e+06], got 1000000000",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", list(COUNT_CASES))
+def test_counts_refused_naming_the_limit(case):
+    call, word = COUNT_CASES[case]
+    text = _api(call)
+    assert word in text, text
+
+
+def test_yaml_with_more_values_than_the_gate_admits_is_refused_at_the_count(tmp_path):
+    # 10^5 layers in 3.5 MB: refused when the value count passes MAX_YAML_NODES, not parsed whole
+    path = tmp_path / "t.yaml"
+    path.write_text("name: x\nlayers:\n" + "  - {medium: soil, thickness: 0.1}\n" * 10**5)
+    t0 = time.monotonic()
+    text = _api(lambda: get_target(str(path)))
+    assert time.monotonic() - t0 < 10.0
+    assert f"holds more than {MAX_YAML_NODES} values" in text
+
+
+def test_the_longest_friction_table_the_limits_admit_is_read(tmp_path):
+    rows = "".join(f"  - [{i}, 0.1]\n" for i in range(10_000))
+    path = tmp_path / "t.yaml"
+    path.write_text(f"name: rough\ncoefficients: [1.0e7, 0.0, 100.0]\nfriction:\n{rows}")
+    assert len(get_target(str(path)).medium.friction_speeds) == 10_000
