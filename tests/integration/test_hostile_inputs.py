@@ -708,6 +708,7 @@ def test_valid_yaml_with_anchors_and_a_long_friction_table(tmp_path):
         {"max_wall": float("inf")},
         {"rtol": 1e-12},
         {"t_max": 100},
+        {"eps": 0.1},  # the top of eps's range runs with the default v_stop
     ],
 )
 def test_valid_numerics_at_the_limits_accepted(kwargs):

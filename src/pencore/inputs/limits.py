@@ -228,9 +228,10 @@ LIMITS: dict[str, Limit] = {
         "eps",
         "m/s",
         0.0,
-        10.0,
+        0.1,
         kind="physical / guard",
-        why="0 is the pure step (may fail as chatter); 10 m/s is a typo guard",
+        why="0 is the pure step (may fail as chatter); at most the default v_stop "
+        "(1 m/s) over 10, so that every eps in range runs with the default v_stop",
     ),
     "rtol": Limit("rtol", "", 1e-12, 0.1, kind="guard", why="round-off to 10 %"),
     "max_travel": Limit(
