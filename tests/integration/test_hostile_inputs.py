@@ -1009,3 +1009,100 @@ def test_the_longest_friction_table_the_limits_admit_is_read(tmp_path):
     path = tmp_path / "t.yaml"
     path.write_text(f"name: rough\ncoefficients: [1.0e7, 0.0, 100.0]\nfriction:\n{rows}")
     assert len(get_target(str(path)).medium.friction_speeds) == 10_000
+
+
+# ------------------------------------------------------------ silent and raw cases
+
+
+@pytest.mark.parametrize(
+    "value",
+    [np.timedelta64(300), np.datetime64("2020-01-01"), np.array(np.timedelta64(3, "s"))],
+    ids=["timedelta64", "datetime64", "timedelta-array"],
+)
+def test_numpy_times_are_not_speeds(value):
+    text = _api(lambda: pencore.simulate("p2", "soil", value))
+    assert "velocity must be a number of m/s" in text
+
+
+RAW_API = {
+    "nose-kind-list": (
+        lambda: get_projectile(
+            {"name": "p", "diameter": 0.0254, "nose": {"kind": ["ogive"], "density": 7850}}
+        ),
+        "nose kind must be ogive, cone or flat, got ['ogive']",
+    ),
+    "layer-thickness-text": (
+        lambda: pencore.Layer(get_target("soil").medium, "1"),
+        "layer thickness must be a number of m, got '1' (str)",
+    ),
+    "cone-of-1e-6-deg": (
+        lambda: get_projectile(
+            {
+                "name": "p",
+                "diameter": 0.0254,
+                "nose": {"kind": "cone", "half_angle_deg": 1e-6, "density": 7850},
+            }
+        ),
+        "nose length 7.277e+05 m is beyond 100 m",
+    ),  # fmt: skip
+    "distribution-kind-list": (
+        lambda: __import__("pencore.studies.ensemble", fromlist=["x"]).sample_conditions(
+            {"name": "a", "projectile": "p2", "target": "soil", "velocity_m_s": {"dist": ["x"]}}
+        ),
+        "dist must be one of fixed, uniform, normal, got ['x']",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", list(RAW_API))
+def test_raw_api_cases_are_one_line(case):
+    call, word = RAW_API[case]
+    text = _api(call)
+    assert word in text, text
+
+
+def test_cli_out_with_a_trailing_slash_is_refused(capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    status, line = _cli([*SIM, "--velocity", "300", "--out", "o.nc/"], capsys, tmp_path)
+    assert status == 2
+    assert "output file 'o.nc/' ends in '/', which names a directory" in line
+
+
+def test_cli_out_onto_a_read_only_file_is_refused(capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    kept = tmp_path / "kept.nc"
+    kept.write_bytes(b"keep me")
+    kept.chmod(0o444)
+    status, line = _cli([*SIM, "--velocity", "300", "--out", "kept.nc"], capsys, tmp_path)
+    assert status == 2
+    assert "output file 'kept.nc' is read-only (mode 0444)" in line
+    assert kept.read_bytes() == b"keep me"
+
+
+def test_cli_v_stop_not_below_the_impact_speed_is_refused(capsys, tmp_path, monkeypatch):
+    # the run would stop before its first step and report a depth of 0
+    monkeypatch.chdir(tmp_path)
+    argv = [*SIM, "--velocity", "300", "--numerics", "v_stop=1000"]
+    status, line = _cli(argv, capsys, tmp_path)
+    assert status == 2
+    assert "v_stop = 1000 m/s is not below the impact speed 300 m/s" in line
+
+
+def test_cli_non_ascii_out_under_an_ascii_locale(tmp_path):
+    # an ASCII file-system encoding: the name arrives as undecodable bytes, which netCDF
+    # cannot take; refused before the run, nothing written
+    env = {**os.environ, "LC_ALL": "C", "PYTHONIOENCODING": "ascii", "PYTHONUTF8": "0"}
+    env["PYTHONCOERCECLOCALE"] = "0"
+    argv = [sys.executable, "-m", "pencore", *SIM, "--velocity", "300", "--out", "é.nc"]
+    out = subprocess.run(argv, cwd=tmp_path, env=env, capture_output=True, timeout=120)
+    assert out.returncode == 2, out.stderr
+    lines = out.stderr.decode("ascii").strip().splitlines()
+    assert len(lines) == 1 and "is not text in this locale's encoding (ascii)" in lines[0]
+    assert list(tmp_path.iterdir()) == []
+    # a UTF-8 file system with an ASCII standard output: written, the name shown escaped
+    env = {**os.environ, "PYTHONIOENCODING": "ascii", "PYTHONUTF8": "1"}
+    out = subprocess.run(argv, cwd=tmp_path, env=env, capture_output=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert b"Traceback" not in out.stderr and b"output:" in out.stdout
+    assert b"\\xe9.nc" in out.stdout
+    assert [p.name for p in tmp_path.iterdir()] == ["é.nc"]

@@ -443,7 +443,7 @@ def as_float(value: Any, allow_str: bool) -> float | None:
     """``value`` as a float when it is a real number (not a bool; a 0-d numeric array;
     with ``allow_str``, a string in plain decimal notation,
     :func:`pencore.inputs.gate.decimal`), else None."""
-    if isinstance(value, bool):
+    if isinstance(value, bool) or _is_time(value):
         return None
     if isinstance(value, numbers.Real):
         try:
@@ -465,6 +465,13 @@ def as_float(value: Any, allow_str: bool) -> float | None:
     except ImportError:  # pragma: no cover
         pass
     return None
+
+
+def _is_time(value: Any) -> bool:
+    """True for numpy's time values (``np.timedelta64(300)`` is an integer to Python, but
+    a duration, not a speed or a length), scalars and 0-d arrays alike."""
+    kind = getattr(getattr(value, "dtype", None), "kind", "")
+    return kind in ("m", "M")
 
 
 def integer(value: Any, key: str, what: str = "") -> int:
