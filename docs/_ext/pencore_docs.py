@@ -15,6 +15,7 @@ the workflow's configuration schema, and a run of the solver (the Dataset's vari
 from __future__ import annotations
 
 import argparse
+import math
 import re
 import subprocess
 import sys
@@ -68,8 +69,35 @@ def _fmt(value: object, digits: int = 4) -> str:
 
 
 def comparison() -> pd.DataFrame:
-    """The archived comparison with the paper (``results/archive/paper_comparison.csv``)."""
-    return pd.read_csv(COMPARISON, dtype=str, keep_default_na=False)
+    """The archived comparison with the paper (``results/archive/paper_comparison.csv``),
+    checked: every ``value`` row has a finite, nonzero paper value and a finite pencore
+    value or a bound (``> 500``), so that no ``nan`` or stray text renders as a number."""
+    table = pd.read_csv(COMPARISON, dtype=str, keep_default_na=False)
+    for _, row in table[table["kind"] == "value"].iterrows():
+        paper, ours = _finite(row["paper_value"]), _finite(row["pencore_value"])
+        if paper is None or paper == 0.0:
+            _bad(row, "paper_value", "a finite, nonzero number")
+        if ours is None and not re.match(r"^[<>]=? ?[0-9]", row["pencore_value"]):
+            _bad(row, "pencore_value", "a finite number or a bound such as '> 500'")
+        if row["difference"] and _finite(row["difference"]) is None:
+            _bad(row, "difference", "a finite number or empty")
+    return table
+
+
+def _finite(text: str) -> float | None:
+    """``text`` as a finite float, else None (text, ``nan``, ``inf``)."""
+    try:
+        x = float(text)
+    except ValueError:
+        return None
+    return x if math.isfinite(x) else None
+
+
+def _bad(row: pd.Series, column: str, allowed: str) -> None:
+    raise ValueError(
+        f"{COMPARISON.name}: row {row['quantity'][:60]!r} has {column} = "
+        f"{row[column][:40]!r}; a value row needs {allowed}"
+    )
 
 
 def _row(table: pd.DataFrame, quantity: str) -> pd.Series:
