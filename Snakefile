@@ -13,6 +13,7 @@ from snakemake.utils import min_version, validate
 
 from pencore.errors import ConfigError
 from pencore.io.results import set_aside_unreadable
+from pencore.studies.parts import remade_target
 from pencore.studies.config_check import check_config, read_config
 from pencore.studies.config_check import schema_error_message, strict_schema_error
 from pencore.studies.sources import physics_source_hash, plotting_source_hash
@@ -58,13 +59,8 @@ except Exception:
 
 
 # a result that cannot be opened (corrupt, truncated by a crash or a full disk) would
-# pass as up to date: set it aside, so that this run makes it again
-for _path, _reason in set_aside_unreadable("results"):
-    print(
-        f"pencore: {_path} cannot be read ({_reason}); set aside as {_path.name}.corrupt "
-        "and made again",
-        file=sys.stderr,
-    )
+# pass as up to date: set it aside, so that this run makes it again (below)
+SET_ASIDE = set_aside_unreadable("results")
 
 
 report: "workflow/report/workflow.rst"
@@ -92,6 +88,20 @@ include: "workflow/rules/tables.smk"
 include: "workflow/rules/perforation.smk"
 include: "workflow/rules/near_surface.smk"
 include: "workflow/rules/archive.smk"
+
+
+# A file set aside above is made again: a final result because `all` asks for it; an
+# intermediate one (an ensemble chunk part, a study part) because it is asked for here,
+# as Snakemake would leave it missing while the result gathered from it is up to date.
+for _path, _reason in SET_ASIDE:
+    _remade = remade_target(str(_path), workflow.rules, ENSEMBLES)
+    if _remade:
+        ALL_TARGETS.append(_remade)
+    print(
+        f"pencore: {_path} cannot be read ({_reason}); set aside as {_path.name}.corrupt"
+        + (" and made again" if _remade else "; no rule of this configuration makes it"),
+        file=sys.stderr,
+    )
 
 
 rule all:

@@ -1106,3 +1106,30 @@ def test_cli_non_ascii_out_under_an_ascii_locale(tmp_path):
     assert b"Traceback" not in out.stderr and b"output:" in out.stdout
     assert b"\\xe9.nc" in out.stdout
     assert [p.name for p in tmp_path.iterdir()] == ["é.nc"]
+
+
+# ------------------------------------------------------------ corrupt results made again
+
+
+def test_a_corrupt_chunk_part_set_aside_is_asked_for_again():
+    # an intermediate file set aside would stay missing while the gathered result is up
+    # to date; the Snakefile asks for it in `all` when a rule of this configuration
+    # still makes it (and not a part beyond n_chunks, left by an earlier configuration)
+    from pencore.studies.parts import remade_target
+
+    class Rule:
+        def __init__(self, name: str, pattern: str) -> None:
+            self.name, self.pattern = name, pattern
+
+        def is_producer(self, path: str) -> bool:
+            import re
+
+            return re.fullmatch(self.pattern, path) is not None
+
+    rules = [Rule("all", ".*"), Rule("ensemble_chunk", r"results/ensemble/\w+/parts/\d+\.nc")]
+    ensembles = {"p2_soil_oblique": {"n_chunks": 4}}
+    part = "results/ensemble/p2_soil_oblique/parts/1.nc"
+    assert remade_target(part, rules, ensembles) == part
+    assert remade_target("results/ensemble/p2_soil_oblique/parts/9.nc", rules, ensembles) is None
+    assert remade_target("results/ensemble/gone/parts/0.nc", rules, ensembles) is None
+    assert remade_target("results/other/x.nc", rules, ensembles) is None
