@@ -21,6 +21,7 @@ import subprocess
 import sys
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -360,11 +361,30 @@ def numbers() -> dict[str, str]:
 ARCHIVE = REPO / "results" / "archive"
 
 
-def ballistic_limit_table() -> str:
-    """Archived ballistic limits against plate thickness and obliquity (m/s)."""
+def open_archive(path: Path, study: str) -> Any:
+    """The archived dataset at ``path``, opened, when it holds ``study`` (its ``study``
+    attribute); another study's dataset (a valid netCDF in the wrong place) stops the
+    build with one line naming the file and both studies, not a ``KeyError`` on a
+    variable it lacks."""
     import xarray as xr
 
-    with xr.open_dataset(ARCHIVE / "perforation" / "ballistic_limit.nc") as ds:
+    ds = xr.open_dataset(path)
+    found = ds.attrs.get("study")
+    if found != study:
+        ds.close()
+        raise ValueError(
+            f"{path.relative_to(REPO)} holds the study {found!r}, not {study!r}; "
+            "remake it with `python -m snakemake --cores 2 archive`"
+        )
+    return ds
+
+
+def ballistic_limit_table() -> str:
+    """Archived ballistic limits against plate thickness and obliquity (m/s)."""
+
+    with open_archive(
+        ARCHIVE / "perforation" / "ballistic_limit.nc", "perforation/ballistic_limit"
+    ) as ds:
         obl = [f"{o:g} deg" for o in ds.obliquity.values]
         lines = [
             "| thickness (m) | " + " | ".join(obl) + " |",
@@ -384,9 +404,10 @@ def ballistic_limit_table() -> str:
 
 def residual_velocity_text() -> str:
     """The archived residual-velocity study's Recht-Ipson fit, in one paragraph."""
-    import xarray as xr
 
-    with xr.open_dataset(ARCHIVE / "perforation" / "residual_velocity.nc") as ds:
+    with open_archive(
+        ARCHIVE / "perforation" / "residual_velocity.nc", "perforation/residual_velocity"
+    ) as ds:
         a = ds.attrs
         v = ds.velocity.values
         return (
@@ -405,7 +426,7 @@ def measurements_table() -> str:
     """Statistics of pencore against every measured quantity in the archive."""
     import xarray as xr
 
-    with xr.open_dataset(ARCHIVE / "validation" / "measurements.nc") as ds:
+    with open_archive(ARCHIVE / "validation" / "measurements.nc", "validation/measurements") as ds:
         lines = [
             "| quantity | shots | mean error | 95 % interval | RMS | largest |",
             "|---|---|---|---|---|---|",
@@ -450,17 +471,17 @@ def _stats_table(ds, rows_dim: str, group_dim: str) -> str:  # noqa: ANN001 (xar
 
 def measurement_options_table() -> str:
     """Error statistics of every measured shot under each near-surface option set."""
-    import xarray as xr
 
-    with xr.open_dataset(ARCHIVE / "validation" / "measurements_options.nc") as ds:
+    with open_archive(
+        ARCHIVE / "validation" / "measurements_options.nc", "validation/measurements_options"
+    ) as ds:
         return _stats_table(ds.load(), "option", "group")
 
 
 def obliquity_ratio_table() -> str:
     """Measured obliquity ratios V_bl(theta)/V_bl(0) against each model's."""
-    import xarray as xr
 
-    with xr.open_dataset(ARCHIVE / "near_surface" / "obliquity_ratio.nc") as ds:
+    with open_archive(ARCHIVE / "near_surface" / "obliquity_ratio.nc", "near_surface/ratio") as ds:
         return _stats_table(ds.load(), "model", "material_class")
 
 
@@ -468,9 +489,8 @@ def ballistic_map_table() -> str:
     """The archived ballistic-limit map: V_bl (m/s) and its ratio to normal incidence,
     one table per near-surface option, with the line-of-sight rule."""
     import numpy as np
-    import xarray as xr
 
-    with xr.open_dataset(ARCHIVE / "near_surface" / "ballistic_map.nc") as ds:
+    with open_archive(ARCHIVE / "near_surface" / "ballistic_map.nc", "near_surface/map") as ds:
         ds = ds.load()
     obl = ds.obliquity.values
     head = "| t/d | " + " | ".join(f"{o:g} deg" for o in obl) + " |"

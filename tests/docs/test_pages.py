@@ -128,3 +128,22 @@ def test_a_comparison_value_that_is_not_a_number_stops_the_build(
     with pytest.raises(ValueError, match="row 'Vcr of #2 at 45 deg") as info:
         gen.PAGES["headline.md"]()
     assert word in str(info.value) and "\n" not in str(info.value)
+
+
+def test_an_archived_dataset_of_another_study_stops_the_build(gen, tmp_path, monkeypatch):
+    # a valid netCDF in the wrong place (a trajectory where the ballistic limits belong)
+    # is named with both studies, not a KeyError on the variable it lacks
+    import shutil
+
+    archive = tmp_path / "results" / "archive"
+    (archive / "perforation").mkdir(parents=True)
+    shutil.copy(
+        gen.ARCHIVE / "fig7" / "trajectories.nc", archive / "perforation" / "ballistic_limit.nc"
+    )
+    monkeypatch.setattr(gen, "REPO", tmp_path)
+    monkeypatch.setattr(gen, "ARCHIVE", archive)
+    with pytest.raises(ValueError) as info:
+        gen.ballistic_limit_table()
+    text = str(info.value)
+    assert "results/archive/perforation/ballistic_limit.nc holds the study 'section4/fig7'" in text
+    assert "not 'perforation/ballistic_limit'" in text and "\n" not in text
