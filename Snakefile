@@ -5,6 +5,7 @@
 #   python -m snakemake --report results/report.html
 # Physics lives in the pencore package; rules call it through thin workflow/scripts/.
 import sys
+from pathlib import Path
 
 import yaml
 from snakemake.exceptions import WorkflowError
@@ -12,7 +13,9 @@ from snakemake.utils import min_version, validate
 
 from pencore.errors import ConfigError
 from pencore.io.results import set_aside_unreadable
-from pencore.studies.config_check import check_config, schema_error_message
+from pencore.studies.parts import remade_target
+from pencore.studies.config_check import check_config, read_config
+from pencore.studies.config_check import schema_error_message, strict_schema_error
 from pencore.studies.sources import physics_source_hash, plotting_source_hash
 
 min_version("9.0")
@@ -21,9 +24,30 @@ min_version("9.0")
 configfile: "config/config.yaml"
 
 
+# The configuration is read again through pencore's input gate (plain decimal numbers,
+# repeated keys refused; Snakemake's reader takes 23:20 for 1400 and keeps the last of two
+# sections), in Snakemake's order: this file's configfile, each --configfile, --config.
 # A bad config stops here with one line naming the key path (Snakemake's own message
 # would print the whole schema; pencore.studies.config_check adds what a schema cannot say).
 try:
+    _cli_files = [Path(f).absolute() for f in workflow.overwrite_configfiles]
+    _own_files = [
+        f
+        for f in workflow.configfiles
+        if Path(f).absolute() not in _cli_files
+        and not workflow.config_settings.replace_workflow_config
+    ]
+    _overrides = workflow.config_settings.config_args
+    if not isinstance(_overrides, (list, tuple)):
+        _overrides = workflow.config_settings.config
+    _gated = read_config([*_own_files, *_cli_files], _overrides)
+    config.clear()
+    config.update(_gated)
+    with open(workflow.source_path("workflow/schemas/config.schema.yaml")) as f:
+        _schema = yaml.safe_load(f)
+    _type_error = strict_schema_error(config, _schema)
+    if _type_error:
+        raise ConfigError(_type_error)
     validate(config, "workflow/schemas/config.schema.yaml")
     check_config(config, workflow.basedir)
 except ConfigError as exc:
@@ -35,13 +59,8 @@ except Exception:
 
 
 # a result that cannot be opened (corrupt, truncated by a crash or a full disk) would
-# pass as up to date: set it aside, so that this run makes it again
-for _path, _reason in set_aside_unreadable("results"):
-    print(
-        f"pencore: {_path} cannot be read ({_reason}); set aside as {_path.name}.corrupt "
-        "and made again",
-        file=sys.stderr,
-    )
+# pass as up to date: set it aside, so that this run makes it again (below)
+SET_ASIDE = set_aside_unreadable("results")
 
 
 report: "workflow/report/workflow.rst"
@@ -69,6 +88,20 @@ include: "workflow/rules/tables.smk"
 include: "workflow/rules/perforation.smk"
 include: "workflow/rules/near_surface.smk"
 include: "workflow/rules/archive.smk"
+
+
+# A file set aside above is made again: a final result because `all` asks for it; an
+# intermediate one (an ensemble chunk part, a study part) because it is asked for here,
+# as Snakemake would leave it missing while the result gathered from it is up to date.
+for _path, _reason in SET_ASIDE:
+    _remade = remade_target(str(_path), workflow.rules, ENSEMBLES)
+    if _remade:
+        ALL_TARGETS.append(_remade)
+    print(
+        f"pencore: {_path} cannot be read ({_reason}); set aside as {_path.name}.corrupt"
+        + (" and made again" if _remade else "; no rule of this configuration makes it"),
+        file=sys.stderr,
+    )
 
 
 rule all:

@@ -15,11 +15,13 @@ the workflow's configuration schema, and a run of the solver (the Dataset's vari
 from __future__ import annotations
 
 import argparse
+import math
 import re
 import subprocess
 import sys
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -68,8 +70,35 @@ def _fmt(value: object, digits: int = 4) -> str:
 
 
 def comparison() -> pd.DataFrame:
-    """The archived comparison with the paper (``results/archive/paper_comparison.csv``)."""
-    return pd.read_csv(COMPARISON, dtype=str, keep_default_na=False)
+    """The archived comparison with the paper (``results/archive/paper_comparison.csv``),
+    checked: every ``value`` row has a finite, nonzero paper value and a finite pencore
+    value or a bound (``> 500``), so that no ``nan`` or stray text renders as a number."""
+    table = pd.read_csv(COMPARISON, dtype=str, keep_default_na=False)
+    for _, row in table[table["kind"] == "value"].iterrows():
+        paper, ours = _finite(row["paper_value"]), _finite(row["pencore_value"])
+        if paper is None or paper == 0.0:
+            _bad(row, "paper_value", "a finite, nonzero number")
+        if ours is None and not re.match(r"^[<>]=? ?[0-9]", row["pencore_value"]):
+            _bad(row, "pencore_value", "a finite number or a bound such as '> 500'")
+        if row["difference"] and _finite(row["difference"]) is None:
+            _bad(row, "difference", "a finite number or empty")
+    return table
+
+
+def _finite(text: str) -> float | None:
+    """``text`` as a finite float, else None (text, ``nan``, ``inf``)."""
+    try:
+        x = float(text)
+    except ValueError:
+        return None
+    return x if math.isfinite(x) else None
+
+
+def _bad(row: pd.Series, column: str, allowed: str) -> None:
+    raise ValueError(
+        f"{COMPARISON.name}: row {row['quantity'][:60]!r} has {column} = "
+        f"{row[column][:40]!r}; a value row needs {allowed}"
+    )
 
 
 def _row(table: pd.DataFrame, quantity: str) -> pd.Series:
@@ -332,11 +361,30 @@ def numbers() -> dict[str, str]:
 ARCHIVE = REPO / "results" / "archive"
 
 
-def ballistic_limit_table() -> str:
-    """Archived ballistic limits against plate thickness and obliquity (m/s)."""
+def open_archive(path: Path, study: str) -> Any:
+    """The archived dataset at ``path``, opened, when it holds ``study`` (its ``study``
+    attribute); another study's dataset (a valid netCDF in the wrong place) stops the
+    build with one line naming the file and both studies, not a ``KeyError`` on a
+    variable it lacks."""
     import xarray as xr
 
-    with xr.open_dataset(ARCHIVE / "perforation" / "ballistic_limit.nc") as ds:
+    ds = xr.open_dataset(path)
+    found = ds.attrs.get("study")
+    if found != study:
+        ds.close()
+        raise ValueError(
+            f"{path.relative_to(REPO)} holds the study {found!r}, not {study!r}; "
+            "remake it with `python -m snakemake --cores 2 archive`"
+        )
+    return ds
+
+
+def ballistic_limit_table() -> str:
+    """Archived ballistic limits against plate thickness and obliquity (m/s)."""
+
+    with open_archive(
+        ARCHIVE / "perforation" / "ballistic_limit.nc", "perforation/ballistic_limit"
+    ) as ds:
         obl = [f"{o:g} deg" for o in ds.obliquity.values]
         lines = [
             "| thickness (m) | " + " | ".join(obl) + " |",
@@ -356,9 +404,10 @@ def ballistic_limit_table() -> str:
 
 def residual_velocity_text() -> str:
     """The archived residual-velocity study's Recht-Ipson fit, in one paragraph."""
-    import xarray as xr
 
-    with xr.open_dataset(ARCHIVE / "perforation" / "residual_velocity.nc") as ds:
+    with open_archive(
+        ARCHIVE / "perforation" / "residual_velocity.nc", "perforation/residual_velocity"
+    ) as ds:
         a = ds.attrs
         v = ds.velocity.values
         return (
@@ -376,13 +425,11 @@ def residual_velocity_text() -> str:
 def _validation_summary():  # noqa: ANN202 (pandas.DataFrame)
     """The validation summary of the archive (:func:`pencore.studies.measurements.
     summary_table` over the archived measurements and obliquity ratios)."""
-    import xarray as xr
-
     from pencore.studies.measurements import summary_table
 
     with (
-        xr.open_dataset(ARCHIVE / "validation" / "measurements.nc") as m,
-        xr.open_dataset(ARCHIVE / "near_surface" / "obliquity_ratio.nc") as r,
+        open_archive(ARCHIVE / "validation" / "measurements.nc", "validation/measurements") as m,
+        open_archive(ARCHIVE / "near_surface" / "obliquity_ratio.nc", "near_surface/ratio") as r,
     ):
         return summary_table(m.load(), r.load())
 
@@ -448,17 +495,17 @@ def _stats_table(ds, rows_dim: str, group_dim: str) -> str:  # noqa: ANN001 (xar
 
 def measurement_options_table() -> str:
     """Error statistics of every measured shot under each near-surface option set."""
-    import xarray as xr
 
-    with xr.open_dataset(ARCHIVE / "validation" / "measurements_options.nc") as ds:
+    with open_archive(
+        ARCHIVE / "validation" / "measurements_options.nc", "validation/measurements_options"
+    ) as ds:
         return _stats_table(ds.load(), "option", "group")
 
 
 def obliquity_ratio_table() -> str:
     """Measured obliquity ratios V_bl(theta)/V_bl(0) against each model's."""
-    import xarray as xr
 
-    with xr.open_dataset(ARCHIVE / "near_surface" / "obliquity_ratio.nc") as ds:
+    with open_archive(ARCHIVE / "near_surface" / "obliquity_ratio.nc", "near_surface/ratio") as ds:
         return _stats_table(ds.load(), "model", "material_class")
 
 
@@ -466,9 +513,8 @@ def ballistic_map_table() -> str:
     """The archived ballistic-limit map: V_bl (m/s) and its ratio to normal incidence,
     one table per near-surface option, with the line-of-sight rule."""
     import numpy as np
-    import xarray as xr
 
-    with xr.open_dataset(ARCHIVE / "near_surface" / "ballistic_map.nc") as ds:
+    with open_archive(ARCHIVE / "near_surface" / "ballistic_map.nc", "near_surface/map") as ds:
         ds = ds.load()
     obl = ds.obliquity.values
     head = "| t/d | " + " | ".join(f"{o:g} deg" for o in obl) + " |"

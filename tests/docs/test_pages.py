@@ -100,3 +100,50 @@ def test_no_reference_to_documents_not_in_the_repository():
             assert (page.parent / link).exists() or (page.parent / f"{link}.md").exists(), (
                 f"{page.relative_to(REPO)} links to {link}, which does not exist"
             )
+
+
+@pytest.mark.parametrize(
+    "column, value, word",
+    [
+        ("pencore_value", "nan", "pencore_value = 'nan'"),
+        ("pencore_value", "some text", "pencore_value = 'some text'"),
+        ("paper_value", "inf", "paper_value = 'inf'"),
+        ("paper_value", "0", "paper_value = '0'"),
+        ("difference", "nan", "difference = 'nan'"),
+    ],
+)
+def test_a_comparison_value_that_is_not_a_number_stops_the_build(
+    gen, tmp_path, monkeypatch, column, value, word
+):
+    # a value row renders as a number and a relative difference: nan or stray text
+    # there would print "+nan %" in the README and the docs; the build stops naming it
+    import pandas as pd
+
+    table = pd.read_csv(gen.COMPARISON, dtype=str, keep_default_na=False)
+    row = table.index[table["quantity"] == "Vcr of #2 at 45 deg obliquity (Fig. 7)"][0]
+    table.loc[row, column] = value
+    bad = tmp_path / "paper_comparison.csv"
+    table.to_csv(bad, index=False)
+    monkeypatch.setattr(gen, "COMPARISON", bad)
+    with pytest.raises(ValueError, match="row 'Vcr of #2 at 45 deg") as info:
+        gen.PAGES["headline.md"]()
+    assert word in str(info.value) and "\n" not in str(info.value)
+
+
+def test_an_archived_dataset_of_another_study_stops_the_build(gen, tmp_path, monkeypatch):
+    # a valid netCDF in the wrong place (a trajectory where the ballistic limits belong)
+    # is named with both studies, not a KeyError on the variable it lacks
+    import shutil
+
+    archive = tmp_path / "results" / "archive"
+    (archive / "perforation").mkdir(parents=True)
+    shutil.copy(
+        gen.ARCHIVE / "fig7" / "trajectories.nc", archive / "perforation" / "ballistic_limit.nc"
+    )
+    monkeypatch.setattr(gen, "REPO", tmp_path)
+    monkeypatch.setattr(gen, "ARCHIVE", archive)
+    with pytest.raises(ValueError) as info:
+        gen.ballistic_limit_table()
+    text = str(info.value)
+    assert "results/archive/perforation/ballistic_limit.nc holds the study 'section4/fig7'" in text
+    assert "not 'perforation/ballistic_limit'" in text and "\n" not in text

@@ -29,7 +29,7 @@ import xarray as xr
 import pencore
 from pencore.cli.main import main
 from pencore.errors import InputError
-from pencore.inputs.gate import MAX_YAML_BYTES, MAX_YAML_DEPTH
+from pencore.inputs.gate import MAX_YAML_BYTES, MAX_YAML_DEPTH, MAX_YAML_NODES
 from pencore.inputs.library import get_projectile, get_target
 from pencore.search import critical, perforation
 
@@ -402,15 +402,27 @@ def _hostile_file(kind: str, folder: Path) -> tuple[str, str]:
     if kind == "syntax-error":
         path.write_text("name: [unclosed\n")
         return str(path), "not valid YAML"
+    if kind in CONTROL_CHARACTERS:
+        char = CONTROL_CHARACTERS[kind]
+        path.write_text(f"name: probe\nnote: a{char}b\n")
+        return str(path), f"U+{ord(char):04X} is not allowed"
+    if kind == "too-many-values":
+        path.write_text("name: x\nnote: [" + "1, " * MAX_YAML_NODES + "1]\n")
+        return str(path), f"more than {MAX_YAML_NODES} values"
     if kind == "missing":
         return str(path), "No such file"
     raise AssertionError(kind)
 
 
+#: Characters YAML does not allow anywhere in a document.
+CONTROL_CHARACTERS = {"bel": "\x07", "esc": "\x1b", "nul": "\x00"}
+
+
 HOSTILE_FILES = [
     "alias-bomb", "recursive-alias", "deep-nesting", "deep-mapping", "duplicate-key",
     "duplicate-nested-key", "fifo", "directory", "dev-zero", "dev-null", "oversized",
-    "binary", "not-a-mapping", "syntax-error", "missing",
+    "binary", "not-a-mapping", "syntax-error", "missing", *CONTROL_CHARACTERS,
+    "too-many-values",
 ]  # fmt: skip
 
 
@@ -437,6 +449,45 @@ def test_api_hostile_file(kind, tmp_path):
     path, word = _hostile_file(kind, tmp_path)
     text = _api(lambda: get_target(path))
     assert word in text
+
+
+@pytest.mark.parametrize("char", list(CONTROL_CHARACTERS.values()), ids=list(CONTROL_CHARACTERS))
+def test_control_character_located_by_line_and_column(char, tmp_path):
+    path = tmp_path / "t.yaml"
+    path.write_text(f"name: t\ncoefficients: [1.0e7, 0.0, 1{char}00.0]\n")
+    text = _api(lambda: get_target(str(path)))
+    assert f"target file {str(path)!r} is not valid YAML: the character U+{ord(char):04X}" in text
+    assert text.endswith("at line 2, column 29"), text  # 28 characters before it
+
+
+@pytest.mark.parametrize("char", [*CONTROL_CHARACTERS.values(), "\ud800"])
+def test_cli_numerics_value_with_a_control_character(char, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    status, line = _cli(
+        [*SIM, "--velocity", "300", "--numerics", f"rtol=1e-5{char}"], capsys, tmp_path
+    )
+    assert status == 2
+    # the value is not YAML, so it stays text, which is not plain decimal
+    assert "rtol must be a number written in plain decimal" in line, line
+    assert f"got {'1e-5' + char!r}" in line, line
+
+
+def test_yaml_merge_keys_accepted(tmp_path):
+    # a merge key (<<) takes the keys of an anchored mapping; the mapping's own keys win
+    path = tmp_path / "t.yaml"
+    path.write_text(
+        "name: merged\nlayers:\n"
+        "  - medium: &m {name: m, coefficients: [1.0e7, 0.0, 100.0], friction: 0.1}\n"
+        "    thickness: 0.1\n"
+        "  - medium: {<<: *m, name: rough, friction: 0.3}\n"
+    )
+    target = get_target(str(path))
+    assert [lay.medium.name for lay in target.layers] == ["m", "rough"]
+    assert target.layers[1].medium.coefficients == (1.0e7, 0.0, 100.0)
+    assert target.layers[1].medium.friction_mu[0] == 0.3
+    # a key repeated in the mapping itself is still refused, merged or not
+    path.write_text("name: t\ncoefficients: &c [1.0e7, 0.0, 100.0]\nx: {<<: {a: 1}, b: 2, b: 3}\n")
+    assert "repeats the key 'b' (line 3)" in _api(lambda: get_target(str(path)))
 
 
 # ------------------------------------------------------------ writes
@@ -693,6 +744,7 @@ def test_valid_yaml_with_anchors_and_a_long_friction_table(tmp_path):
         {"max_wall": float("inf")},
         {"rtol": 1e-12},
         {"t_max": 100},
+        {"eps": 0.1},  # the top of eps's range runs with the default v_stop
     ],
 )
 def test_valid_numerics_at_the_limits_accepted(kwargs):
@@ -848,3 +900,272 @@ def test_a_one_micron_foil_is_perforated(tmp_path, capsys):
     argv = ["simulate", "--projectile", "p2", "--target", str(path), "--velocity", "300"]
     assert main(argv) == 0
     assert "perforated" in capsys.readouterr().out
+
+
+# ------------------------------------------------------------ workflow configuration: the gate
+
+CONFIG_GATE = [
+    # (text of a --configfile, what the one line says)
+    ("archive:\n  max_points: 23:20\n", "archive.max_points: must be of type integer, got '23:20'"),
+    ("archive: {max_points: 4}\narchive: {max_points: 3}\n", "repeats the key 'archive' (line 2)"),
+    ("archive:\n  max_points: -0.0\n", "archive.max_points: must be of type integer, got -0.0"),
+    ("archive:\n  max_points: 1_0\n", "must be of type integer, got '1_0'"),
+    ("archive:\n  max_points: 4\x07\n", "U+0007 is not allowed"),
+    ("- 1\n", "must hold a mapping of sections, got list"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("text, word", CONFIG_GATE, ids=lambda x: str(x)[:30])
+def test_workflow_config_read_through_the_gate(text, word, tmp_path):
+    import yaml
+
+    from pencore.errors import ConfigError
+    from pencore.studies.config_check import read_config, strict_schema_error
+
+    extra = tmp_path / "extra.yaml"
+    extra.write_text(text)
+    schema = yaml.safe_load((REPO / "workflow" / "schemas" / "config.schema.yaml").read_text())
+    t0 = time.monotonic()
+    try:
+        cfg = read_config([REPO / "config" / "config.yaml", extra])
+        message = strict_schema_error(cfg, schema)
+    except ConfigError as exc:
+        message = str(exc)
+    assert time.monotonic() - t0 < HANG_GUARD_S
+    assert message is not None and "\n" not in message
+    _check_line(message)
+    assert word in message, message
+
+
+def test_workflow_config_merged_as_snakemake_merges_it(tmp_path):
+    import yaml
+
+    from pencore.errors import ConfigError
+    from pencore.studies.config_check import check_config, read_config, strict_schema_error
+
+    # a --configfile updates the shipped one section by section; --config KEY=VALUE on top
+    extra = tmp_path / "extra.yaml"
+    extra.write_text("numerics: {rtol: 1.0e-6}\narchive: {max_points: 300}\n")
+    cfg = read_config([REPO / "config" / "config.yaml", extra], ["archive={max_points: 200}"])
+    assert cfg["numerics"] == {"rtol": 1e-6} and cfg["archive"] == {"max_points": 200}
+    assert cfg["validation"] == _config()["validation"]
+    schema = yaml.safe_load((REPO / "workflow" / "schemas" / "config.schema.yaml").read_text())
+    assert strict_schema_error(cfg, schema) is None
+    check_config(cfg, REPO)
+    # a --config value goes through the gate too
+    with pytest.raises(ConfigError, match="U\\+001B is not allowed"):
+        read_config([REPO / "config" / "config.yaml"], ["archive={max_points: 2\x1b}"])
+
+
+@pytest.mark.parametrize(
+    "path, value, word",
+    [
+        ("ensemble.cases.0.n_chunks", 10**5, "n_chunks must be in [1, 1000], got 100000"),
+        ("ensemble.cases.0.n_chunks", 10**7, "n_chunks must be in [1, 1000], got 10000000"),
+        ("ensemble.cases.0.n_samples", 10**9, "n_samples must be in [1, 1e+06], got 1000000000"),
+    ],
+)
+def test_workflow_counts_refused_before_the_plan(path, value, word):
+    from pencore.errors import ConfigError
+    from pencore.studies.config_check import check_config
+
+    t0 = time.monotonic()
+    with pytest.raises(ConfigError) as info:
+        check_config(_edit(_config(), path, value), REPO)
+    assert time.monotonic() - t0 < 1.0
+    assert word in str(info.value), info.value
+
+
+# ------------------------------------------------------------ counts
+
+COUNT_CASES = {
+    "layers": (
+        lambda: get_target({"name": "x", "layers": [{"medium": "soil", "thickness": 0.1}] * 10**5}),
+        "number of layers must be in [1, 1000], got 100000",
+    ),
+    "shank-segments": (
+        lambda: get_projectile(
+            {
+                "name": "p",
+                "diameter": 0.0254,
+                "nose": {"kind": "ogive", "crh": 3, "density": 7850},
+                "shank": [{"length": 0.001, "density": 7850}] * 10**5,
+            }
+        ),
+        "number of shank segments must be in [0, 1000], got 100000",
+    ),  # fmt: skip
+    "friction-rows": (
+        lambda: get_target(
+            {
+                "name": "r",
+                "coefficients": [1e7, 0, 100],
+                "friction": [[i, 0.1] for i in range(10**6)],
+            }
+        ),
+        "friction table rows must be in [1, 10000], got 1000000",
+    ),
+    "layer-objects": (
+        lambda: pencore.Target("x", [pencore.Layer(get_target("soil").medium, 0.1)] * 10**5),
+        "number of layers must be in [1, 1000], got 100000",
+    ),
+    "samples": (
+        lambda: __import__("pencore.studies.ensemble", fromlist=["x"]).sample_conditions(
+            {
+                "name": "a",
+                "projectile": "p2",
+                "target": "soil",
+                "n_samples": 10**9,
+                "velocity_m_s": 300,
+            }
+        ),
+        "n_samples must be in [1, 1e+06], got 1000000000",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", list(COUNT_CASES))
+def test_counts_refused_naming_the_limit(case):
+    call, word = COUNT_CASES[case]
+    text = _api(call)
+    assert word in text, text
+
+
+def test_yaml_with_more_values_than_the_gate_admits_is_refused_at_the_count(tmp_path):
+    # 10^5 layers in 3.5 MB: refused when the value count passes MAX_YAML_NODES, not parsed whole
+    path = tmp_path / "t.yaml"
+    path.write_text("name: x\nlayers:\n" + "  - {medium: soil, thickness: 0.1}\n" * 10**5)
+    t0 = time.monotonic()
+    text = _api(lambda: get_target(str(path)))
+    assert time.monotonic() - t0 < 10.0
+    assert f"holds more than {MAX_YAML_NODES} values" in text
+
+
+def test_the_longest_friction_table_the_limits_admit_is_read(tmp_path):
+    rows = "".join(f"  - [{i}, 0.1]\n" for i in range(10_000))
+    path = tmp_path / "t.yaml"
+    path.write_text(f"name: rough\ncoefficients: [1.0e7, 0.0, 100.0]\nfriction:\n{rows}")
+    assert len(get_target(str(path)).medium.friction_speeds) == 10_000
+
+
+# ------------------------------------------------------------ silent and raw cases
+
+
+@pytest.mark.parametrize(
+    "value",
+    [np.timedelta64(300), np.datetime64("2020-01-01"), np.array(np.timedelta64(3, "s"))],
+    ids=["timedelta64", "datetime64", "timedelta-array"],
+)
+def test_numpy_times_are_not_speeds(value):
+    text = _api(lambda: pencore.simulate("p2", "soil", value))
+    assert "velocity must be a number of m/s" in text
+
+
+RAW_API = {
+    "nose-kind-list": (
+        lambda: get_projectile(
+            {"name": "p", "diameter": 0.0254, "nose": {"kind": ["ogive"], "density": 7850}}
+        ),
+        "nose kind must be ogive, cone or flat, got ['ogive']",
+    ),
+    "layer-thickness-text": (
+        lambda: pencore.Layer(get_target("soil").medium, "1"),
+        "layer thickness must be a number of m, got '1' (str)",
+    ),
+    "cone-of-1e-6-deg": (
+        lambda: get_projectile(
+            {
+                "name": "p",
+                "diameter": 0.0254,
+                "nose": {"kind": "cone", "half_angle_deg": 1e-6, "density": 7850},
+            }
+        ),
+        "nose length 7.277e+05 m is beyond 100 m",
+    ),  # fmt: skip
+    "distribution-kind-list": (
+        lambda: __import__("pencore.studies.ensemble", fromlist=["x"]).sample_conditions(
+            {"name": "a", "projectile": "p2", "target": "soil", "velocity_m_s": {"dist": ["x"]}}
+        ),
+        "dist must be one of fixed, uniform, normal, got ['x']",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", list(RAW_API))
+def test_raw_api_cases_are_one_line(case):
+    call, word = RAW_API[case]
+    text = _api(call)
+    assert word in text, text
+
+
+def test_cli_out_with_a_trailing_slash_is_refused(capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    status, line = _cli([*SIM, "--velocity", "300", "--out", "o.nc/"], capsys, tmp_path)
+    assert status == 2
+    assert "output file 'o.nc/' ends in '/', which names a directory" in line
+
+
+def test_cli_out_onto_a_read_only_file_is_refused(capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    kept = tmp_path / "kept.nc"
+    kept.write_bytes(b"keep me")
+    kept.chmod(0o444)
+    status, line = _cli([*SIM, "--velocity", "300", "--out", "kept.nc"], capsys, tmp_path)
+    assert status == 2
+    assert "output file 'kept.nc' is read-only (mode 0444)" in line
+    assert kept.read_bytes() == b"keep me"
+
+
+def test_cli_v_stop_not_below_the_impact_speed_is_refused(capsys, tmp_path, monkeypatch):
+    # the run would stop before its first step and report a depth of 0
+    monkeypatch.chdir(tmp_path)
+    argv = [*SIM, "--velocity", "300", "--numerics", "v_stop=1000"]
+    status, line = _cli(argv, capsys, tmp_path)
+    assert status == 2
+    assert "v_stop = 1000 m/s is not below the impact speed 300 m/s" in line
+
+
+def test_cli_non_ascii_out_under_an_ascii_locale(tmp_path):
+    # an ASCII file-system encoding: the name arrives as undecodable bytes, which netCDF
+    # cannot take; refused before the run, nothing written
+    env = {**os.environ, "LC_ALL": "C", "PYTHONIOENCODING": "ascii", "PYTHONUTF8": "0"}
+    env["PYTHONCOERCECLOCALE"] = "0"
+    argv = [sys.executable, "-m", "pencore", *SIM, "--velocity", "300", "--out", "é.nc"]
+    out = subprocess.run(argv, cwd=tmp_path, env=env, capture_output=True, timeout=120)
+    assert out.returncode == 2, out.stderr
+    lines = out.stderr.decode("ascii").strip().splitlines()
+    assert len(lines) == 1 and "is not text in this locale's encoding (ascii)" in lines[0]
+    assert list(tmp_path.iterdir()) == []
+    # a UTF-8 file system with an ASCII standard output: written, the name shown escaped
+    env = {**os.environ, "PYTHONIOENCODING": "ascii", "PYTHONUTF8": "1"}
+    out = subprocess.run(argv, cwd=tmp_path, env=env, capture_output=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert b"Traceback" not in out.stderr and b"output:" in out.stdout
+    assert b"\\xe9.nc" in out.stdout
+    assert [p.name for p in tmp_path.iterdir()] == ["é.nc"]
+
+
+# ------------------------------------------------------------ corrupt results made again
+
+
+def test_a_corrupt_chunk_part_set_aside_is_asked_for_again():
+    # an intermediate file set aside would stay missing while the gathered result is up
+    # to date; the Snakefile asks for it in `all` when a rule of this configuration
+    # still makes it (and not a part beyond n_chunks, left by an earlier configuration)
+    from pencore.studies.parts import remade_target
+
+    class Rule:
+        def __init__(self, name: str, pattern: str) -> None:
+            self.name, self.pattern = name, pattern
+
+        def is_producer(self, path: str) -> bool:
+            import re
+
+            return re.fullmatch(self.pattern, path) is not None
+
+    rules = [Rule("all", ".*"), Rule("ensemble_chunk", r"results/ensemble/\w+/parts/\d+\.nc")]
+    ensembles = {"p2_soil_oblique": {"n_chunks": 4}}
+    part = "results/ensemble/p2_soil_oblique/parts/1.nc"
+    assert remade_target(part, rules, ensembles) == part
+    assert remade_target("results/ensemble/p2_soil_oblique/parts/9.nc", rules, ensembles) is None
+    assert remade_target("results/ensemble/gone/parts/0.nc", rules, ensembles) is None
+    assert remade_target("results/other/x.nc", rules, ensembles) is None

@@ -142,7 +142,14 @@ class _GuardedStdout:
 
     def write(self, text: str) -> int:
         try:
-            return self._stream.write(text)  # type: ignore[attr-defined]
+            try:
+                return self._stream.write(text)  # type: ignore[attr-defined]
+            except UnicodeEncodeError:
+                # a name the locale's encoding cannot show (a non-ASCII --out under an
+                # ASCII locale): shown with backslash escapes; the file itself is written
+                enc = getattr(self._stream, "encoding", None) or "ascii"
+                safe = text.encode(enc, "backslashreplace").decode(enc)
+                return self._stream.write(safe)  # type: ignore[attr-defined]
         except BrokenPipeError:
             raise
         except OSError as exc:

@@ -284,6 +284,22 @@ def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
         Status 2 naming the path and the problem; status 1 when the disk or quota is
         full.
     """
+    if out.endswith(("/", os.sep)):  # Path() would drop the slash and write the file
+        raise CommandFailure(
+            f"output file {brief_path(out)} ends in {out[-1]!r}, which names a directory; "
+            "give a FILE.nc path",
+            2,
+        )
+    try:
+        out.encode("utf-8")
+    except UnicodeEncodeError:
+        # bytes the locale cannot decode (a non-ASCII name under an ASCII locale): the
+        # netCDF library takes names as UTF-8 text and would fail after the run
+        raise CommandFailure(
+            f"output file {brief_path(out)} is not text in this locale's encoding "
+            f"({sys.getfilesystemencoding()}); use a UTF-8 locale or an ASCII name",
+            2,
+        ) from None
     path = Path(out)
     if path.suffix != ".nc":
         raise CommandFailure(f"output file {brief_path(out)} must end in .nc", 2)
@@ -300,6 +316,18 @@ def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
         check_replaceable(path, [p for p in inputs if os.path.isfile(p)])
     except WriteError as exc:
         raise CommandFailure(str(exc), 2) from None
+    try:
+        mode = os.lstat(path).st_mode
+    except (OSError, ValueError):
+        mode = None
+    if mode is not None and stat.S_ISREG(mode) and not mode & 0o222:
+        # renaming a new file onto it would replace it (the directory is writable), and
+        # root may write it anyway: a file made read-only is one its owner wants kept
+        raise CommandFailure(
+            f"output file {brief_path(out)} is read-only (mode {stat.S_IMODE(mode):04o}); "
+            "make it writable to replace it, or give another name",
+            2,
+        )
     parent = path.parent
     _check_directory(parent, out)
     # a real probe: os.access alone is fooled by root, read-only mounts, ACLs

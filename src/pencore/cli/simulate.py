@@ -157,6 +157,14 @@ def run(args: argparse.Namespace) -> int:
     out = check_output(args.out, inputs) if args.out is not None else None
     projectile = resolve("projectile", args.projectile, get_projectile)
     target = with_windows(resolve("target", args.target, get_target), args)
+    numerics = resolve_numerics(dict(args.numerics))
+    if numerics.v_stop >= args.velocity:
+        # the run would be over before its first step, with a depth of 0
+        raise CommandFailure(
+            f"numerics v_stop = {numerics.v_stop:g} m/s is not below the impact speed "
+            f"{args.velocity:g} m/s: the run would stop before it starts (lower v_stop)",
+            2,
+        )
     t0 = time.perf_counter()
     ds = simulate(
         projectile,
@@ -167,7 +175,7 @@ def run(args: argparse.Namespace) -> int:
         args.omega,
         start=None if args.start is None else tuple(args.start),
         stop_at_reversal=args.stop_at_reversal,
-        numerics=resolve_numerics(dict(args.numerics)),
+        numerics=numerics,
     )
     total = time.perf_counter() - t0
     if out is not None:

@@ -14,9 +14,18 @@ before it can hang or exhaust the process:
   non-blocking, so a FIFO cannot block the open either);
 * when it is larger than :data:`MAX_YAML_BYTES`;
 * when it nests deeper than :data:`MAX_YAML_DEPTH`;
-* when its aliases would expand it beyond :data:`MAX_YAML_NODES` nodes (an "alias
-  bomb": a few hundred bytes that expand to billions of values);
-* when a mapping repeats a key (YAML would silently keep the last value).
+* when it holds more than :data:`MAX_YAML_NODES` values, or its aliases would expand it
+  beyond that (an "alias bomb": a few hundred bytes that expand to billions of values);
+  the count is checked as the document is composed, so a file is refused after at most
+  that many values, whatever its size;
+* when a mapping repeats a key (YAML would silently keep the last value); a merge key
+  (``<<: *anchor``) is YAML, and the mapping's own keys override the merged ones;
+* when it is not YAML: a control character (BEL, ESC, NUL), bad syntax, a tag pencore
+  does not construct; the message gives the line and column.
+
+The text is scanned by libyaml's C parser when PyYAML has it (:data:`FAST_YAML`), by
+PyYAML's Python one otherwise; ``benchmarks/bench_parse.py`` measures the worst inputs
+within these bounds.
 
 Text is a number only in plain ASCII decimal notation (:data:`DECIMAL`, read by
 :func:`decimal`): an optional sign, digits without leading zeros, an optional fraction
@@ -53,6 +62,7 @@ __all__ = [
     "MAX_YAML_BYTES",
     "MAX_YAML_DEPTH",
     "MAX_YAML_NODES",
+    "FAST_YAML",
     "MAX_QUOTE",
 ]
 
@@ -60,9 +70,10 @@ __all__ = [
 MAX_YAML_BYTES = 16 * 1024 * 1024
 #: Deepest nesting of YAML collections (a target file needs 5 levels).
 MAX_YAML_DEPTH = 64
-#: Most nodes a YAML document may hold once its aliases are expanded (a 10 000-row
-#: friction table holds ~30 000).
-MAX_YAML_NODES = 2_000_000
+#: Most values (nodes) a YAML document may hold, its aliases expanded: 6 times the
+#: ~30 000 of a 10 000-row friction table (the longest the limits table admits), and
+#: few enough that the worst document is parsed in seconds (``benchmarks/bench_parse.py``).
+MAX_YAML_NODES = 200_000
 #: Longest quote of a user value in a message (characters of its ``repr``).
 MAX_QUOTE = 60
 
@@ -125,14 +136,54 @@ def _int_digits(value: int) -> int:
     return int(n.bit_length() * 0.30103) + 1
 
 
-class _BoundedLoader(yaml.SafeLoader):
-    """yaml's safe loader with bounded depth and alias expansion, refusing duplicate keys."""
+#: The YAML event source: libyaml's C parser when PyYAML was built with it
+#: (``yaml.__with_libyaml__``), else PyYAML's pure-Python reader, scanner and parser.
+#: Composition stays in Python either way (:class:`_BoundedLoader`), so the gate's depth
+#: and count bounds hold for both; libyaml only makes the scanning fast.
+try:
+    from yaml.cyaml import CParser as _CParser
+except ImportError:  # pragma: no cover - PyYAML built without libyaml
+    _CParser = None
+FAST_YAML: bool = bool(getattr(yaml, "__with_libyaml__", False)) and _CParser is not None
+
+if FAST_YAML:
+    _EventSource: Any = _CParser
+else:  # pragma: no cover - PyYAML without libyaml
+
+    class _EventSource(yaml.reader.Reader, yaml.scanner.Scanner, yaml.parser.Parser):  # type: ignore[no-redef]
+        def __init__(self, stream: str) -> None:
+            yaml.reader.Reader.__init__(self, stream)
+            yaml.scanner.Scanner.__init__(self)
+            yaml.parser.Parser.__init__(self)
+
+
+#: Keys that are not keys: YAML's merge key ``<<`` and its value key ``=``.
+_MERGE_TAGS = ("tag:yaml.org,2002:merge", "tag:yaml.org,2002:value")
+
+
+class _BoundedLoader(
+    yaml.composer.Composer, yaml.constructor.SafeConstructor, yaml.resolver.Resolver, _EventSource
+):
+    """yaml's safe loader with bounded depth and node count, refusing duplicate keys.
+
+    The composer is PyYAML's Python one on top of :data:`_EventSource` (libyaml's
+    compiled composer recurses once per level on the C stack and crashes the process on
+    deep nesting, before any bound can be checked).
+    """
 
     def __init__(self, stream: str) -> None:
-        super().__init__(stream)
+        _EventSource.__init__(self, stream)
+        yaml.composer.Composer.__init__(self)
+        yaml.constructor.SafeConstructor.__init__(self)
+        yaml.resolver.Resolver.__init__(self)
         self._depth = 0
+        self._nodes = 0
+        self._checked: set[int] = set()
 
     def compose_node(self, parent: Any, index: Any) -> Any:
+        self._nodes += 1
+        if self._nodes > MAX_YAML_NODES:
+            raise _Refused(f"holds more than {MAX_YAML_NODES} values")
         self._depth += 1
         if self._depth > MAX_YAML_DEPTH:
             raise _Refused(f"nests deeper than {MAX_YAML_DEPTH} levels")
@@ -141,10 +192,15 @@ class _BoundedLoader(yaml.SafeLoader):
         finally:
             self._depth -= 1
 
-    def construct_mapping(self, node: Any, deep: bool = False) -> Any:
-        if isinstance(node, yaml.MappingNode):
+    def flatten_mapping(self, node: Any) -> None:
+        """Refuse a key the mapping itself repeats, then merge its ``<<`` keys (a key
+        written in the mapping overrides a merged one: that is what a merge key is for)."""
+        if id(node) not in self._checked:
+            self._checked.add(id(node))
             seen: set[Any] = set()
             for key_node, _ in node.value:
+                if key_node.tag in _MERGE_TAGS:
+                    continue
                 key = self.construct_object(key_node, deep=True)
                 try:
                     dup = key in seen
@@ -154,7 +210,7 @@ class _BoundedLoader(yaml.SafeLoader):
                 if dup:
                     line = key_node.start_mark.line + 1
                     raise _Refused(f"repeats the key {brief(key)} (line {line})")
-        return super().construct_mapping(node, deep=deep)
+        super().flatten_mapping(node)
 
 
 def _plain_number(construct: Any, *, special: bool = False) -> Any:
@@ -217,11 +273,18 @@ def _children(node: Any) -> list[Any]:
 
 
 def load_yaml_text(text: str, what: str) -> Any:
-    """Parse YAML ``text`` with the gate's bounds; ``what`` names it in messages."""
+    """Parse YAML ``text`` with the gate's bounds; ``what`` names it in messages.
+
+    Every error the parser can raise (a control character, a surrogate, bad syntax, a
+    tag without a constructor, a nesting or count bound) becomes one
+    :class:`~pencore.errors.InputError` naming ``what`` and, where the parser knows it,
+    the line and column.
+    """
     if len(text) > MAX_YAML_BYTES:
         raise InputError(f"{what} is longer than {MAX_YAML_BYTES} characters")
-    loader = _BoundedLoader(text)
+    loader = None
     try:
+        loader = _BoundedLoader(text)
         node = loader.get_single_node()
         if node is None:
             return None
@@ -232,13 +295,55 @@ def load_yaml_text(text: str, what: str) -> Any:
         return loader.construct_document(node)
     except _Refused as exc:
         raise InputError(f"{what} {exc}") from None
+    except yaml.reader.ReaderError as exc:
+        raise InputError(f"{what} is not valid YAML: {_reader_problem(exc, text)}") from None
+    except yaml.MarkedYAMLError as exc:
+        raise InputError(f"{what} is not valid YAML: {_marked_problem(exc)}") from None
     except yaml.YAMLError as exc:
         first = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
         raise InputError(f"{what} is not valid YAML: {brief(first, 200)[1:-1]}") from None
+    except UnicodeError as exc:  # a lone surrogate in text given through the API
+        where = _line_column(text, getattr(exc, "start", -1))
+        raise InputError(
+            f"{what} is not valid YAML: a character that is not Unicode text{where}"
+        ) from None
     except RecursionError:
         raise InputError(f"{what} nests too deeply") from None
     finally:
-        loader.dispose()
+        if loader is not None:
+            loader.dispose()
+
+
+def _line_column(text: str, index: int) -> str:
+    """`` at line L, column C`` of character ``index`` of ``text`` (1-based), or ``""``."""
+    if index < 0 or index > len(text):
+        return ""
+    line = text.count("\n", 0, index) + 1
+    column = index - (text.rfind("\n", 0, index) + 1) + 1
+    return f" at line {line}, column {column}"
+
+
+def _reader_problem(exc: yaml.reader.ReaderError, text: str) -> str:
+    """A reader error (a character YAML does not allow) in one line, located: the
+    reader stops at the first such character, so its first occurrence is the one."""
+    char = exc.character
+    if isinstance(char, int):
+        index = text.find(chr(char))
+        name = f"U+{char:04X}"
+    else:  # a byte that does not decode (a bytes stream)
+        index = -1
+        name = brief(char)
+    return f"the character {name} is not allowed ({exc.reason}){_line_column(text, index)}"
+
+
+def _marked_problem(exc: yaml.MarkedYAMLError) -> str:
+    """A parser error in one line: what went wrong, at which line and column."""
+    mark = exc.problem_mark or exc.context_mark
+    problem = exc.problem or exc.context or type(exc).__name__
+    if exc.context and exc.problem:
+        problem = f"{exc.context}: {exc.problem}"
+    where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark is not None else ""
+    return f"{brief(' '.join(str(problem).split()), 160)[1:-1]}{where}"
 
 
 def read_yaml(path: str | os.PathLike[str], what: str) -> Any:

@@ -26,7 +26,7 @@ import numpy as np
 
 from pencore.errors import GeometryError, InputError
 from pencore.inputs.gate import brief
-from pencore.inputs.limits import number
+from pencore.inputs.limits import LIMITS, count, number
 
 __all__ = [
     "OgiveNose",
@@ -259,7 +259,24 @@ class Projectile:
 
     def __post_init__(self) -> None:
         _check("diameter", self.diameter)
+        what = f"projectile {brief(self.name)}"
+        if isinstance(self.shank, str) or not hasattr(self.shank, "__len__"):
+            raise GeometryError(
+                f"{what}: shank must be a sequence of Cylinder, got {brief(self.shank)}"
+            )
+        try:
+            count(self.shank, "shank_segments", what)
+        except InputError as exc:
+            raise GeometryError(str(exc)) from None
         object.__setattr__(self, "shank", tuple(self.shank))
+        # a nose of a few calibres, not kilometres (a cone of 1e-6 deg is 2722 km long)
+        nose_length = self.nose.length(self.radius) if hasattr(self.nose, "length") else 0.0
+        if not nose_length <= LIMITS["length"].hi:
+            raise GeometryError(
+                f"{what}: nose length {nose_length:.4g} m is beyond "
+                f"{LIMITS['length'].hi:g} m (the segment-length guard); a cone half-angle "
+                "this small is a typo"
+            )
 
     @property
     def radius(self) -> float:

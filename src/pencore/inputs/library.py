@@ -18,7 +18,7 @@ import numpy as np
 from pencore.errors import InputError
 from pencore.inputs.gate import brief, brief_path, read_yaml
 from pencore.inputs.geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
-from pencore.inputs.limits import check_keys, number
+from pencore.inputs.limits import check_keys, count, number
 from pencore.inputs.target import Layer, Medium, Target
 
 __all__ = [
@@ -343,7 +343,7 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
         raise InputError(f"{what}: 'nose' must be a mapping with a 'kind', got {brief(nd)}")
     kind = nd.get("kind", "ogive")
     kind = kind.lower() if isinstance(kind, str) else kind
-    if kind not in _NOSE_KEYS:
+    if not isinstance(kind, str) or kind not in _NOSE_KEYS:
         raise InputError(f"{what}: nose kind must be ogive, cone or flat, got {brief(kind)}")
     check_keys(nd, _NOSE_KEYS[kind], f"{what} nose")
     rho = _num(nd, "density", what + " nose")
@@ -361,6 +361,7 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
             f"{what}: 'shank' must be a list of mappings with length and density, "
             f"got {brief(shank)}"
         )
+    count(shank, "shank_segments", what)
     cyl = []
     for k, c in enumerate(shank):
         w = f"{what} shank segment {k}"
@@ -405,6 +406,7 @@ def _medium_from(x: Any, what: str) -> Medium:
     if isinstance(fr, list | tuple):
         if not fr or not all(isinstance(r, list | tuple) and len(r) == 2 for r in fr):
             raise InputError(f"{w}: friction table must be [[speed_m_s, mu], ...], got {brief(fr)}")
+        count(fr, "friction_rows", w)
         sp = tuple(number(r[0], "friction_speed", w, allow_str=True) for r in fr)
         mu = tuple(number(r[1], "friction", w, allow_str=True) for r in fr)
     else:
@@ -431,6 +433,7 @@ def target_from_dict(d: dict[str, Any]) -> Target:
     check_keys(d, ("name", "layers", "source"), what)
     if not isinstance(d["layers"], list) or not d["layers"]:
         raise InputError(f"{what}: 'layers' must be a non-empty list, got {brief(d['layers'])}")
+    count(d["layers"], "layers", what)
     layers = []
     for k, lay in enumerate(d["layers"]):
         w = f"{what} layer {k}"

@@ -38,6 +38,7 @@ from pencore.inputs.gate import DECIMAL_WORDS, brief, decimal
 __all__ = [
     "Limit",
     "LIMITS",
+    "count",
     "number",
     "as_float",
     "integer",
@@ -227,9 +228,10 @@ LIMITS: dict[str, Limit] = {
         "eps",
         "m/s",
         0.0,
-        10.0,
+        0.1,
         kind="physical / guard",
-        why="0 is the pure step (may fail as chatter); 10 m/s is a typo guard",
+        why="0 is the pure step (may fail as chatter); at most the default v_stop "
+        "(1 m/s) over 10, so that every eps in range runs with the default v_stop",
     ),
     "rtol": Limit("rtol", "", 1e-12, 0.1, kind="guard", why="round-off to 10 %"),
     "max_travel": Limit(
@@ -280,6 +282,49 @@ LIMITS: dict[str, Limit] = {
         1e3,
         kind="physical / guard",
         why=">= 0 along -y; 100 g is a typo guard",
+    ),
+    # counts: how many of a thing an input may hold, so that every parse and every
+    # plan is decided in seconds (benchmarks/bench_parse.py measures the largest)
+    "layers": Limit(
+        "number of layers",
+        "",
+        1,
+        1_000,
+        kind="physical / guard",
+        why="layers and gaps of a target; real targets have a few (guard)",
+    ),
+    "shank_segments": Limit(
+        "number of shank segments",
+        "",
+        0,
+        1_000,
+        kind="guard",
+        why="cylindrical segments of a projectile; real bodies have a few (guard)",
+    ),
+    "friction_rows": Limit(
+        "friction table rows",
+        "",
+        1,
+        10_000,
+        kind="physical / guard",
+        why="(speed, mu) rows of a friction table; 10 000 is 1 m/s steps to 10 km/s",
+    ),
+    "n_samples": Limit(
+        "ensemble n_samples",
+        "",
+        1,
+        1_000_000,
+        kind="physical / guard",
+        why="impacts of an ensemble case: 10^6 runs are hours of CPU (guard)",
+    ),
+    "n_chunks": Limit(
+        "ensemble n_chunks",
+        "",
+        1,
+        1_000,
+        kind="physical / guard",
+        why="jobs an ensemble case is split into (at most n_samples); each is a "
+        "Snakemake job, planned before the first runs",
     ),
     # shank contact models and paper-emulation numerics (pencore.inputs.models)
     "shank_factor": Limit(
@@ -398,7 +443,7 @@ def as_float(value: Any, allow_str: bool) -> float | None:
     """``value`` as a float when it is a real number (not a bool; a 0-d numeric array;
     with ``allow_str``, a string in plain decimal notation,
     :func:`pencore.inputs.gate.decimal`), else None."""
-    if isinstance(value, bool):
+    if isinstance(value, bool) or _is_time(value):
         return None
     if isinstance(value, numbers.Real):
         try:
@@ -422,6 +467,13 @@ def as_float(value: Any, allow_str: bool) -> float | None:
     return None
 
 
+def _is_time(value: Any) -> bool:
+    """True for numpy's time values (``np.timedelta64(300)`` is an integer to Python, but
+    a duration, not a speed or a length), scalars and 0-d arrays alike."""
+    kind = getattr(getattr(value, "dtype", None), "kind", "")
+    return kind in ("m", "M")
+
+
 def integer(value: Any, key: str, what: str = "") -> int:
     """``value`` as an int within ``LIMITS[key]``; floats must be whole numbers."""
     lim = LIMITS[key]
@@ -433,6 +485,18 @@ def integer(value: Any, key: str, what: str = "") -> int:
     if not lim.contains(v):
         raise InputError(f"{where}{lim.label} must be {lim.describe()}, got {brief(value)}")
     return int(v)
+
+
+def count(items: Any, key: str, what: str = "") -> int:
+    """The length of ``items`` when it is within ``LIMITS[key]`` (a count: layers, rows),
+    else :class:`InputError` naming the count and the limit. Checked before any item is
+    read, so a huge input is refused at once."""
+    lim = LIMITS[key]
+    where = f"{what}: " if what else ""
+    n = len(items)
+    if not lim.contains(n):
+        raise InputError(f"{where}{lim.label} must be {lim.describe()}, got {n}")
+    return n
 
 
 def check_keys(mapping: Mapping[str, Any], allowed: Iterable[str], what: str) -> None:

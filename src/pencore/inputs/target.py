@@ -67,7 +67,7 @@ import numpy as np
 
 from pencore.errors import InputError, TargetError
 from pencore.inputs.gate import brief
-from pencore.inputs.limits import number
+from pencore.inputs.limits import as_float, count, number
 
 __all__ = [
     "WINDOW_COLUMNS",
@@ -159,6 +159,12 @@ class Medium:
                 f"projectile; give a0 (Pa) or a2 (kg/m^3) > 0"
             )
         object.__setattr__(self, "coefficients", c)
+        for table in (self.friction_speeds, self.friction_mu):
+            if hasattr(table, "__len__") and not isinstance(table, str) and len(table) > 1:
+                try:
+                    count(table, "friction_rows", what)
+                except InputError as exc:
+                    raise TargetError(str(exc)) from None
         sp = tuple(_check("friction_speed", x, what) for x in self.friction_speeds)
         mu = tuple(_check("friction", m, what) for m in self.friction_mu)
         if len(sp) != len(mu) or not sp:
@@ -212,6 +218,18 @@ class Layer:
     medium: Medium | None
     thickness: float = math.inf
 
+    def __post_init__(self) -> None:
+        # a number of m (inf: semi-infinite); text such as "1" is not one
+        v = as_float(self.thickness, allow_str=False)
+        if v is None:
+            raise TargetError(
+                f"layer thickness must be a number of m, got {brief(self.thickness)} "
+                f"({type(self.thickness).__name__})"
+            )
+        if not (math.isinf(v) and v > 0):
+            v = _check("thickness", self.thickness, "layer")
+        object.__setattr__(self, "thickness", v)
+
     @classmethod
     def gap(cls, thickness: float) -> Layer:
         """An air gap of ``thickness`` (m) between two plates."""
@@ -243,10 +261,18 @@ class Target:
     layers: tuple[Layer, ...] = field(default_factory=tuple)
 
     def __post_init__(self) -> None:
-        layers = tuple(self.layers)
-        if not layers:
-            raise TargetError(f"target {brief(self.name)} has no layers")
         what = f"target {brief(self.name)}"
+        if isinstance(self.layers, str) or not hasattr(self.layers, "__len__"):
+            raise TargetError(
+                f"{what}: layers must be a sequence of Layer, got {brief(self.layers)}"
+            )
+        try:
+            count(self.layers, "layers", what)
+        except InputError as exc:
+            if not self.layers:
+                raise TargetError(f"target {brief(self.name)} has no layers") from None
+            raise TargetError(str(exc)) from None
+        layers = tuple(self.layers)
         for k, lay in enumerate(layers):
             if not isinstance(lay, Layer):
                 raise TargetError(f"{what}: layer {k} must be a Layer, got {brief(lay)}")

@@ -25,7 +25,7 @@ from pencore.plotting.style import (
 __all__ = ["plot_table2", "plot_fig5", "plot_verification"]
 
 
-_ALUMINIUM = "Aluminium 6061-T6511 (rods and shots: Piekutowski et al. 1999; Forrestal & Piekutowski 2000)"
+_ALUMINIUM = "Aluminium 6061-T6511"
 _TARGET_TITLES = {
     "concrete": "Concrete (Forrestal et al. 1994)",
     "aluminium": _ALUMINIUM,
@@ -100,6 +100,8 @@ def _fig5_panels(ds: xr.Dataset) -> dict[tuple[float, float], list[str]]:
 
 
 _LAW_LABELS = {
+    "concrete": "paper's Table 1 law",
+    "soil": "paper's Table 1 law",
     "aluminium": "paper's Table 1 law",
     "aluminium_3term": "source's three-term law",
 }

@@ -46,7 +46,7 @@ from pathlib import Path
 from typing import Any
 
 from pencore.errors import ConfigError, InputError
-from pencore.inputs.gate import brief
+from pencore.inputs.gate import brief, load_yaml_text, read_yaml
 from pencore.inputs.limits import LIMITS, Limit, as_float, number
 from pencore.inputs.numerics import NUMERIC_FIELDS, resolve_numerics
 from pencore.paper.choices import check_settings
@@ -54,6 +54,8 @@ from pencore.search.threshold import MAX_SCAN
 from pencore.studies.ensemble_cases import check_case
 
 __all__ = [
+    "read_config",
+    "strict_schema_error",
     "GRID_POINTS",
     "GRID_STEP",
     "KEY_RULES",
@@ -364,6 +366,105 @@ def check_config(config: Mapping[str, Any], root: str | Path = ".") -> None:
                     number(perforation[key], LIMITED_KEYS[f"perforation.{key}"])
                 except InputError as exc:
                     _fail(f"perforation.{key}", str(exc))
+
+
+def read_config(
+    files: Sequence[str | Path],
+    overrides: Mapping[str, Any] | Sequence[str] | None = None,
+) -> dict[str, Any]:
+    """The workflow configuration read through the input gate, as Snakemake merges it.
+
+    Snakemake reads configuration files with its own YAML reader, which takes ``23:20``
+    for the base-60 number 1400, keeps the last of two sections of the same name, and
+    reads text such as ``1_0`` as a number. The Snakefile calls this function on the same
+    files and replaces what Snakemake read, so the configuration meets the gate of every
+    other input (:mod:`pencore.inputs.gate`: plain decimal numbers, repeated keys refused,
+    bounded size, depth and count, control characters refused with line and column).
+
+    Parameters
+    ----------
+    files : sequence of path-like
+        Configuration files in the order Snakemake applies them (the Snakefile's
+        ``configfile:`` first, then each ``--configfile``); later files update earlier
+        ones, mapping by mapping.
+    overrides : mapping or sequence of str, optional
+        ``--config`` entries on top: ``KEY=VALUE`` strings (each value read as YAML
+        through the gate), or a mapping of values already read.
+
+    Returns
+    -------
+    dict
+
+    Raises
+    ------
+    ConfigError
+        One line naming the file (and line and column) or the entry.
+    """
+    merged: dict[str, Any] = {}
+    for path in files:
+        try:
+            data = read_yaml(path, "config")
+        except InputError as exc:
+            raise ConfigError(str(exc)) from None
+        if data is None:
+            continue
+        if not isinstance(data, Mapping):
+            raise ConfigError(
+                f"config file {str(path)!r} must hold a mapping of sections, "
+                f"got {type(data).__name__}"
+            )
+        _update(merged, data)
+    if isinstance(overrides, Mapping):
+        _update(merged, overrides)
+    elif overrides:
+        for entry in overrides:
+            key, sep, text = str(entry).partition("=")
+            if not sep:
+                raise ConfigError(f"--config entry must be KEY=VALUE, got {brief(entry)}")
+            try:
+                value = load_yaml_text(text, f"--config value of {brief(key)}") if text else None
+            except InputError as exc:
+                raise ConfigError(str(exc)) from None
+            _update(merged, {key: value})
+    return merged
+
+
+def _update(config: dict[str, Any], new: Mapping[str, Any]) -> None:
+    """Update ``config`` with ``new`` in place, mapping by mapping (Snakemake's rule)."""
+    for key, value in new.items():
+        if isinstance(value, Mapping) and isinstance(config.get(key), dict):
+            _update(config[key], value)
+        else:
+            config[key] = dict(value) if isinstance(value, Mapping) else value
+
+
+def strict_schema_error(config: Mapping[str, Any], schema: Mapping[str, Any]) -> str | None:
+    """One line for the first value of ``config`` whose type the schema states and
+    JSON Schema's own check lets through, else None.
+
+    JSON Schema counts a float with no fraction as an integer (``seed: -0.0``,
+    ``n_chunks: 4.0``) and a boolean as neither; here an ``integer`` is a whole number
+    written without a fraction (a Python ``int``, not a ``bool``), and a ``number`` is
+    not a ``bool``.
+    """
+    import jsonschema
+
+    base = jsonschema.validators.validator_for(schema)
+    checker = base.TYPE_CHECKER.redefine_many(
+        {
+            "integer": lambda _c, x: isinstance(x, int) and not isinstance(x, bool),
+            "number": lambda _c, x: isinstance(x, (int, float)) and not isinstance(x, bool),
+        }
+    )
+    strict = jsonschema.validators.extend(base, type_checker=checker)(schema)
+    for error in strict.iter_errors(config):
+        if error.validator != "type":
+            continue  # the Snakefile's own validation reports every other violation
+        path = ".".join(str(p) for p in error.absolute_path) or "(top level)"
+        wanted = error.validator_value
+        wanted = " or ".join(wanted) if isinstance(wanted, list) else wanted
+        return f"config {path}: must be of type {wanted}, got {brief(error.instance)}"
+    return None
 
 
 def schema_error_message(config: Mapping[str, Any], schema: Mapping[str, Any]) -> str:

@@ -13,7 +13,8 @@ from collections.abc import Mapping
 from typing import Any
 
 from pencore.errors import InputError
-from pencore.inputs.limits import LIMITS, as_float, check_keys
+from pencore.inputs.gate import brief
+from pencore.inputs.limits import LIMITS, as_float, check_keys, integer
 
 __all__ = ["VARIABLES", "CASE_KEYS", "check_case"]
 
@@ -51,8 +52,8 @@ def _dist(spec: Any, where: str) -> dict[str, float | str]:
         raise InputError(f"{where} must be a number or a distribution, got {spec!r}")
     kind = spec.get("dist")
     keys = {"fixed": ("value",), "uniform": ("min", "max"), "normal": ("mean", "sd")}
-    if kind not in keys:
-        raise InputError(f"{where}: dist must be one of fixed, uniform, normal, got {kind!r}")
+    if not isinstance(kind, str) or kind not in keys:
+        raise InputError(f"{where}: dist must be one of fixed, uniform, normal, got {brief(kind)}")
     allowed = ("dist", *keys[kind], *(("min", "max") if kind == "normal" else ()))
     check_keys(spec, allowed, where)
     d: dict[str, float | str] = {"dist": kind}
@@ -90,8 +91,9 @@ def check_case(case: Mapping[str, Any]) -> dict[str, Any]:
     for k in ("name", "projectile", "target"):
         if not isinstance(case.get(k), str) or not case[k]:
             raise InputError(f"{where}: {k} must be a non-empty string, got {case.get(k)!r}")
-    n = _int(case.get("n_samples", 100), f"{where}.n_samples")
-    chunks = _int(case.get("n_chunks", 1), f"{where}.n_chunks")
+    # counts within the limits table, so that sampling and planning stay bounded
+    n = integer(case.get("n_samples", 100), "n_samples", where)
+    chunks = integer(case.get("n_chunks", 1), "n_chunks", where)
     if n < 1 or not 1 <= chunks <= n:
         raise InputError(f"{where}: need n_samples >= 1 and 1 <= n_chunks <= n_samples")
     out: dict[str, Any] = {

@@ -9,14 +9,15 @@ workflow asks for the parts at every Snakemake start, before any study runs.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+import re
+from collections.abc import Iterable, Mapping
 from typing import Any
 
 import numpy as np
 
 from pencore.errors import InputError
 
-__all__ = ["STUDIES", "SPLIT_STUDIES", "grid", "values", "parts_of"]
+__all__ = ["STUDIES", "SPLIT_STUDIES", "grid", "values", "parts_of", "remade_target"]
 
 #: Studies that :func:`pencore.studies.config.from_config` runs; those in
 #: :data:`SPLIT_STUDIES` run per job part (a projectile, or a projectile and an
@@ -69,3 +70,32 @@ def parts_of(study: str, cfg: Mapping[str, Any]) -> list[dict[str, Any]]:
             {"projectile": p, "obliquity": o} for p in projs for o in values(cfg["obliquity_deg"])
         ]
     return [{"projectile": p} for p in projs]
+
+
+#: An ensemble chunk part, as the workflow names it: ``results/ensemble/<name>/parts/<k>.nc``.
+_ENSEMBLE_PART = re.compile(r"results/ensemble/(?P<name>[^/]+)/parts/(?P<chunk>[0-9]+)\.nc")
+
+
+def remade_target(path: str, rules: Iterable[Any], ensembles: Mapping[str, Any]) -> str | None:
+    """``path`` when a rule of this workflow makes it, else None: a result set aside as
+    unreadable is asked for again only if this configuration still produces it.
+
+    Parameters
+    ----------
+    path : str
+        The file set aside, relative to the workflow's directory.
+    rules : iterable
+        Snakemake's rules (each with ``name`` and ``is_producer(path)``).
+    ensembles : mapping
+        Ensemble cases by name: a chunk part beyond its case's ``n_chunks`` (left by an
+        earlier configuration) is not made again.
+    """
+    part = _ENSEMBLE_PART.fullmatch(path)
+    if part:
+        case = ensembles.get(part["name"])
+        if case is None or int(part["chunk"]) >= int(case.get("n_chunks", 1)):
+            return None
+    for rule in rules:
+        if rule.name != "all" and rule.is_producer(path):
+            return path
+    return None
