@@ -60,7 +60,9 @@ class Numerics:
     max_travel : float
         Largest distance (m) the centre of mass may move in one step.
     v_stop : float
-        Speed (m/s) below which the projectile is taken as stopped.
+        Speed (m/s) below which the projectile is taken as stopped. An impact at or below
+        it is at rest from the start (outcome ``stopped``, depth 0), as a search or an
+        ensemble may meet it; the ``pencore simulate`` command refuses it.
     t_max : float
         Time limit (s) of the simulated motion.
     max_steps : int
