@@ -18,6 +18,7 @@ from pencore.studies.measurements import (
     load_measurements,
     measured_vs_predicted,
     read_shot_table,
+    statistics_by_option,
     total_angle_of_attack,
 )
 
@@ -254,3 +255,19 @@ def test_three_term_law_is_shallower_than_the_table1_law(aluminium):
     t1 = aluminium["predicted"].where(aluminium["target"] == "aluminium", drop=True).values
     t3 = aluminium["predicted"].where(aluminium["target"] == "aluminium_3term", drop=True).values
     assert (t3 < t1).all()
+
+
+def test_a_data_set_with_no_rigid_shot_has_no_statistic():
+    # Forrestal & Piekutowski (2000): every rod deformed; the shots are run and kept, and
+    # the statistics say n = 0 instead of failing (the rule measurements_options met this)
+    sphere = {
+        "name": "sphere",
+        "csv": str(REPO / "config" / "aluminium_sphere_shots.csv"),
+        "targets": ["aluminium"],
+        "depth_measure": "vertical_depth",
+    }
+    ds = measured_vs_predicted([sphere])
+    assert ds.sizes["shot"] == 31 and not ds["rigid"].values.any()
+    assert float(ds["stat_n"].item()) == 0.0 and np.isnan(ds["stat_mean_rel_error"].item())
+    opt = statistics_by_option([sphere], {"none": {}})
+    assert float(opt["stat_n"].item()) == 0.0

@@ -411,6 +411,19 @@ def _rel(measured: np.ndarray, predicted: np.ndarray) -> np.ndarray:
     return rel
 
 
+#: The keys of :func:`error_statistics`.
+_STATISTICS = (
+    "n",
+    "n_relative",
+    "mean_abs_error",
+    "mean_rel_error",
+    "rms_rel_error",
+    "max_abs_rel_error",
+    "ci95_lo",
+    "ci95_hi",
+)
+
+
 def error_statistics(measured: Sequence[float], predicted: Sequence[float]) -> dict[str, float]:
     """Error statistics of predicted against measured values.
 
@@ -440,6 +453,14 @@ def error_statistics(measured: Sequence[float], predicted: Sequence[float]) -> d
         "ci95_lo": mean - half,
         "ci95_hi": mean + half,
     }
+
+
+def _statistics_of(measured: np.ndarray, predicted: np.ndarray) -> dict[str, float]:
+    """:func:`error_statistics` of the shots given, or ``n = 0`` and NaN for none (a group
+    whose every projectile deformed has no rigid shot to compare)."""
+    if measured.size:
+        return error_statistics(measured, predicted)
+    return {k: (0.0 if k in ("n", "n_relative") else math.nan) for k in _STATISTICS}
 
 
 def measured_vs_predicted(
@@ -558,7 +579,7 @@ def measured_vs_predicted(
     st = {}
     for q in quantities:
         sel = (df["quantity"] == q).to_numpy() & rigid & np.isfinite(measured)
-        st[q] = error_statistics(df["measured"][sel], df["predicted"][sel])
+        st[q] = _statistics_of(measured[sel], df["predicted"].to_numpy()[sel])
     for k in next(iter(st.values())):
         # the absolute error has the units of its quantity (variable measured_units), so
         # it carries no single CF units attribute; the other statistics are dimensionless
@@ -771,7 +792,7 @@ def statistics_by_option(
     for i in range(len(names)):
         for g, grp in enumerate(groups):
             sel = (key == grp) & rigid & np.isfinite(measured)
-            for k, v in error_statistics(measured[sel], pred[i, sel]).items():
+            for k, v in _statistics_of(measured[sel], pred[i, sel]).items():
                 stats.setdefault(k, np.full((len(names), len(groups)), np.nan))[i, g] = v
     ds = xr.Dataset(
         {
