@@ -28,7 +28,6 @@ means inside the bracket widened by 3 % of its midpoint on each side.
 
 from __future__ import annotations
 
-import json
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -220,7 +219,3 @@ def attribution_table(ds: xr.Dataset) -> pd.DataFrame:
     )
     return pd.DataFrame(rows)
 
-
-def settings_json(settings: Sequence[Mapping[str, Any]]) -> str:
-    """Canonical JSON of the checked settings (provenance)."""
-    return json.dumps(check_settings(settings), sort_keys=True)
