@@ -148,6 +148,7 @@ def test_panels_mirror_symmetry():
     assert abs(float(plus.tip_x[-1])) > 100 * (2 * err + 1e-9)
 
 
+@pytest.mark.slow  # a panel trajectory under scipy's integrator (~6 s)
 def test_panels_under_scipy_agree_with_the_compiled_integrator():
     em = {"surface": "panels", "n_circumferential": 24}
     a = pencore.simulate("p2", "soil", 600.0, obliquity=20.0, emulation=em, rtol=1e-7)

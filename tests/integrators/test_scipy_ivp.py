@@ -12,6 +12,9 @@ import pytest
 import pencore
 from pencore.integrators.scipy_ivp import CALLS_PER_STEP
 
+# trajectories under scipy's reference integrator, ~4-7 s each (~37 s in all)
+pytestmark = pytest.mark.slow
+
 CASES = [
     ("p2", dict(velocity=280.0)),
     ("p2", dict(velocity=1000.0, obliquity=45.0)),

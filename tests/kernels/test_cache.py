@@ -18,6 +18,9 @@ import pytest
 
 from pencore.kernels import cache
 
+# every test compiles or loads the kernels in a fresh interpreter (~6 s each, ~80 s in all)
+pytestmark = pytest.mark.slow
+
 PACKAGE = Path(cache.__file__).resolve().parents[1]
 
 

@@ -8,8 +8,7 @@ import pytest
 
 from pencore.errors import InputError
 from pencore.io.netcdf import read_netcdf
-from pencore.paper.attribution import PAPER as ATTRIBUTION_PAPER
-from pencore.paper.claims import CLAIMS_FILE, at, load_claims, paper_values
+from pencore.paper.claims import CLAIMS_FILE, at, disputed_values, load_claims, paper_values
 from pencore.studies.comparison import HANDLERS, paper_comparison
 
 ARCHIVE = CLAIMS_FILE.parents[1] / "results" / "archive"
@@ -28,10 +27,11 @@ def test_every_claim_has_a_handler_and_a_place_in_the_paper():
 def test_attribution_and_studies_read_the_file():
     df = load_claims().set_index("id")
     pv = paper_values()
+    disputed = disputed_values()
     assert pv["fig16_alpha_deg"] == {5.0: 0.14, 20.0: 2.86}
     assert pv["fig16_alpha_deg"][20.0] == float(df.loc["fig16_alpha_20", "value"])
-    assert ATTRIBUTION_PAPER["phi_p4"][1000.0] == float(df.loc["fig13_phi_1000", "value"])
-    assert ATTRIBUTION_PAPER["vcr_bracket"] == (
+    assert disputed["phi_p4"][1000.0] == float(df.loc["fig13_phi_1000", "value"])
+    assert disputed["vcr_bracket"] == (
         float(df.loc["vcr_p2_45", "value"]),
         float(df.loc["vcr_p2_45", "value_hi"]),
     )

@@ -19,6 +19,9 @@ import pencore.kernels.cache as cache
 import pencore.run.impact as impact
 from pencore.run.impact import COMPILE_NOTICE
 
+# fresh interpreters that load or compile the kernels (~12 s in all)
+pytestmark = pytest.mark.slow
+
 
 def _child(code: str, cache) -> subprocess.CompletedProcess:
     """Run ``code`` in a fresh interpreter whose numba cache is ``cache``."""

@@ -327,3 +327,19 @@ def test_most_coefficients_the_kernels_hold_and_a_clear_error_beyond():
     assert float(b.final_deviation) == pytest.approx(float(a.final_deviation), rel=1e-9)
     with pytest.raises(TargetError, match=r"9 resistance coefficients given.*at most 8"):
         Medium("too-many", (1e7,) * 9)
+
+
+def test_run_impact_takes_simulates_arguments():
+    """run_impact's parameters are simulate's (one signature): the same names, kinds and
+    defaults, the same checks; a positional ``start`` is refused as by simulate."""
+    import inspect
+
+    from pencore.run.impact import run_impact
+
+    sim, raw = inspect.signature(pencore.simulate), inspect.signature(run_impact)
+    assert list(raw.parameters.values()) == list(sim.parameters.values())
+    for call in (pencore.simulate, run_impact):
+        with pytest.raises(TypeError):
+            call("p2", "soil", 300.0, 0.0, 0.0, 0.0, (0.0, 1.0, 0.0))
+        with pytest.raises(pencore.InputError, match="velocity"):
+            call("p2", "soil", -1.0)

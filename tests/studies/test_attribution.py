@@ -7,10 +7,11 @@ import numpy as np
 import pytest
 
 from pencore.errors import ConfigError, InputError
-from pencore.paper.attribution import PAPER, disputed_quantities
 from pencore.paper.choices import check_settings
+from pencore.paper.claims import disputed_values
 from pencore.studies.attribution import NUMBERS, _miss, attribution_table, gather, run_setting
 from pencore.studies.config_check import check_config
+from pencore.studies.disputed import disputed_quantities
 
 
 @pytest.mark.parametrize(
@@ -35,7 +36,7 @@ def test_config_check_catches_bad_settings_at_parse_time():
 
 
 def test_miss_definitions():
-    lo, hi = PAPER["vcr_bracket"]
+    lo, hi = disputed_values()["vcr_bracket"]
     mid = 0.5 * (lo + hi)
     # inside the bracket: no miss; outside: the distance to the bracket over the midpoint
     got = _miss("vcr", np.array([lo, 0.5 * (lo + hi), hi, hi + 0.03 * mid]), mid)

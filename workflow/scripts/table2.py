@@ -1,10 +1,11 @@
-"""Rule table2 (paper Table 2, soil): thin adapter to pencore.studies.table2.table2."""
+"""Rule table2 (paper Table 2, soil): thin adapter to pencore.studies.table2 (the runs and
+the selection, :func:`table2`; the candidates' table, :func:`selection_table`)."""
 
 import pandas as pd
 from _common import start_log
 
 from pencore.io.netcdf import file_sha256, write_netcdf
-from pencore.studies.table2 import table2
+from pencore.studies.table2 import selection_table, table2
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], "table2")
@@ -26,15 +27,7 @@ table, ds = table2(
     measures=study["depth_measures"],
 )
 
-selection = ds["selection_score"].to_dataframe().reset_index()
-selection = selection.rename(columns={"selection_score": "rms_rel_diff_vs_paper"})
-selection["selected"] = (selection["projectile"] == ds.attrs["chosen_projectile"]) & (
-    selection["depth_measure"] == ds.attrs["chosen_depth_measure"]
-)
-selection["candidate"] = selection["depth_measure"].isin(study["depth_measures"])
-for t in ds["test"].values:
-    col = ds["depth_candidates"].sel(test=t).to_dataframe().reset_index()
-    selection[f"depth_m_test{int(t)}"] = col["depth_candidates"].to_numpy()
+selection = selection_table(ds, study["depth_measures"])
 
 table.to_csv(smk.output.csv, index=False, float_format="%.6g")
 selection.to_csv(smk.output.selection, index=False, float_format="%.6g")

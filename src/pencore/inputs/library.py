@@ -109,9 +109,6 @@ class Table3Fit:
         <= 1 means every number is reproduced to its rounding."""
         return max(max(abs(dm) / 0.05, abs(dl) / 0.0005) for dm, dl in self.residuals.values())
 
-    def within_rounding(self) -> bool:
-        return self.worst_scaled() <= 1.0
-
     def report(self) -> str:
         lines = [
             f"Table 3 fit: diameter = {self.diameter * 1e3:.2f} mm, "

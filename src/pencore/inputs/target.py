@@ -315,11 +315,6 @@ class Target:
         return math.fsum(lay.thickness for lay in self.layers)
 
     @property
-    def thinnest(self) -> float:
-        """Smallest layer or gap thickness (m); ``inf`` for a half-space."""
-        return min(lay.thickness for lay in self.layers)
-
-    @property
     def levels(self) -> tuple[tuple[float, float], ...]:
         """Top and bottom heights ``y`` (m) of every layer and gap, from the surface
         ``y = 0`` down (the last bottom is ``-inf`` for a semi-infinite target)."""

@@ -353,17 +353,3 @@ def downsample(
     out = ds.isel({dim: idx})
     out.attrs = {**ds.attrs, "downsampled_from": int(size), "downsampled_dim": dim}
     return out
-
-
-def package_source_hash() -> str:
-    """SHA-256 (hex) of the pencore package's Python source files, names included.
-
-    The workflow passes it to every solver rule so that a change in the physics reruns
-    the studies (Snakemake's own ``code`` trigger sees only a rule's script).
-    """
-    digest = hashlib.sha256()
-    root = _PACKAGE_DIR
-    for path in sorted(root.rglob("*.py")):
-        digest.update(path.relative_to(root).as_posix().encode())
-        digest.update(path.read_bytes())
-    return digest.hexdigest()

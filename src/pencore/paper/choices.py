@@ -1,9 +1,9 @@
 """Checks of the attribution study's configuration: the choices one setting fixes for
-:func:`pencore.paper.attribution.disputed_quantities` (shank model, numerics, the readings of
+:func:`pencore.studies.disputed.disputed_quantities` (shank model, numerics, the readings of
 the paper's yaw, spin centre and "turns back", start height, friction) and the list of
 configured settings.
 
-Apart from :mod:`pencore.paper.attribution` so that the workflow's configuration check, run at
+Apart from :mod:`pencore.studies.disputed` so that the workflow's configuration check, run at
 every Snakemake start, names a bad choice without loading the solver.
 """
 

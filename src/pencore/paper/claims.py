@@ -4,9 +4,9 @@ pencore computes, read from ``config/paper_claims.csv``.
 One row per claim: ``id, kind, value, value_hi, units, at, where, provenance, study,
 computed_by, note`` (the file's header explains each). The paper comparison table
 (:func:`pencore.studies.comparison.paper_comparison`) makes its rows from these claims,
-and :data:`pencore.paper.attribution.PAPER` and :data:`pencore.studies.common.PAPER` are built
-from them, so each of the paper's numbers is written once, in the file, with where in the
-paper it is stated.
+and :func:`paper_values` and :func:`disputed_values` key them as the studies use them, so
+each of the paper's numbers is written once, in the file, with where in the paper it is
+stated.
 """
 
 from __future__ import annotations
@@ -21,11 +21,23 @@ import pandas as pd
 
 from pencore.errors import InputError
 
-__all__ = ["CLAIMS_FILE", "KINDS", "load_claims", "claim", "at", "paper_values"]
+__all__ = [
+    "CLAIMS_FILE",
+    "TABLE2_FILE",
+    "KINDS",
+    "load_claims",
+    "claim",
+    "at",
+    "paper_values",
+    "disputed_values",
+]
 
 #: Default claims file: ``config/paper_claims.csv`` of the repository (environment
 #: variable ``PENCORE_PAPER_CLAIMS`` overrides it).
 CLAIMS_FILE = Path(__file__).resolve().parents[3] / "config" / "paper_claims.csv"
+#: The paper's Table 2 (``config/table2.csv``): the soil tests with the paper's predicted
+#: depths.
+TABLE2_FILE = Path(__file__).resolve().parents[3] / "config" / "table2.csv"
 KINDS = ("value", "bracket", "verdict", "trend")
 COLUMNS = (
     "id",
@@ -168,4 +180,27 @@ def paper_values(claims: pd.DataFrame | None = None) -> dict[str, Any]:
         "fig16_reverses_at": float(at(one("fig16_reverses")["at"])[0]["omega"]),
         "omega_c_p2_1000_bracket": (float(om["value"]), float(om["value_hi"])),
         "table3": {p: (mass[p], lc[p]) for p in mass},
+    }
+
+
+def disputed_values(claims: pd.DataFrame | None = None) -> dict[str, Any]:
+    """The paper's values of the quantities the attribution study disputes
+    (:func:`pencore.studies.disputed.disputed_quantities`), from the claims and, for the
+    Table 2 depth, :data:`TABLE2_FILE`.
+
+    Keys: ``alpha`` {omega rad/s: deg} (Sect. 4.3 text on Figs 16-17), ``turned_back``
+    {omega rad/s: True} ("moves back to the surface"), ``vcr_bracket`` (lo, hi) m/s
+    (Fig. 7 text: 1641 no, 1650 yes), ``depth_280`` (m, Table 2 test 2), ``phi_p4``
+    {velocity m/s: deg} (Sect. 4.3 text on Figs 13-14), ``fig12_vcr_yaw`` (the Fig. 12
+    trend, "falls").
+    """
+    pv = paper_values(claims)
+    t2 = pd.read_csv(TABLE2_FILE, comment="#").set_index("test")
+    return {
+        "alpha": dict(pv["fig16_alpha_deg"]),
+        "turned_back": {pv["fig16_reverses_at"]: True},
+        "vcr_bracket": pv["vcr_p2_45_bracket"],
+        "depth_280": float(t2.loc[2, "paper_predicted_depth_m"]),
+        "phi_p4": dict(pv["fig13_phi_deg"]),
+        "fig12_vcr_yaw": claim("fig12_vcr_yaw", claims)["value"],
     }

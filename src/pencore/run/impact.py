@@ -20,11 +20,12 @@ Geometry of the impact (angles in degrees at this interface, radians inside):
 
 from __future__ import annotations
 
+import inspect
 import json
 import math
 import time
-from collections.abc import Mapping
-from typing import Any
+from collections.abc import Callable, Mapping
+from typing import Any, ParamSpec
 
 import numpy as np
 import xarray as xr
@@ -152,10 +153,7 @@ def simulate(
         Time histories on dimension ``time`` (s) and scalar results; the user guide's
         Dataset page lists every variable.
     """
-    pr, run, wall, (velocity, obliquity, yaw, omega, azimuth, start) = _impact(
-        projectile, target, velocity, obliquity, yaw, omega, start, azimuth,
-        stop_at_reversal, numerics, prepared, shank, emulation, spin_about, overrides,
-    )  # fmt: skip
+    pr, run, wall, (velocity, obliquity, yaw, omega, azimuth, start) = _impact(locals())
     ds = trajectory_dataset(
         pr.projectile,
         pr.target,
@@ -175,24 +173,25 @@ def simulate(
     return _record_model(ds, pr, spin_about)
 
 
-def run_impact(
-    projectile: str | Projectile,
-    target: str | Target,
-    velocity: float,
-    obliquity: float = 0.0,
-    yaw: float = 0.0,
-    omega: float = 0.0,
-    *,
-    start: tuple[float, float, float] | None = None,
-    azimuth: float = 0.0,
-    stop_at_reversal: bool = False,
-    numerics: Numerics | None = None,
-    prepared: Problem | None = None,
-    shank: ShankModel | Mapping[str, Any] | str | None = None,
-    emulation: Emulation | Mapping[str, Any] | None = None,
-    spin_about: str = "cm",
-    **overrides: Any,
-) -> RunResult:
+_P = ParamSpec("_P")
+
+
+def _arguments_of(
+    public: Callable[_P, Any],
+) -> Callable[[Callable[..., RunResult]], Callable[_P, RunResult]]:
+    """Give the decorated function the parameters of ``public`` (for ``help``, the API
+    docs and type checkers), so that one signature is written once."""
+
+    def give(f: Callable[..., RunResult]) -> Callable[_P, RunResult]:
+        sig = inspect.signature(public)
+        f.__signature__ = sig.replace(return_annotation="RunResult")  # type: ignore[attr-defined]
+        return f  # type: ignore[return-value]
+
+    return give
+
+
+@_arguments_of(simulate)
+def run_impact(*args: Any, **kwargs: Any) -> RunResult:
     """:func:`simulate` without building the Dataset: the raw run (SI units).
 
     Same arguments, checks and errors as :func:`simulate`, and the same run to the last
@@ -200,32 +199,20 @@ def run_impact(
     Dataset would cost ~15 % of a trajectory. ``.ys`` is the state history (see
     :mod:`pencore.kernels.dynamics`), ``.ts`` its times (s).
     """
-    return _impact(
-        projectile, target, velocity, obliquity, yaw, omega, start, azimuth,
-        stop_at_reversal, numerics, prepared, shank, emulation, spin_about, overrides,
-    )[1]  # fmt: skip
+    arguments = _SIMULATE.bind(*args, **kwargs)
+    arguments.apply_defaults()
+    return _impact(arguments.arguments)[1]
 
 
-def _impact(
-    projectile: Any,
-    target: Any,
-    velocity: Any,
-    obliquity: Any,
-    yaw: Any,
-    omega: Any,
-    start: Any,
-    azimuth: Any,
-    stop_at_reversal: Any,
-    numerics: Any,
-    prepared: Any,
-    shank: Any,
-    emulation: Any,
-    spin_about: str,
-    overrides: Mapping[str, Any],
-) -> tuple[Problem, RunResult, float, tuple]:
-    """Check the inputs, prepare, integrate; ``(prepared, run, wall s, checked inputs)``."""
+def _impact(a: Mapping[str, Any]) -> tuple[Problem, RunResult, float, tuple]:
+    """Check the inputs, prepare, integrate; ``(prepared, run, wall s, checked inputs)``.
+
+    ``a`` maps each parameter of :func:`simulate` to its value (``overrides``: the dict
+    of numerics overrides), every one present."""
+    stop_at_reversal, prepared = a["stop_at_reversal"], a["prepared"]
+    shank, emulation, spin_about = a["shank"], a["emulation"], a["spin_about"]
     velocity, obliquity, yaw, omega, azimuth, start = _check_inputs(
-        velocity, obliquity, yaw, omega, azimuth, start
+        a["velocity"], a["obliquity"], a["yaw"], a["omega"], a["azimuth"], a["start"]
     )
     if not isinstance(stop_at_reversal, bool):
         raise InputError(f"stop_at_reversal must be True or False, got {stop_at_reversal!r}")
@@ -234,8 +221,9 @@ def _impact(
     if prepared is not None and (shank is not None or emulation is not None):
         raise InputError("pass shank= and emulation= to pencore.prepare, not with prepared=")
     pr = prepared or prepare(
-        projectile, target, numerics, shank=shank, emulation=emulation, **overrides
-    )
+        a["projectile"], a["target"], a["numerics"], shank=shank, emulation=emulation,
+        **a["overrides"],
+    )  # fmt: skip
     num = pr.numerics
     y0 = initial_state(
         pr.projectile,
@@ -256,6 +244,9 @@ def _impact(
     wall = time.perf_counter() - t0
     _raise_on_failure(run, pr)
     return pr, run, wall, (velocity, obliquity, yaw, omega, azimuth, start)
+
+
+_SIMULATE = inspect.signature(simulate)
 
 
 def _record_model(ds: xr.Dataset, pr: Problem, spin_about: str) -> xr.Dataset:

@@ -10,7 +10,7 @@ Section 4 of the paper (Figs 7-18), a module per figure or concept:
 =========================  ===============================================================
 module                     contents
 =========================  ===============================================================
-``common``                 the paper's projectiles and numbers, axes, attribute helpers
+``common``                 the paper's projectiles, axes, attribute helpers
 ``trajectories``           many runs stacked on one time axis (Figs 7, 11, 16)
 ``fig07_trajectories``     Fig. 7: #2 at 45 deg for velocities around Vcr
 ``fig08_vcr``              Figs 8 and 12: Vcr on (projectile, obliquity, yaw)
@@ -27,6 +27,8 @@ module                     contents
 ``parts``                  which studies exist and their job parts (light: the Snakefile's)
 ``config``                 workflow config -> study parts, :func:`from_config`, :func:`gather`
 ``perforation``            beyond the paper: ballistic limit map, residual velocity curve
+``disputed``               the paper's disputed quantities for one setting (a reading)
+``attribution``            which reading moves each disputed number (settings joined)
 =========================  ===============================================================
 
 Conventions (those of :func:`pencore.simulate`): the target is ``y <= 0``; obliquity

@@ -3,7 +3,7 @@ one setting reproduces them all.
 
 Each *setting* (configured in ``attribution.settings``: a name, a label, a group, whether
 it is a physically argued reading of the paper or an attribution-only knob, and the
-choices of :func:`pencore.paper.attribution.disputed_quantities`) is one job
+choices of :func:`pencore.studies.disputed.disputed_quantities`) is one job
 (:func:`run_setting`); :func:`gather` joins them on a ``setting`` dimension, adds each
 quantity's relative difference from the paper, and :func:`attribution_table` gives, for
 each paper number, the best-supported explanation and whether ONE setting reproduces all
@@ -28,7 +28,6 @@ means inside the bracket widened by 3 % of its midpoint on each side.
 
 from __future__ import annotations
 
-import json
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -37,8 +36,9 @@ import pandas as pd
 import xarray as xr
 
 from pencore.errors import InputError
-from pencore.paper.attribution import disputed_quantities
 from pencore.paper.choices import check_settings
+from pencore.paper.claims import disputed_values
+from pencore.studies.disputed import disputed_quantities
 
 __all__ = ["NUMBERS", "TOLERANCE", "run_setting", "gather", "attribution_table"]
 
@@ -62,7 +62,7 @@ NUMBERS: dict[str, tuple[str, str]] = {
 
 
 def run_setting(setting: Mapping[str, Any]) -> xr.Dataset:
-    """:func:`pencore.paper.attribution.disputed_quantities` of one setting, on a ``setting``
+    """:func:`pencore.studies.disputed.disputed_quantities` of one setting, on a ``setting``
     dimension of length 1 with its label, group and ``argued`` flag."""
     st = check_settings([setting])[0]
     ds = disputed_quantities(st["choices"])
@@ -96,24 +96,21 @@ def _numbers(ds: xr.Dataset) -> dict[str, np.ndarray]:
 
 
 def _paper(ds: xr.Dataset) -> dict[str, float]:
-    from pencore.paper.attribution import PAPER
-
+    paper = disputed_values()
     return {
-        "alpha_5": PAPER["alpha"][5.0],
-        "alpha_20": PAPER["alpha"][20.0],
-        "turn_back_25": float(PAPER["turned_back"][25.0]),
-        "vcr": float(np.mean(PAPER["vcr_bracket"])),
-        "depth_280": PAPER["depth_280"],
-        "phi_p4_280": PAPER["phi_p4"][280.0],
-        "phi_p4_1000": PAPER["phi_p4"][1000.0],
-        "fig12_falls": 1.0 if PAPER["fig12_vcr_yaw"] == "falls" else 0.0,
+        "alpha_5": paper["alpha"][5.0],
+        "alpha_20": paper["alpha"][20.0],
+        "turn_back_25": float(paper["turned_back"][25.0]),
+        "vcr": float(np.mean(paper["vcr_bracket"])),
+        "depth_280": paper["depth_280"],
+        "phi_p4_280": paper["phi_p4"][280.0],
+        "phi_p4_1000": paper["phi_p4"][1000.0],
+        "fig12_falls": 1.0 if paper["fig12_vcr_yaw"] == "falls" else 0.0,
     }
 
 
 def _bracket() -> tuple[float, float]:
-    from pencore.paper.attribution import PAPER
-
-    return PAPER["vcr_bracket"]
+    return disputed_values()["vcr_bracket"]
 
 
 def _miss(key: str, value: np.ndarray, paper: float) -> np.ndarray:
@@ -122,9 +119,7 @@ def _miss(key: str, value: np.ndarray, paper: float) -> np.ndarray:
     if key in VERDICTS:
         return (value != paper).astype(float)
     if key == "vcr":
-        from pencore.paper.attribution import PAPER
-
-        lo, hi = PAPER["vcr_bracket"]
+        lo, hi = disputed_values()["vcr_bracket"]
         return np.maximum(np.maximum(lo - value, value - hi), 0.0) / paper
     return np.abs(value / paper - 1.0)
 
@@ -219,8 +214,3 @@ def attribution_table(ds: xr.Dataset) -> pd.DataFrame:
         }
     )
     return pd.DataFrame(rows)
-
-
-def settings_json(settings: Sequence[Mapping[str, Any]]) -> str:
-    """Canonical JSON of the checked settings (provenance)."""
-    return json.dumps(check_settings(settings), sort_keys=True)

@@ -1,4 +1,4 @@
-"""Shared pieces of the Section 4 studies: the paper's projectiles and numbers, axes,
+"""Shared pieces of the Section 4 studies: the paper's projectiles, axes,
 start points, and attribute helpers.
 """
 
@@ -17,7 +17,6 @@ from pencore.inputs.library import get_projectile
 
 __all__ = [
     "PROJECTILES",
-    "PAPER",  # noqa: F822 -- provided by the module __getattr__ below
     "TRAJECTORY_VARIABLES",
     "projectile_coords",
     "start_from_height",
@@ -27,16 +26,6 @@ __all__ = [
 
 #: The paper's projectiles (Table 3), in order of rising Lc/L.
 PROJECTILES = ("p1", "p2", "p3", "p4")
-
-
-def __getattr__(name: str) -> Any:
-    """``PAPER``: the paper's Section 3-4 numbers, read from ``config/paper_claims.csv``
-    (:func:`pencore.paper.claims.paper_values`) when first asked for."""
-    if name == "PAPER":
-        from pencore.paper.claims import paper_values
-
-        return paper_values()
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 #: Time histories kept in trajectory datasets (all written by :func:`pencore.simulate`,

@@ -22,7 +22,7 @@ from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.run.impact import prepare, simulate
 from pencore.studies.common import _attrs
 
-__all__ = ["DEPTH_MEASURES", "TABLE2_INPUT_COLUMNS", "table2"]
+__all__ = ["DEPTH_MEASURES", "TABLE2_INPUT_COLUMNS", "table2", "selection_table"]
 
 #: Depth measures: name in the study -> (variable of a pencore trajectory, long name).
 DEPTH_MEASURES: dict[str, tuple[str, str]] = {
@@ -101,6 +101,37 @@ def table2(
     table = _table(rows, runs, projectiles, ip, im, rule, float(score[ip, im]), target)
     dsout = _dataset(rows, table, runs, score, projectiles, measures, ip, im, rule, reference, num)
     return table, dsout
+
+
+def selection_table(ds: xr.Dataset, measures: Sequence[str]) -> pd.DataFrame:
+    """Every candidate of :func:`table2`'s selection, one row per (projectile, depth
+    measure): its RMS relative difference from the paper's predicted column, whether it
+    was selected, whether its measure was a candidate (in ``measures``), and its depth (m)
+    in every test.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The Dataset returned by :func:`table2`.
+    measures : sequence of str
+        The depth measures that were candidates (``table2``'s ``measures``).
+
+    Returns
+    -------
+    pandas.DataFrame
+        Columns ``projectile``, ``depth_measure``, ``rms_rel_diff_vs_paper``, ``selected``,
+        ``candidate`` and ``depth_m_test<n>`` for each test number ``n``.
+    """
+    selection = ds["selection_score"].to_dataframe().reset_index()
+    selection = selection.rename(columns={"selection_score": "rms_rel_diff_vs_paper"})
+    selection["selected"] = (selection["projectile"] == ds.attrs["chosen_projectile"]) & (
+        selection["depth_measure"] == ds.attrs["chosen_depth_measure"]
+    )
+    selection["candidate"] = selection["depth_measure"].isin(list(measures))
+    for t in ds["test"].values:
+        col = ds["depth_candidates"].sel(test=t).to_dataframe().reset_index()
+        selection[f"depth_m_test{int(t)}"] = col["depth_candidates"].to_numpy()
+    return selection
 
 
 def _check_table2_args(

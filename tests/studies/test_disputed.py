@@ -1,4 +1,5 @@
-"""The attribution driver (pencore.paper.attribution): one setting, every disputed quantity."""
+"""The attribution study's computation (pencore.studies.disputed): one setting, every
+disputed quantity."""
 
 import math
 
@@ -6,7 +7,8 @@ import pytest
 
 import pencore
 from pencore import analysis
-from pencore.paper.attribution import PAPER, disputed_quantities, paper_comparison
+from pencore.paper.claims import disputed_values
+from pencore.studies.disputed import disputed_quantities, relative_differences
 
 
 @pytest.fixture(scope="module")
@@ -31,9 +33,9 @@ def test_default_setting_gives_pencores_own_numbers(default):
 def test_every_variable_has_units_and_the_paper_values(default):
     for name, var in default.variables.items():
         assert "units" in var.attrs, name
-    assert float(default.paper_alpha.sel(omega=20.0)) == PAPER["alpha"][20.0]
+    assert float(default.paper_alpha.sel(omega=20.0)) == disputed_values()["alpha"][20.0]
     assert math.isnan(float(default.paper_alpha.sel(omega=25.0)))
-    rel = paper_comparison(default)
+    rel = relative_differences(default)
     assert rel["turn_back_25_agrees"] == 0.0  # the model as written does not turn back
     assert -0.05 < rel["vcr"] < 0.0
 

@@ -1,4 +1,4 @@
-"""Attribution of the disagreements with the paper: the disputed quantities, one setting.
+"""The paper's disputed quantities for one setting: the computation of the attribution study.
 
 pencore solves the paper's model as written, and where it disagrees with the paper by
 more than the discretisation error of an independent point-panel solver
@@ -11,7 +11,8 @@ deviations of #4 the solver's error is as large as pencore's difference from the
 surface, explicit step, start height, spin centre, yaw reading, friction), every quantity
 in dispute, so that readings can be tested jointly: one setting, all the paper's numbers.
 
-The quantities (projectile #2 in soil unless stated; paper values in :data:`PAPER`):
+The quantities (projectile #2 in soil unless stated; the paper's values from
+:func:`pencore.paper.claims.disputed_values`):
 
 ``alpha``
     deviation (deg) of the normal impact at 1000 m/s with initial spin ``omega`` = 5,
@@ -64,11 +65,9 @@ import json
 import math
 import time
 from collections.abc import Mapping
-from pathlib import Path
 from typing import Any
 
 import numpy as np
-import pandas as pd
 import xarray as xr
 
 from pencore import analysis
@@ -77,37 +76,11 @@ from pencore.inputs.library import MEDIA
 from pencore.inputs.target import Target
 from pencore.integrators.driver import RunResult
 from pencore.paper.choices import check_choices
+from pencore.paper.claims import disputed_values
 from pencore.run.impact import prepare, run_impact, simulate
 from pencore.search.threshold import VELOCITY_TOL, find_threshold
 
-__all__ = ["disputed_quantities", "PAPER", "paper_comparison"]  # noqa: F822 - PAPER: __getattr__
-
-TABLE2_CSV = Path(__file__).resolve().parents[3] / "config" / "table2.csv"
-
-
-def _paper() -> dict[str, Any]:
-    """The paper's values of the disputed quantities, from ``config/paper_claims.csv``
-    (:mod:`pencore.paper.claims`) and, for the Table 2 depth, ``config/table2.csv``."""
-    from pencore.paper.claims import claim, paper_values
-
-    pv = paper_values()
-    t2 = pd.read_csv(TABLE2_CSV, comment="#").set_index("test")
-    return {
-        "alpha": dict(pv["fig16_alpha_deg"]),  # deg, Sect. 4.3 text on Figs 16-17
-        "turned_back": {pv["fig16_reverses_at"]: True},  # "moves back to the surface"
-        "vcr_bracket": pv["vcr_p2_45_bracket"],  # m/s, Fig. 7 text: 1641 no, 1650 yes
-        "depth_280": float(t2.loc[2, "paper_predicted_depth_m"]),  # m, Table 2 test 2
-        "phi_p4": dict(pv["fig13_phi_deg"]),  # deg, Sect. 4.3 text on Figs 13-14
-        "fig12_vcr_yaw": claim("fig12_vcr_yaw")["value"],  # Fig. 12: "falls"
-    }
-
-
-def __getattr__(name: str) -> Any:
-    """``PAPER``: the paper's values of the disputed quantities (read from the claims)."""
-    if name == "PAPER":
-        return _paper()
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
+__all__ = ["disputed_quantities", "relative_differences"]
 
 OMEGAS = (5.0, 20.0, 25.0)
 PHI_SPEEDS = (280.0, 1000.0)
@@ -206,7 +179,7 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
         vcr_yaw.append(r.value)
     wall["vcr_yaw"] = time.perf_counter() - t0
 
-    PAPER = _paper()  # noqa: N806 -- the module-level name, read once per call
+    paper = disputed_values()
 
     def attrs(units: str, long_name: str) -> dict[str, str]:
         return {"units": units, "long_name": long_name}
@@ -233,19 +206,19 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
             "phi_p4": ("phi_velocity", np.array(phi), attrs("degree", "deviation phi, #4 yaw 0.1")),
             "paper_alpha": (
                 "omega",
-                np.array([PAPER["alpha"].get(w, nan) for w in OMEGAS]),
+                np.array([paper["alpha"].get(w, nan) for w in OMEGAS]),
                 attrs("degree", "paper's alpha (Sect. 4.3)"),
             ),
             "paper_turned_back": (
                 "omega",
-                np.array([float(PAPER["turned_back"].get(w, nan)) for w in OMEGAS]),
+                np.array([float(paper["turned_back"].get(w, nan)) for w in OMEGAS]),
                 attrs("1", "paper: turned back (1), NaN not stated"),
             ),
-            "paper_vcr": ((), float(np.mean(PAPER["vcr_bracket"])), attrs("m s-1", "paper Vcr")),
-            "paper_depth_280": ((), PAPER["depth_280"], attrs("m", "paper Table 2 test 2")),
+            "paper_vcr": ((), float(np.mean(paper["vcr_bracket"])), attrs("m s-1", "paper Vcr")),
+            "paper_depth_280": ((), paper["depth_280"], attrs("m", "paper Table 2 test 2")),
             "paper_phi_p4": (
                 "phi_velocity",
-                np.array([PAPER["phi_p4"][v] for v in PHI_SPEEDS]),
+                np.array([paper["phi_p4"][v] for v in PHI_SPEEDS]),
                 attrs("degree", "paper's phi (Sect. 4.3)"),
             ),
             **{
@@ -270,18 +243,18 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
     )
 
 
-def paper_comparison(ds: xr.Dataset) -> dict[str, float]:
+def relative_differences(ds: xr.Dataset) -> dict[str, float]:
     """Relative differences (pencore / paper - 1) of one :func:`disputed_quantities`
     result, and whether the turn-back verdict at 25 rad/s agrees (1.0) or not (0.0)."""
-    PAPER = _paper()  # noqa: N806 -- the module-level name, read once per call
+    paper = disputed_values()
     out = {
-        f"alpha_{w:g}": float(ds.alpha.sel(omega=w)) / PAPER["alpha"][w] - 1.0 for w in (5.0, 20.0)
+        f"alpha_{w:g}": float(ds.alpha.sel(omega=w)) / paper["alpha"][w] - 1.0 for w in (5.0, 20.0)
     }
     out["turn_back_25_agrees"] = float(
-        bool(ds.turned_back.sel(omega=25.0)) == PAPER["turned_back"][25.0]
+        bool(ds.turned_back.sel(omega=25.0)) == paper["turned_back"][25.0]
     )
     out["vcr"] = float(ds.vcr) / float(ds.paper_vcr) - 1.0
-    out["depth_280"] = float(ds.depth_280) / PAPER["depth_280"] - 1.0
+    out["depth_280"] = float(ds.depth_280) / paper["depth_280"] - 1.0
     for v in PHI_SPEEDS:
-        out[f"phi_p4_{v:g}"] = float(ds.phi_p4.sel(phi_velocity=v)) / PAPER["phi_p4"][v] - 1.0
+        out[f"phi_p4_{v:g}"] = float(ds.phi_p4.sel(phi_velocity=v)) / paper["phi_p4"][v] - 1.0
     return out
