@@ -634,12 +634,11 @@ def summary(ds: xr.Dataset) -> xr.Dataset:
         for im, m in enumerate(models):
             rel = ds["rel_error" if m == "predicted" else f"{m}_rel_error"].values
             for js, keep in enumerate(subsets.values()):
-                e = rel[in_g & keep & np.isfinite(rel)]
-                out["n"][ig, im, js] = e.size
-                if e.size:
-                    out["mean"][ig, im, js] = np.mean(np.abs(e))
-                    out["bias"][ig, im, js] = np.mean(e)
-                    out["worst"][ig, im, js] = e[np.argmax(np.abs(e))]
+                st = _stats_row(rel[in_g & keep])
+                out["n"][ig, im, js] = st["n"]
+                out["mean"][ig, im, js] = st["mean_abs_rel_error"]
+                out["bias"][ig, im, js] = st["bias"]
+                out["worst"][ig, im, js] = st["worst"]
 
     def a(long_name: str) -> dict[str, str]:
         return {"units": "1", "long_name": long_name}
@@ -667,6 +666,8 @@ def summary(ds: xr.Dataset) -> xr.Dataset:
 
 
 def _stats_row(e: np.ndarray) -> dict[str, float]:
+    """Count, mean ``|e|``, mean ``e`` and the ``e`` of largest magnitude of the finite
+    values of ``e``; NaN statistics for none."""
     e = e[np.isfinite(e)]
     if not e.size:
         return {"n": 0, "mean_abs_rel_error": math.nan, "bias": math.nan, "worst": math.nan}
