@@ -19,7 +19,9 @@ REPORT_TABLES = {
         "results/validation/validation_summary.csv",
         "validation_summary.rst",
         "4 Beyond the paper",
-        "Validation against measurements",
+        # its own subcategory: beside the measurements figure, one figure and one table
+        # trip the report's figure/table toggle (see attribution_table below)
+        "Validation summary",
         "Validation summary: every measurement, per data set, law and model",
     ),
     "paper_comparison": (
