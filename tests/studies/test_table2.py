@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 import pandas as pd
+import pytest
 
+from pencore.errors import InputError
 from pencore.studies.table2 import DEPTH_MEASURES, selection_table, table2
 
 ROWS = pd.DataFrame(
@@ -15,6 +17,7 @@ ROWS = pd.DataFrame(
         "yaw_deg": [0.0, 0.0],
         "measured_depth_m": [4.98, 5.18],
         "paper_predicted_depth_m": [4.25, 4.21],
+        "source": ["paper", "paper"],
     }
 )
 
@@ -45,3 +48,26 @@ def test_selection_table_lists_every_candidate_and_marks_the_chosen_one():
     np.testing.assert_array_equal(
         sel["rms_rel_diff_vs_paper"].to_numpy(), ds["selection_score"].values.ravel()
     )
+
+
+def test_table2_selects_the_closest_candidate():
+    table, ds = table2(ROWS, projectiles=["p1", "p2"])
+    score = ds["selection_score"]
+    best = score.where(score == score.min(), drop=True)
+    assert ds.attrs["chosen_projectile"] == str(best["projectile"].item()) == "p2"
+    assert ds.attrs["chosen_depth_measure"] == str(best["depth_measure"].item())
+    assert table.attrs["chosen_projectile"] == "p2"
+    assert (table["projectile"] == "p2").all()
+    # restricting the measures restricts the choice
+    _, ds_v = table2(ROWS, projectiles=["p2"], measures=["vertical_depth"])
+    assert ds_v.attrs["chosen_depth_measure"] == "vertical_depth"
+    np.testing.assert_allclose(ds_v["pencore_depth"], ds_v["pencore_vertical_depth"])
+
+
+def test_table2_rejects_bad_input():
+    with pytest.raises(InputError, match="lacks column"):
+        table2(ROWS.drop(columns="yaw_deg"))
+    with pytest.raises(InputError, match="unknown depth measure"):
+        table2(ROWS, measures=["depth"])
+    with pytest.raises(InputError, match="no rows"):
+        table2(ROWS.iloc[:0])

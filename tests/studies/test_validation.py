@@ -11,43 +11,7 @@ import pytest
 from pencore.errors import InputError
 from pencore.inputs.library import get_projectile
 from pencore.inputs.numerics import resolve_numerics
-from pencore.studies.table2 import table2
 from pencore.studies.validation import fig5, velocity_grid, verification
-
-ROWS = pd.DataFrame(
-    {
-        "test": [2, 3],
-        "velocity_m_s": [280.0, 278.0],
-        "obliquity_deg": [0.0, 30.0],
-        "yaw_deg": [0.0, 0.0],
-        "measured_depth_m": [4.98, 5.18],
-        "paper_predicted_depth_m": [4.25, 4.21],
-        "source": ["paper", "paper"],
-    }
-)
-
-
-def test_table2_selects_the_closest_candidate():
-    table, ds = table2(ROWS, projectiles=["p1", "p2"])
-    score = ds["selection_score"]
-    best = score.where(score == score.min(), drop=True)
-    assert ds.attrs["chosen_projectile"] == str(best["projectile"].item()) == "p2"
-    assert ds.attrs["chosen_depth_measure"] == str(best["depth_measure"].item())
-    assert table.attrs["chosen_projectile"] == "p2"
-    assert (table["projectile"] == "p2").all()
-    # restricting the measures restricts the choice
-    _, ds_v = table2(ROWS, projectiles=["p2"], measures=["vertical_depth"])
-    assert ds_v.attrs["chosen_depth_measure"] == "vertical_depth"
-    np.testing.assert_allclose(ds_v["pencore_depth"], ds_v["pencore_vertical_depth"])
-
-
-def test_table2_rejects_bad_input():
-    with pytest.raises(InputError, match="lacks column"):
-        table2(ROWS.drop(columns="yaw_deg"))
-    with pytest.raises(InputError, match="unknown depth measure"):
-        table2(ROWS, measures=["depth"])
-    with pytest.raises(InputError, match="no rows"):
-        table2(ROWS.iloc[:0])
 
 
 def test_resolve_numerics():
