@@ -241,7 +241,11 @@ def read_shot_table(path: str | Path, label: str | None = None) -> pd.DataFrame:
         of range, a row with no table, page or source.
     """
     label = label or f"shot table {str(path)!r}"
-    df = read_data_csv(path, SHOT_COLUMNS, label)
+    return _shot_table(read_data_csv(path, SHOT_COLUMNS, label), label)
+
+
+def _shot_table(df: pd.DataFrame, label: str) -> pd.DataFrame:
+    """The rows of a shot table already read, each mapped by :func:`_shot_row`."""
     dup = df["shot"].duplicated()
     if dup.any():
         raise InputError(f"{label}: duplicate shots {sorted(set(df['shot'][dup]))}")
@@ -251,14 +255,16 @@ def read_shot_table(path: str | Path, label: str | None = None) -> pd.DataFrame:
 
 
 def _read_rows(e: Mapping[str, Any]) -> pd.DataFrame:
-    """The entry's file in the common form (a shot table by :func:`read_shot_table`)."""
+    """The entry's file in the common form (a shot table by :func:`_shot_table`), read
+    once."""
     label = f"measurements {e['name']}"
     df = read_data_csv(e["csv"], (), label)
-    if "striking_velocity_m_s" in df.columns:
-        return read_shot_table(e["csv"], label)
-    missing = [c for c in REQUIRED if c not in df.columns]
+    shots = "striking_velocity_m_s" in df.columns
+    missing = [c for c in (SHOT_COLUMNS if shots else REQUIRED) if c not in df.columns]
     if missing:
         raise InputError(f"{label}: {e['csv']} lacks column(s) {missing}")
+    if shots:
+        return _shot_table(df, label)
     return df.assign(
         pitch_measured_deg=np.nan,
         yaw_measured_deg=np.nan,
