@@ -82,8 +82,8 @@ def plot_measurements(ds: xr.Dataset) -> Figure:
     The 1:1 line and +-10 % / +-20 % bands; marker: the data file; colour: the target law;
     filled: a shot whose projectile stayed rigid by its authors' limits, open: one that
     deformed or eroded (left out of the statistics). The box gives, per data file and law,
-    the rigid shots' number, bias (mean of predicted / measured - 1) and mean absolute relative error
-    (pencore.studies.measurements.summary).
+    the rigid shots' number, bias (mean of predicted / measured - 1) and mean absolute
+    relative error (pencore.studies.measurements.summary).
     """
     quantities = list(ds["quantity"].values)
     fig = new_figure(5.6 * len(quantities), 7.0)
