@@ -22,7 +22,11 @@ def test_opens_with_exactly_the_two_setup_commands():
     assert commands[0].startswith("python -m pip install -e '.[workflow]'")
     assert "snakemake --cores 2" in commands[0]
     assert commands[1].startswith("python -m pip install -e '.[test]'")
-    assert commands[1].endswith("python -m pytest -q")
+    assert commands[1].endswith("python -m pytest -q -n 2")
+    # CI runs the very test command a user runs
+    test_command = commands[1].split("&&")[-1].strip()
+    ci = (Path(__file__).parents[2] / ".ci" / "run").read_text()
+    assert test_command in ci.splitlines()
     # nothing but the title before them
     assert README.split("```")[0].strip() == "# pencore"
 
