@@ -164,11 +164,12 @@ def test_snakefile_imports_stay_light():
             *imports,
             "from pencore.studies.config_check import check_config",
             "from pencore.studies.sources import physics_source_hash, plotting_source_hash",
-            "from pencore.studies.parts import SPLIT_STUDIES, parts_of",
+            "from pencore.studies.parts import parts_of",
+            "from pencore.workflowconfig.registry import split_studies",
             f"cfg = yaml.safe_load(open({str(REPO / 'config' / 'config.yaml')!r}))",
             f"check_config(cfg, {str(REPO)!r})",
             "physics_source_hash(); plotting_source_hash()",
-            "[parts_of(s, cfg['section4'][s]) for s in SPLIT_STUDIES]",
+            "[parts_of(k, cfg['section4'][s.entry]) for k, s in split_studies().items()]",
         ]
     )
     loaded = heavy_modules_after(code, cwd=REPO)

@@ -402,6 +402,11 @@ def paper_comparison(
         The study datasets; ``None`` skips the claims they compute.
     table2 : pandas.DataFrame, optional
         ``results/validation/table2.csv``. ``table3``: include the Table 3 rows.
+    yaw_convention : str
+        The configured yaw convention (marked in the Fig. 13 rows).
+    vci_threshold : float, optional
+        The deviation threshold (deg) the Vci rows lead with; default the
+        ``primary_threshold_deg`` of ``fig15``, else 5 deg.
 
     Returns
     -------
@@ -413,6 +418,8 @@ def paper_comparison(
         ``note``); brackets are compared at their midpoint, with the bracket in ``note``.
     """
     df = load_claims() if claims is None else claims
+    if vci_threshold is None and fig15 is not None and "primary_threshold_deg" in fig15.attrs:
+        vci_threshold = float(fig15.attrs["primary_threshold_deg"])
     data = dict(
         fig7=fig7, fig8=fig8, fig9=fig9, fig11=fig11, fig12=fig12, fig13=fig13, fig15=fig15,
         fig16=fig16, start_height=start_height, fig18=fig18, table2=table2, table3=table3,

@@ -1,6 +1,6 @@
-"""Which Section 4 studies the workflow runs and how a split study's configuration
-becomes job parts (:func:`parts_of`), with the ``{min, max, step}`` grids of the
-configuration (:func:`grid`).
+"""How a split study's configuration becomes job parts (:func:`parts_of`; which studies
+are split, and by what, is their record in :mod:`pencore.workflowconfig.registry`), with
+the ``{min, max, step}`` grids of the configuration (:func:`grid`).
 
 Apart from :mod:`pencore.studies.config` (numpy and :mod:`pencore.inputs.limits` only): the
 workflow asks for the parts at every Snakemake start, before any study runs.
@@ -16,31 +16,9 @@ from typing import Any
 import numpy as np
 
 from pencore.errors import InputError
+from pencore.workflowconfig import registry
 
-__all__ = ["STUDIES", "SPLIT_STUDIES", "grid", "values", "parts_of", "remade_target"]
-
-#: Studies that :func:`pencore.studies.config.from_config` runs; those in
-#: :data:`SPLIT_STUDIES` run per job part (a projectile, or a projectile and an
-#: obliquity) and are joined by :func:`pencore.studies.config.gather`.
-STUDIES = (
-    "fig7",
-    "fig8",
-    "fig9",
-    "fig11",
-    "fig12",
-    "fig13",
-    "fig15",
-    "fig16",
-    "start_height",
-    "fig18",
-)
-
-SPLIT_STUDIES = {
-    "fig8": ("projectile",),
-    "fig12": ("projectile", "obliquity"),
-    "fig15": ("projectile",),
-    "fig18": ("projectile",),
-}
+__all__ = ["grid", "values", "parts_of", "remade_target"]
 
 
 def grid(min: float, max: float, step: float) -> np.ndarray:
@@ -60,16 +38,16 @@ def values(v: Any) -> list[float]:
 
 
 def parts_of(study: str, cfg: Mapping[str, Any]) -> list[dict[str, Any]]:
-    """Job parts of a split study: ``[{"projectile": "p1"}, ...]`` or with
-    ``"obliquity"`` too (deg), from the study's configuration ``cfg``."""
-    if study not in SPLIT_STUDIES:
+    """Job parts of a split study: ``[{"projectile": "p1"}, ...]``, or with
+    ``"obliquity"`` too (deg) when its record splits by obliquity, from the study's
+    configuration entry ``cfg`` (its ``projectiles`` and ``obliquity_deg``)."""
+    record = registry.study(study)
+    if not record.split_by:
         raise InputError(f"{study!r} is not split into parts")
-    projs = list(cfg["projectiles"])
-    if study == "fig12":
-        return [
-            {"projectile": p, "obliquity": o} for p in projs for o in values(cfg["obliquity_deg"])
-        ]
-    return [{"projectile": p} for p in projs]
+    parts: list[dict[str, Any]] = [{"projectile": p} for p in cfg["projectiles"]]
+    if "obliquity" in record.split_by:
+        parts = [{**part, "obliquity": o} for part in parts for o in values(cfg["obliquity_deg"])]
+    return parts
 
 
 #: An ensemble chunk part, as the workflow names it: ``results/ensemble/<name>/parts/<k>.nc``.
