@@ -167,7 +167,8 @@ def test_results_file_records_agreement_within_the_test_tolerances(pp):
 
 
 def test_docs_quote_the_results_file(pp):
-    """The agreement the docs and pencore.studies.disputed quote is the results file's."""
+    """The agreement the docs and pencore.studies.attribution.disputed quote is the results
+    file's."""
     with pp.OUT.open(newline="") as fh:
         rows = {r["quantity"]: r for r in csv.DictReader(fh)}
 

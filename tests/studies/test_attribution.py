@@ -1,4 +1,4 @@
-"""The attribution study of the workflow (pencore.studies.attribution): settings checked,
+"""The attribution study of the workflow (pencore.studies.attribution.settings): settings checked,
 parts joined on `setting`, the default row is the model's own result, table verdicts."""
 
 from __future__ import annotations
@@ -9,9 +9,15 @@ import pytest
 from pencore.errors import ConfigError, InputError
 from pencore.paper.choices import check_settings
 from pencore.paper.claims import disputed_values
-from pencore.studies.attribution import NUMBERS, _miss, attribution_table, gather, run_setting
-from pencore.studies.config_check import check_config
-from pencore.studies.disputed import disputed_quantities
+from pencore.studies.attribution.disputed import disputed_quantities
+from pencore.studies.attribution.settings import (
+    NUMBERS,
+    _miss,
+    attribution_table,
+    gather,
+    run_setting,
+)
+from pencore.workflowconfig.config_check import check_config
 
 
 @pytest.mark.parametrize(

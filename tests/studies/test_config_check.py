@@ -1,5 +1,5 @@
 """The workflow configuration is checked when the Snakefile is parsed: every bad entry
-stops with one line naming the key path and the value (pencore.studies.config_check)."""
+stops with one line naming the key path and the value (pencore.workflowconfig.config_check)."""
 
 from __future__ import annotations
 
@@ -11,10 +11,9 @@ from pathlib import Path
 
 import pytest
 import yaml
-from helpers import heavy_modules_after
 
 from pencore.errors import ConfigError
-from pencore.studies.config_check import check_config, schema_error_message
+from pencore.workflowconfig.config_check import check_config, schema_error_message
 
 REPO = Path(__file__).resolve().parents[2]
 SHIPPED = yaml.safe_load((REPO / "config" / "config.yaml").read_text())
@@ -143,34 +142,3 @@ def test_snakemake_stops_at_parse_time_with_a_short_message(tmp_path, text, need
     assert r.returncode != 0
     assert needle in out, out
     assert len(out.strip().splitlines()) <= 5, out  # no schema dump, no traceback
-
-
-def test_snakefile_imports_stay_light():
-    """At every Snakemake start (each dry run, targeted rerun, cluster job) the Snakefile
-    only checks the configuration, hashes sources and lists job parts: none of that may
-    load the solver's kernels, scipy, xarray or matplotlib (~1.3 s, helpers.HEAVY_MODULES)."""
-    # the pencore imports of the Snakefile and of every rule file, as written there
-    sources = [REPO / "Snakefile", *sorted((REPO / "workflow" / "rules").glob("*.smk"))]
-    imports = [
-        line.strip()
-        for src in sources
-        for line in src.read_text().splitlines()
-        if line.startswith("from pencore")
-    ]
-    assert imports, "found no pencore import in the workflow (the test reads nothing)"
-    code = "\n".join(
-        [
-            "import yaml",
-            *imports,
-            "from pencore.studies.config_check import check_config",
-            "from pencore.studies.sources import physics_source_hash, plotting_source_hash",
-            "from pencore.studies.parts import parts_of",
-            "from pencore.workflowconfig.registry import split_studies",
-            f"cfg = yaml.safe_load(open({str(REPO / 'config' / 'config.yaml')!r}))",
-            f"check_config(cfg, {str(REPO)!r})",
-            "physics_source_hash(); plotting_source_hash()",
-            "[parts_of(k, cfg['section4'][s.entry]) for k, s in split_studies().items()]",
-        ]
-    )
-    loaded = heavy_modules_after(code, cwd=REPO)
-    assert loaded == [], f"the Snakefile's start loads {loaded}"

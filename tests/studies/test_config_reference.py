@@ -1,4 +1,4 @@
-"""The generated configuration reference (pencore.studies.config_reference) lists every
+"""The generated configuration reference (pencore.workflowconfig.config_reference) lists every
 key of the shipped configurations, and every range it prints is the one the schema or
 the configuration check enforces, found by probing them at and beside each bound."""
 
@@ -18,8 +18,8 @@ import yaml
 
 from pencore.errors import ConfigError
 from pencore.inputs.limits import LIMITS
-from pencore.studies.config_check import KEY_RULES, LIMITED_KEYS, check_config
-from pencore.studies.config_reference import (
+from pencore.workflowconfig.config_check import KEY_RULES, LIMITED_KEYS, check_config
+from pencore.workflowconfig.config_reference import (
     config_key_paths,
     config_reference,
     named_map_paths,
@@ -68,7 +68,7 @@ def test_every_key_has_a_type_and_a_description():
 
 def test_command_line_prints_the_reference():
     out = subprocess.run(
-        [sys.executable, "-m", "pencore.studies.config_reference", "--root", str(REPO)],
+        [sys.executable, "-m", "pencore.workflowconfig.config_reference", "--root", str(REPO)],
         capture_output=True,
         text=True,
         check=True,
@@ -215,5 +215,5 @@ def test_every_rule_of_the_check_is_printed_and_probed():
 
 def test_config_readme_is_the_generated_reference():
     """config/README.md is the generator's output (regenerate it with
-    ``python -m pencore.studies.config_reference > config/README.md``)."""
+    ``python -m pencore.workflowconfig.config_reference > config/README.md``)."""
     assert (REPO / "config" / "README.md").read_text() == MARKDOWN

@@ -1,4 +1,4 @@
-"""The attribution study's computation (pencore.studies.disputed): one setting, every
+"""The attribution study's computation (pencore.studies.attribution.disputed): one setting, every
 disputed quantity."""
 
 import math
@@ -8,7 +8,7 @@ import pytest
 import pencore
 from pencore import analysis
 from pencore.paper.claims import disputed_values
-from pencore.studies.disputed import disputed_quantities, relative_differences
+from pencore.studies.attribution.disputed import disputed_quantities, relative_differences
 
 
 @pytest.fixture(scope="module")

@@ -19,7 +19,7 @@ from pencore.studies.ensemble import (
     sample_conditions,
     wilson_interval,
 )
-from pencore.studies.ensemble_cases import check_case
+from pencore.workflowconfig.ensemble_cases import check_case
 
 CASE = {
     "name": "t",

@@ -1,4 +1,4 @@
-"""Validation against published measurements (pencore.studies.measurements): data-file
+"""Validation against published measurements (pencore.studies.validation.measurements): data-file
 checks, error statistics, predictions that are the solver's own results."""
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from pencore import simulate
 from pencore.errors import InputError
 from pencore.inputs.library import get_target
 from pencore.inputs.target import Layer, Target
-from pencore.studies.measurements import (
+from pencore.studies.validation.measurements import (
     error_statistics,
     load_measurements,
     measured_vs_predicted,
@@ -122,7 +122,7 @@ def test_predictions_are_the_solver_results(tmp_path):
 
 
 def test_statistics_by_option_on_the_soil_shots():
-    from pencore.studies.measurements import statistics_by_option
+    from pencore.studies.validation.measurements import statistics_by_option
 
     csv = Path(__file__).resolve().parents[2] / "config" / "table2.csv"
     entry = {"name": "soil", "csv": str(csv), "projectile": "p2", "target": "soil"}

@@ -10,7 +10,7 @@ import pytest
 import xarray as xr
 
 from pencore.errors import InputError
-from pencore.studies.obliquity import (
+from pencore.studies.perforation.obliquity import (
     ballistic_map,
     compare_obliquity,
     load_oblique,

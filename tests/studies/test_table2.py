@@ -1,4 +1,4 @@
-"""pencore.studies.table2: the candidates' table of the Table 2 selection."""
+"""pencore.studies.validation.table2: the candidates' table of the Table 2 selection."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import pandas as pd
 import pytest
 
 from pencore.errors import InputError
-from pencore.studies.table2 import DEPTH_MEASURES, selection_table, table2
+from pencore.studies.validation.table2 import DEPTH_MEASURES, selection_table, table2
 
 ROWS = pd.DataFrame(
     {

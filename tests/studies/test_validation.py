@@ -1,4 +1,4 @@
-"""pencore.studies.validation: inputs, selection rule, closed-form agreement."""
+"""pencore.studies.validation.depth: inputs, selection rule, closed-form agreement."""
 
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ import pytest
 from pencore.errors import InputError
 from pencore.inputs.library import get_projectile
 from pencore.inputs.numerics import resolve_numerics
-from pencore.studies.validation import fig5, velocity_grid, verification
+from pencore.studies.validation.depth import fig5, velocity_grid, verification
 
 
 def test_resolve_numerics():

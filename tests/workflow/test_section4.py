@@ -27,14 +27,12 @@ import pencore
 from pencore.errors import InputError
 from pencore.io.netcdf import read_netcdf
 from pencore.search.threshold import CriticalResult
-from pencore.studies.common import projectile_coords, start_from_height
-from pencore.studies.comparison import paper_comparison
-from pencore.studies.comparison_rows import _nose_rows
+from pencore.studies.common import projectile_coords, search_variables, start_from_height
+from pencore.studies.comparison import _nose_rows, paper_comparison
 from pencore.studies.config import from_config, gather
-from pencore.studies.fig08_vcr import _search_vars
-from pencore.studies.parts import grid, parts_of
-from pencore.studies.trajectories import stack_trajectories
+from pencore.studies.trajectories.stack import stack_trajectories
 from pencore.studies.trends import trend
+from pencore.workflowconfig.parts import grid, parts_of
 
 REPO = Path(__file__).resolve().parents[2]
 NAN = math.nan
@@ -98,7 +96,7 @@ def _search(values, tol=5.0):
 def _fig8(vcr):
     """Synthetic Fig. 8 dataset on (projectile, obliquity) from an array of Vcr."""
     obl = np.array([15.0, 45.0, 75.0])
-    data = _search_vars(
+    data = search_variables(
         _search(vcr), "vcr", "m s-1", "critical reverse velocity", ("projectile", "obliquity")
     )
     return xr.Dataset(
@@ -171,7 +169,7 @@ def test_comparison_fig9_fig18_and_verdict_rows():
     assert paper_comparison(fig9=fig9, table3=False)["pencore_value"].tolist() == ["does not hold"]
 
     # Fig. 18: p2 never turns back in range, p4 falls with Vi
-    data = _search_vars(
+    data = search_variables(
         _search(np.array([[NAN, NAN], [62.0, 20.0]])),
         "omega_c",
         "rad s-1",
@@ -210,7 +208,7 @@ def test_comparison_nose_direction_statements():
         [[["+x", "+x", "-x"], ["+x", "+x", "+x"]], [["+x", "+x", "-x"], ["+x", "+x", "-x"]]],
         dtype=object,
     )
-    data = _search_vars(_search(np.full((2, 2, 3), 1000.0)), "vcr", "m s-1", "Vcr", dims)
+    data = search_variables(_search(np.full((2, 2, 3), 1000.0)), "vcr", "m s-1", "Vcr", dims)
     data["nose_direction"] = (dims, nd)
     ds = xr.Dataset(
         data,
@@ -302,7 +300,7 @@ def test_stack_trajectories_shared_axis():
 
 def test_gather_joins_parts_in_any_order():
     def part(p, o):
-        data = _search_vars(
+        data = search_variables(
             _search(np.array([[[1000.0 + o]]])),
             "vcr",
             "m s-1",

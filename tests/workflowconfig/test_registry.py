@@ -10,8 +10,8 @@ import yaml
 from pencore import plotting
 from pencore.errors import InputError
 from pencore.studies.config import StudySettings, from_config, gather
-from pencore.studies.parts import parts_of
 from pencore.workflowconfig import registry
+from pencore.workflowconfig.parts import parts_of
 from pencore.workflowconfig.registry import SHARED_KEYS, STUDIES, Study
 
 REPO = Path(__file__).resolve().parents[2]

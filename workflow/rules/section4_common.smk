@@ -3,7 +3,7 @@
 # from its record in pencore.workflowconfig.registry.
 import re
 
-from pencore.studies.parts import parts_of
+from pencore.workflowconfig.parts import parts_of
 from pencore.workflowconfig.registry import STUDIES
 
 S4 = config["section4"]

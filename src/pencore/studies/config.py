@@ -1,7 +1,7 @@
 """From the workflow configuration to studies: running one study or one job part of it
 (:func:`from_config`) and joining the parts (:func:`gather`), dispatched through the
-records of :mod:`pencore.workflowconfig.registry`; the ``run_*`` functions those records
-name read a study's configuration entry.
+records of :mod:`pencore.workflowconfig.registry`; each record names the ``run_*`` function,
+beside its study's physics, that reads the study's configuration entry.
 """
 
 from __future__ import annotations
@@ -17,39 +17,9 @@ from pencore.errors import InputError
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.search.threshold import OMEGA_TOL, VELOCITY_TOL
 from pencore.studies.common import combine
-from pencore.studies.fig07_trajectories import fig7
-from pencore.studies.fig08_vcr import fig8, vcr_study
-from pencore.studies.fig09_turning_angle import fig9
-from pencore.studies.fig13_yaw import fig13
-from pencore.studies.fig15_vci import vci_study
-from pencore.studies.fig16_spin import fig16, start_height_study
-from pencore.studies.fig18_omega_c import omega_c_study
-from pencore.studies.parts import values as _values
-from pencore.studies.trajectories import trajectory_set
 from pencore.workflowconfig import registry
 
-__all__ = [
-    "StudySettings",
-    "from_config",
-    "gather",
-    "run_fig7",
-    "run_fig8",
-    "run_fig9",
-    "run_fig11",
-    "run_fig12",
-    "run_fig13",
-    "run_fig15",
-    "run_fig16",
-    "run_start_height",
-    "run_fig18",
-]
-
-
-def _range(d: Mapping[str, Any]) -> tuple[float, float]:
-    lo, hi = float(d["min"]), float(d["max"])
-    if not lo < hi:
-        raise InputError(f"range needs min < max, got {dict(d)}")
-    return lo, hi
+__all__ = ["StudySettings", "from_config", "gather"]
 
 
 @dataclass(frozen=True)
@@ -68,157 +38,6 @@ class StudySettings:
     projectile: str | None
     obliquity: float | None
     yaw_convention: str
-
-
-def run_fig7(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
-    return fig7(
-        cfg["projectile"],
-        c.target,
-        float(cfg["obliquity_deg"]),
-        _values(cfg["velocities_m_s"]),
-        start=c.start,
-        numerics=c.numerics,
-        n_time=c.n_time,
-    )
-
-
-def run_fig8(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
-    lo, hi = _range(cfg["velocity_range_m_s"])
-    return fig8(
-        [c.projectile],
-        _values(cfg["obliquity_deg"]),
-        target=c.target,
-        lo=lo,
-        hi=hi,
-        tol=c.velocity_tol,
-        scan=c.scan,
-        start=c.start,
-        numerics=c.numerics,
-        low_speeds=_values(cfg.get("low_velocities_m_s", [])),
-    )
-
-
-def run_fig9(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
-    return fig9(
-        list(cfg["projectiles"]),
-        c.target,
-        obliquity=float(cfg["obliquity_deg"]),
-        velocity=float(cfg["velocity_m_s"]),
-        start=c.start,
-        fractions=_values(cfg["bracket_fractions"]),
-        numerics=c.numerics,
-        n_time=c.n_time,
-    )
-
-
-def run_fig11(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
-    ds = trajectory_set(
-        cfg["projectile"],
-        c.target,
-        "yaw",
-        _values(cfg["yaw_deg"]),
-        velocity=float(cfg["velocity_m_s"]),
-        obliquity=float(cfg["obliquity_deg"]),
-        start=c.start,
-        numerics=c.numerics,
-        n_time=c.n_time,
-        speed_fraction=c.speed_fraction,
-    )
-    ds.attrs["title"] = "Paper Fig. 11: trajectories of #4 at 30 deg with yaw -1 and +1"
-    return ds
-
-
-def run_fig12(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
-    if c.obliquity is None:
-        raise InputError("Vcr against yaw runs per (projectile, obliquity): give obliquity=")
-    lo, hi = _range(cfg["velocity_range_m_s"])
-    ds = vcr_study(
-        [c.projectile],
-        [float(c.obliquity)],
-        _values(cfg["yaw_deg"]),
-        target=c.target,
-        lo=lo,
-        hi=hi,
-        tol=c.velocity_tol,
-        scan=c.scan,
-        start=c.start,
-        numerics=c.numerics,
-        nose=True,
-        low_speeds=_values(cfg.get("low_velocities_m_s", [])),
-    )
-    ds.attrs["title"] = "Paper Figs 11-12: V_cr against yaw, final nose direction"
-    return ds
-
-
-def run_fig13(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
-    return fig13(
-        cfg["projectile"],
-        c.target,
-        float(cfg["yaw_deg"]),
-        _values(cfg["velocities_m_s"]),
-        numerics=c.numerics,
-        n_time=c.n_time,
-        speed_fraction=c.speed_fraction,
-    )
-
-
-def run_fig15(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
-    lo, hi = _range(cfg["velocity_range_m_s"])
-    ths = sorted(set(_values(cfg["thresholds_deg"])) | {float(cfg["threshold_deg"])})
-    return vci_study(
-        [c.projectile],
-        _values(cfg["yaw_deg"]),
-        ths,
-        target=c.target,
-        convention=c.yaw_convention,
-        lo=lo,
-        hi=hi,
-        tol=c.velocity_tol,
-        scan=c.scan,
-        speed_fraction=c.speed_fraction,
-        primary_threshold=float(cfg["threshold_deg"]),
-        numerics=c.numerics,
-    )
-
-
-def run_fig16(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
-    return fig16(
-        cfg["projectile"],
-        c.target,
-        float(cfg["velocity_m_s"]),
-        _values(cfg["omega_rad_s"]),
-        start_height=c.start_height,
-        numerics=c.numerics,
-        n_time=c.n_time,
-        speed_fraction=c.speed_fraction,
-    )
-
-
-def run_start_height(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
-    return start_height_study(
-        cfg["projectile"],
-        c.target,
-        float(cfg["velocity_m_s"]),
-        _values(cfg["omega_rad_s"]),
-        _values(cfg["start_heights_m"]),
-        numerics=c.numerics,
-        speed_fraction=c.speed_fraction,
-    )
-
-
-def run_fig18(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
-    lo, hi = _range(cfg["omega_range_rad_s"])
-    return omega_c_study(
-        [c.projectile],
-        _values(cfg["velocities_m_s"]),
-        target=c.target,
-        lo=lo,
-        hi=hi,
-        tol=c.omega_tol,
-        scan=c.scan,
-        start_height=c.start_height,
-        numerics=c.numerics,
-    )
 
 
 def from_config(

@@ -18,8 +18,10 @@ from pencore import analysis
 from pencore.inputs.conventions import YAW_CONVENTIONS, normal_impact_angles
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.run.impact import prepare, simulate
-from pencore.studies.common import _STR, _axis
-from pencore.studies.trajectories import _PARAM_ATTRS, stack_trajectories
+from pencore.studies.common import PARAMETER_ATTRS, STRING_DTYPE, axis_values
+from pencore.studies.config import StudySettings
+from pencore.studies.trajectories.stack import stack_trajectories, trajectory_set
+from pencore.workflowconfig.parts import values
 
 __all__ = ["fig13"]
 
@@ -40,7 +42,7 @@ def fig13(
     Dims ``(convention, velocity, time)``; ``final_deviation`` is the paper's phi. The
     tip starts touching the surface.
     """
-    vals = _axis(velocities, "velocities")
+    vals = axis_values(velocities, "velocities")
     conv = list(conventions)
     for c in conv:
         normal_impact_angles(yaw, c)  # validates the name
@@ -55,14 +57,14 @@ def fig13(
         runs,
         {
             "convention": (
-                np.array(conv, dtype=_STR),
+                np.array(conv, dtype=STRING_DTYPE),
                 {
                     "units": "1",
                     "long_name": "yaw convention: axis_tilted (velocity normal, axis "
                     "tilted by the yaw) or velocity_tilted (axis normal, velocity tilted)",
                 },
             ),
-            "velocity": (vals, _PARAM_ATTRS["velocity"]),
+            "velocity": (vals, PARAMETER_ATTRS["velocity"]),
         },
         n_time=n_time,
         speed_fraction=speed_fraction,
@@ -75,3 +77,36 @@ def fig13(
         }
     )
     return ds
+
+
+def run_fig11(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
+    """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
+    record in :mod:`pencore.workflowconfig.registry` names this function)."""
+    ds = trajectory_set(
+        cfg["projectile"],
+        c.target,
+        "yaw",
+        values(cfg["yaw_deg"]),
+        velocity=float(cfg["velocity_m_s"]),
+        obliquity=float(cfg["obliquity_deg"]),
+        start=c.start,
+        numerics=c.numerics,
+        n_time=c.n_time,
+        speed_fraction=c.speed_fraction,
+    )
+    ds.attrs["title"] = "Paper Fig. 11: trajectories of #4 at 30 deg with yaw -1 and +1"
+    return ds
+
+
+def run_fig13(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
+    """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
+    record in :mod:`pencore.workflowconfig.registry` names this function)."""
+    return fig13(
+        cfg["projectile"],
+        c.target,
+        float(cfg["yaw_deg"]),
+        values(cfg["velocities_m_s"]),
+        numerics=c.numerics,
+        n_time=c.n_time,
+        speed_fraction=c.speed_fraction,
+    )

@@ -4,14 +4,15 @@ Every key of ``config/config.yaml`` with its type, its default (the value in
 ``config/config.yaml``; the schema's default for keys that file leaves out), its valid
 range and its description. Nothing is typed here: the types, descriptions and schema
 bounds come from ``workflow/schemas/config.schema.yaml``, the ranges the workflow checks
-beyond the schema from :mod:`pencore.studies.config_check` (:data:`~pencore.studies.
-config_check.KEY_RULES`, :data:`~pencore.studies.config_check.GRID_POINTS`,
-:data:`~pencore.studies.config_check.GRID_STEP`), the very objects the check enforces.
+beyond the schema from :mod:`pencore.workflowconfig.config_check`
+(:data:`~pencore.workflowconfig.config_check.KEY_RULES`,
+:data:`~pencore.workflowconfig.config_check.GRID_POINTS`,
+:data:`~pencore.workflowconfig.config_check.GRID_STEP`), the very objects the check enforces.
 
 Command line (from the repository root; the documentation build includes its output)::
 
-    python -m pencore.studies.config_reference > config_keys.md
-    python -m pencore.studies.config_reference --root /path/to/pencore
+    python -m pencore.workflowconfig.config_reference > config_keys.md
+    python -m pencore.workflowconfig.config_reference --root /path/to/pencore
 
 Key paths are dotted; ``[]`` stands for every entry of a list (``validation.fig5.cases[].name``).
 """
@@ -28,7 +29,7 @@ from pathlib import Path
 from typing import Any
 
 from pencore.inputs.limits import LIMITS, Limit
-from pencore.studies.config_check import (
+from pencore.workflowconfig.config_check import (
     GRID_POINTS,
     GRID_STEP,
     LIMITED_KEYS,
@@ -74,12 +75,12 @@ class Row:
         ``(schema)``, or ``""``.
     schema_range : pencore.inputs.limits.Limit or None
         Bounds the schema puts on the value (or on each entry of a list of numbers).
-    check : pencore.studies.config_check.KeyRule or None
-        The range :func:`pencore.studies.config_check.check_config` enforces on every
+    check : pencore.workflowconfig.config_check.KeyRule or None
+        The range :func:`pencore.workflowconfig.config_check.check_config` enforces on every
         number of the value, by the unit in the key's name.
     limited : pencore.inputs.limits.Limit or None
         The :data:`pencore.inputs.limits.LIMITS` entry the configuration check applies to
-        the value (:data:`pencore.studies.config_check.LIMITED_KEYS`).
+        the value (:data:`pencore.workflowconfig.config_check.LIMITED_KEYS`).
     constraints : tuple of str
         Further schema rules (allowed values, list length, pattern, required keys).
     description : str
@@ -354,8 +355,8 @@ def config_reference(root: str | Path = ".") -> str:
         "# Workflow configuration keys",
         "",
         f"Generated from `{SCHEMA}` (types, descriptions, schema bounds), `{CONFIG}` "
-        "(defaults) and `pencore.studies.config_check` (the ranges checked beyond the "
-        "schema) by `python -m pencore.studies.config_reference`; do not edit by hand.",
+        "(defaults) and `pencore.workflowconfig.config_check` (the ranges checked beyond the "
+        "schema) by `python -m pencore.workflowconfig.config_reference`; do not edit by hand.",
         "",
         "Key paths are dotted; `[]` stands for every entry of a list and `<name>` for a "
         "name you choose (an option set). A configuration "
@@ -368,7 +369,7 @@ def config_reference(root: str | Path = ".") -> str:
         "below 90 deg, that `projectiles` and `cases` names are unique, that the "
         "Table 2 CSV has rows, that each case's speed window `[v_min, v_max]` meets its "
         "study's velocities, and each ensemble case and attribution setting as a whole "
-        "(`pencore.studies.ensemble_cases.check_case`, "
+        "(`pencore.workflowconfig.ensemble_cases.check_case`, "
         "`pencore.paper.choices.check_settings`).",
         "",
     ]
@@ -400,9 +401,9 @@ def config_reference(root: str | Path = ".") -> str:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """``python -m pencore.studies.config_reference [--root DIR]``: print the reference."""
+    """``python -m pencore.workflowconfig.config_reference [--root DIR]``: print the reference."""
     parser = argparse.ArgumentParser(
-        prog="python -m pencore.studies.config_reference",
+        prog="python -m pencore.workflowconfig.config_reference",
         description="Print the workflow configuration reference (Markdown).",
     )
     parser.add_argument("--root", default=".", help="repository root (default: .)")

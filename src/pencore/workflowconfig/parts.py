@@ -2,8 +2,8 @@
 are split, and by what, is their record in :mod:`pencore.workflowconfig.registry`), with
 the ``{min, max, step}`` grids of the configuration (:func:`grid`).
 
-Apart from :mod:`pencore.studies.config` (numpy and :mod:`pencore.inputs.limits` only): the
-workflow asks for the parts at every Snakemake start, before any study runs.
+Light (numpy and :mod:`pencore.errors` only): the workflow asks for the parts at every
+Snakemake start, before any study runs.
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ import numpy as np
 from pencore.errors import InputError
 from pencore.workflowconfig import registry
 
-__all__ = ["grid", "values", "parts_of", "remade_target"]
+__all__ = ["grid", "values", "value_range", "parts_of", "remade_target"]
 
 
 def grid(min: float, max: float, step: float) -> np.ndarray:
@@ -35,6 +35,14 @@ def values(v: Any) -> list[float]:
     if isinstance(v, Mapping):
         return [float(x) for x in grid(v["min"], v["max"], v["step"])]
     return [float(x) for x in v]
+
+
+def value_range(d: Mapping[str, Any]) -> tuple[float, float]:
+    """``(min, max)`` of a ``{min, max}`` range of the configuration, with min < max."""
+    lo, hi = float(d["min"]), float(d["max"])
+    if not lo < hi:
+        raise InputError(f"range needs min < max, got {dict(d)}")
+    return lo, hi
 
 
 def parts_of(study: str, cfg: Mapping[str, Any]) -> list[dict[str, Any]]:

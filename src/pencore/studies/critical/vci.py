@@ -15,9 +15,16 @@ from pencore.inputs.conventions import normal_impact_angles
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.search import critical
 from pencore.search.threshold import VELOCITY_TOL
-from pencore.studies.common import _attrs, _axis, projectile_coords
-from pencore.studies.fig08_vcr import _numerics_dict, _search_vars
-from pencore.studies.trajectories import _PARAM_ATTRS
+from pencore.studies.common import (
+    PARAMETER_ATTRS,
+    axis_values,
+    numerics_record,
+    projectile_coords,
+    search_variables,
+    var_attrs,
+)
+from pencore.studies.config import StudySettings
+from pencore.workflowconfig.parts import value_range, values
 
 __all__ = ["vci_study"]
 
@@ -48,8 +55,8 @@ def vci_study(
     the results are those of separate searches, with fewer runs.
     """
     names = list(projectiles)
-    yw = _axis(yaws, "yaws")
-    th = np.sort(_axis(thresholds, "thresholds"))
+    yw = axis_values(yaws, "yaws")
+    th = np.sort(axis_values(thresholds, "thresholds"))
     if primary_threshold is None:
         primary_threshold = float(th[(th.size - 1) // 2])
     if not np.any(np.isclose(th, primary_threshold)):
@@ -78,16 +85,18 @@ def vci_study(
                     shared_runs=runs,
                 )
     dims = ("projectile", "yaw", "threshold")
-    data = _search_vars(res, "vci", "m s-1", "critical impact velocity for instability V_ci", dims)
+    data = search_variables(
+        res, "vci", "m s-1", "critical impact velocity for instability V_ci", dims
+    )
     return xr.Dataset(
         data,
         coords={
             **projectile_coords(names),
-            "yaw": ("yaw", yw, _PARAM_ATTRS["yaw"]),
+            "yaw": ("yaw", yw, PARAMETER_ATTRS["yaw"]),
             "threshold": (
                 "threshold",
                 th,
-                _attrs("degree", "final deviation above which a run counts as unstable"),
+                var_attrs("degree", "final deviation above which a run counts as unstable"),
             ),
         },
         attrs={
@@ -101,7 +110,28 @@ def vci_study(
             "speed_fraction": float(speed_fraction),
             "verdict": "reversed, or final deviation (at the last state with speed >= "
             f"{speed_fraction:g} x impact speed) > threshold",
-            "numerics_json": json.dumps(_numerics_dict(num)),
+            "numerics_json": json.dumps(numerics_record(num)),
             "Conventions": "CF-1.8",
         },
+    )
+
+
+def run_fig15(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
+    """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
+    record in :mod:`pencore.workflowconfig.registry` names this function)."""
+    lo, hi = value_range(cfg["velocity_range_m_s"])
+    ths = sorted(set(values(cfg["thresholds_deg"])) | {float(cfg["threshold_deg"])})
+    return vci_study(
+        [c.projectile],
+        values(cfg["yaw_deg"]),
+        ths,
+        target=c.target,
+        convention=c.yaw_convention,
+        lo=lo,
+        hi=hi,
+        tol=c.velocity_tol,
+        scan=c.scan,
+        speed_fraction=c.speed_fraction,
+        primary_threshold=float(cfg["threshold_deg"]),
+        numerics=c.numerics,
     )

@@ -7,7 +7,7 @@ with one line that names the key path and the value, instead of late in a job (o
 
 Checked here, by the unit in the key's name (``*_m_s``, ``*_deg``, ``*_rad_s``, ``*_m``;
 the ranges are the data :data:`KEY_RULES`, :data:`GRID_POINTS` and :data:`GRID_STEP`, which
-:mod:`pencore.studies.config_reference` prints for the configuration reference):
+:mod:`pencore.workflowconfig.config_reference` prints for the configuration reference):
 
 * velocities (``*_m_s``) are > 0 and within the velocity guard of
   :data:`pencore.inputs.limits.LIMITS`; angular velocities (``*_rad_s``) within theirs;
@@ -33,7 +33,7 @@ the ranges are the data :data:`KEY_RULES`, :data:`GRID_POINTS` and :data:`GRID_S
   accepts (speed, yaw, angular velocity, azimuth, and obliquity + yaw below 90 deg); a
   normal without ``min``/``max`` counts as reaching 8 standard deviations from its mean
   (a draw beyond has probability < 1e-15), see
-  :func:`pencore.studies.ensemble_cases.check_case`.
+  :func:`pencore.workflowconfig.ensemble_cases.check_case`.
 """
 
 from __future__ import annotations
@@ -51,7 +51,7 @@ from pencore.inputs.limits import LIMITS, Limit, as_float, number
 from pencore.inputs.numerics import NUMERIC_FIELDS, resolve_numerics
 from pencore.paper.choices import check_settings
 from pencore.search.threshold import MAX_SCAN
-from pencore.studies.ensemble_cases import check_case
+from pencore.workflowconfig.ensemble_cases import check_case
 
 __all__ = [
     "read_config",

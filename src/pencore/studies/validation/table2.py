@@ -20,7 +20,7 @@ import xarray as xr
 from pencore.errors import InputError
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.run.impact import prepare, simulate
-from pencore.studies.common import _attrs
+from pencore.studies.common import var_attrs
 
 __all__ = ["DEPTH_MEASURES", "TABLE2_INPUT_COLUMNS", "table2", "selection_table"]
 
@@ -281,32 +281,34 @@ def _dataset(
             "velocity": (
                 "test",
                 rows["velocity_m_s"].to_numpy(dtype=float),
-                _attrs("m s-1", "impact velocity V_i"),
+                var_attrs("m s-1", "impact velocity V_i"),
             ),
             "obliquity": (
                 "test",
                 rows["obliquity_deg"].to_numpy(dtype=float),
-                _attrs("degree", "angle of obliquity phi_1"),
+                var_attrs("degree", "angle of obliquity phi_1"),
             ),
             "yaw": (
                 "test",
                 rows["yaw_deg"].to_numpy(dtype=float),
-                _attrs("degree", "yaw angle phi_2"),
+                var_attrs("degree", "yaw angle phi_2"),
             ),
             "measured_depth": (
                 "test",
                 measured,
-                _attrs("m", "measured penetration depth (Forrestal & Luk 1992, via paper Table 2)"),
+                var_attrs(
+                    "m", "measured penetration depth (Forrestal & Luk 1992, via paper Table 2)"
+                ),
             ),
             "paper_predicted_depth": (
                 "test",
                 paper,
-                _attrs("m", "penetration depth predicted by Li & Flores-Johnson (2011) Table 2"),
+                var_attrs("m", "penetration depth predicted by Li & Flores-Johnson (2011) Table 2"),
             ),
             "pencore_depth": (
                 "test",
                 chosen,
-                _attrs(
+                var_attrs(
                     "m",
                     f"pencore penetration depth, selected measure: {dm_long}",
                     projectile=chosen_p,
@@ -316,47 +318,47 @@ def _dataset(
             "pencore_vertical_depth": (
                 "test",
                 table["pencore_vertical_depth_m"].to_numpy(),
-                _attrs("m", DEPTH_MEASURES["vertical_depth"][1]),
+                var_attrs("m", DEPTH_MEASURES["vertical_depth"][1]),
             ),
             "pencore_path_length": (
                 "test",
                 table["pencore_path_length_m"].to_numpy(),
-                _attrs("m", DEPTH_MEASURES["path_length"][1]),
+                var_attrs("m", DEPTH_MEASURES["path_length"][1]),
             ),
             "rel_diff_vs_paper": (
                 "test",
                 table["rel_diff_vs_paper"].to_numpy(),
-                _attrs("1", "(pencore - paper predicted) / paper predicted"),
+                var_attrs("1", "(pencore - paper predicted) / paper predicted"),
             ),
             "rel_diff_vs_measured": (
                 "test",
                 table["rel_diff_vs_measured"].to_numpy(),
-                _attrs("1", "(pencore - measured) / measured"),
+                var_attrs("1", "(pencore - measured) / measured"),
             ),
             "paper_rel_diff_vs_measured": (
                 "test",
                 table["paper_rel_diff_vs_measured"].to_numpy(),
-                _attrs("1", "(paper predicted - measured) / measured"),
+                var_attrs("1", "(paper predicted - measured) / measured"),
             ),
             "final_deviation": (
                 "test",
                 final_dev[ip],
-                _attrs("degree", "angle between the velocity and the target normal at rest"),
+                var_attrs("degree", "angle between the velocity and the target normal at rest"),
             ),
-            "n_steps": ("test", n_steps[ip], _attrs("1", "accepted integration steps")),
+            "n_steps": ("test", n_steps[ip], var_attrs("1", "accepted integration steps")),
             "depth_candidates": (
                 ("projectile", "depth_measure", "test"),
                 depth,
-                _attrs("m", "pencore depth of every candidate projectile and depth measure"),
+                var_attrs("m", "pencore depth of every candidate projectile and depth measure"),
             ),
             "selection_score": (
                 ("projectile", "depth_measure"),
                 score,
-                _attrs("1", f"RMS relative difference from {reference}"),
+                var_attrs("1", f"RMS relative difference from {reference}"),
             ),
         },
         coords={
-            "test": ("test", test, _attrs("1", "test number in paper Table 2")),
+            "test": ("test", test, var_attrs("1", "test number in paper Table 2")),
             "projectile": (
                 "projectile",
                 np.array(projectiles, dtype=object),

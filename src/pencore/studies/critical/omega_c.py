@@ -12,9 +12,16 @@ import xarray as xr
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.search import critical
 from pencore.search.threshold import OMEGA_TOL
-from pencore.studies.common import _axis, projectile_coords, start_from_height
-from pencore.studies.fig08_vcr import _numerics_dict, _search_vars
-from pencore.studies.trajectories import _PARAM_ATTRS
+from pencore.studies.common import (
+    PARAMETER_ATTRS,
+    axis_values,
+    numerics_record,
+    projectile_coords,
+    search_variables,
+    start_from_height,
+)
+from pencore.studies.config import StudySettings
+from pencore.workflowconfig.parts import value_range, values
 
 __all__ = ["omega_c_study"]
 
@@ -38,7 +45,7 @@ def omega_c_study(
     means no reversal up to ``hi``.
     """
     names = list(projectiles)
-    vel = _axis(velocities, "velocities")
+    vel = axis_values(velocities, "velocities")
     num = resolve_numerics(numerics)
     res = np.empty((len(names), vel.size), dtype=object)
     for ip, p in enumerate(names):
@@ -55,12 +62,12 @@ def omega_c_study(
                 numerics=num,
             )
     dims = ("projectile", "velocity")
-    data = _search_vars(res, "omega_c", "rad s-1", "critical angular velocity omega_c", dims)
+    data = search_variables(res, "omega_c", "rad s-1", "critical angular velocity omega_c", dims)
     return xr.Dataset(
         data,
         coords={
             **projectile_coords(names),
-            "velocity": ("velocity", vel, _PARAM_ATTRS["velocity"]),
+            "velocity": ("velocity", vel, PARAMETER_ATTRS["velocity"]),
         },
         attrs={
             "title": "Paper Fig. 18: critical angular velocity against impact velocity",
@@ -69,7 +76,24 @@ def omega_c_study(
             "tolerance_rad_s": float(tol),
             "scan_points": -1 if scan is None else int(scan),
             "start_height_m": float(start_height),
-            "numerics_json": json.dumps(_numerics_dict(num)),
+            "numerics_json": json.dumps(numerics_record(num)),
             "Conventions": "CF-1.8",
         },
+    )
+
+
+def run_fig18(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
+    """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
+    record in :mod:`pencore.workflowconfig.registry` names this function)."""
+    lo, hi = value_range(cfg["omega_range_rad_s"])
+    return omega_c_study(
+        [c.projectile],
+        values(cfg["velocities_m_s"]),
+        target=c.target,
+        lo=lo,
+        hi=hi,
+        tol=c.omega_tol,
+        scan=c.scan,
+        start_height=c.start_height,
+        numerics=c.numerics,
     )

@@ -11,8 +11,17 @@ import xarray as xr
 from pencore import analysis
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.run.impact import simulate
-from pencore.studies.common import _STR, PROJECTILES, _attrs, _axis, _start, projectile_coords
-from pencore.studies.trajectories import stack_trajectories
+from pencore.studies.common import (
+    PROJECTILES,
+    STRING_DTYPE,
+    axis_values,
+    projectile_coords,
+    start_point,
+    var_attrs,
+)
+from pencore.studies.config import StudySettings
+from pencore.studies.trajectories.stack import stack_trajectories
+from pencore.workflowconfig.parts import values
 
 __all__ = ["fig9"]
 
@@ -37,15 +46,15 @@ def fig9(
     ``(projectile, time)``.
     """
     names = list(projectiles)
-    fr = _axis(fractions, "fractions")
+    fr = axis_values(fractions, "fractions")
     num = resolve_numerics(numerics)
     runs = {}
     keys = ("delta_theta", "theta_1", "theta_2", "x_1", "y_1", "x_2", "y_2")
     out = {k: np.full((len(names), fr.size), np.nan) for k in keys}
-    reason = np.full((len(names), fr.size), "", dtype=_STR)
+    reason = np.full((len(names), fr.size), "", dtype=STRING_DTYPE)
     sign = np.full(len(names), np.nan)
     for ip, p in enumerate(names):
-        run = simulate(p, target, velocity, obliquity, start=_start(start), numerics=num)
+        run = simulate(p, target, velocity, obliquity, start=start_point(start), numerics=num)
         runs[(ip,)] = run
         for jf, f in enumerate(fr):
             ta = analysis.turning_angle(run, fraction=float(f))
@@ -68,19 +77,19 @@ def fig9(
         "y_2": ("m", "centre of mass y at Point 2"),
     }
     for k in keys:
-        ds[k] = (d2, out[k], _attrs(*long[k]))
+        ds[k] = (d2, out[k], var_attrs(*long[k]))
     ds["turning_angle_note"] = (d2, reason, {"units": "1", "long_name": "why delta_theta is NaN"})
     ds["delta_theta_sign_change"] = (
         "projectile",
         sign,
-        _attrs("degree", "theta_2 - theta_1 between the first and last sign changes of d2y/dx2"),
+        var_attrs("degree", "theta_2 - theta_1 between the first and last sign changes of d2y/dx2"),
     )
     ds = ds.assign_coords(
         lc_over_l=("projectile", pc["lc_over_l"][1], pc["lc_over_l"][2]),
         bracket_fraction=(
             "bracket_fraction",
             fr,
-            _attrs("1", "fraction of the peak |curvature| that marks Points 1 and 2"),
+            var_attrs("1", "fraction of the peak |curvature| that marks Points 1 and 2"),
         ),
     )
     ds.attrs.pop("projectile", None)
@@ -95,3 +104,18 @@ def fig9(
         }
     )
     return ds
+
+
+def run_fig9(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
+    """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
+    record in :mod:`pencore.workflowconfig.registry` names this function)."""
+    return fig9(
+        list(cfg["projectiles"]),
+        c.target,
+        obliquity=float(cfg["obliquity_deg"]),
+        velocity=float(cfg["velocity_m_s"]),
+        start=c.start,
+        fractions=values(cfg["bracket_fractions"]),
+        numerics=c.numerics,
+        n_time=c.n_time,
+    )

@@ -26,8 +26,7 @@ from pencore.inputs.target import Layer, Target
 from pencore.run.impact import prepare, simulate
 from pencore.search.perforation import ballistic_limit, fit_recht_ipson, recht_ipson
 from pencore.search.threshold import VELOCITY_TOL
-from pencore.studies.common import _STR, _attrs, _axis
-from pencore.studies.fig08_vcr import _search_vars
+from pencore.studies.common import STRING_DTYPE, axis_values, search_variables, var_attrs
 
 __all__ = ["slab_target", "ballistic_limit_map", "residual_velocity_curve"]
 
@@ -64,8 +63,8 @@ def ballistic_limit_map(
     numerics: Numerics | Mapping[str, Any] | None = None,
 ) -> xr.Dataset:
     """Ballistic limit (m/s) on ``(thickness m, obliquity deg)``: one search per cell."""
-    th = _axis(thicknesses, "thicknesses")
-    obl = _axis(obliquities, "obliquities")
+    th = axis_values(thicknesses, "thicknesses")
+    obl = axis_values(obliquities, "obliquities")
     num = resolve_numerics(numerics)
     res = np.empty((th.size, obl.size), dtype=object)
     for i, h in enumerate(th):
@@ -76,10 +75,12 @@ def ballistic_limit_map(
             )
     dims = ("thickness", "obliquity")
     return xr.Dataset(
-        _search_vars(res, "v_bl", "m s-1", "ballistic limit (lowest speed that perforates)", dims),
+        search_variables(
+            res, "v_bl", "m s-1", "ballistic limit (lowest speed that perforates)", dims
+        ),
         coords={
-            "thickness": ("thickness", th, _attrs("m", "slab thickness")),
-            "obliquity": ("obliquity", obl, _attrs("degree", "obliquity of the axis")),
+            "thickness": ("thickness", th, var_attrs("m", "slab thickness")),
+            "obliquity": ("obliquity", obl, var_attrs("degree", "obliquity of the axis")),
         },
         attrs={
             "title": "pencore ballistic limit against slab thickness and obliquity",
@@ -116,13 +117,13 @@ def residual_velocity_curve(
     and with the rigid-body values ``a = 1``, ``p = 2`` for comparison (the RMS residual
     of each is recorded).
     """
-    v = _axis(velocities, "velocities")
+    v = axis_values(velocities, "velocities")
     num = resolve_numerics(numerics)
     t = slab_target(medium, thickness, crater_depth, free_surface_depth)
     pr = prepare(projectile, t, num)
     vr = np.zeros(v.size)
     pitch = np.full(v.size, np.nan)
-    outcome = np.empty(v.size, dtype=_STR)
+    outcome = np.empty(v.size, dtype=STRING_DTYPE)
     for k, vi in enumerate(v):
         ds = simulate(pr.projectile, pr.target, float(vi), obliquity, prepared=pr)
         outcome[k] = ds.attrs["outcome"]
@@ -142,21 +143,23 @@ def residual_velocity_curve(
             "residual_velocity": (
                 "velocity",
                 vr,
-                _attrs("m s-1", "centre-of-mass speed when clear of the slab (0: no perforation)"),
+                var_attrs(
+                    "m s-1", "centre-of-mass speed when clear of the slab (0: no perforation)"
+                ),
             ),
             "recht_ipson": (
                 "velocity",
                 curve,
-                _attrs("m s-1", "Recht-Ipson curve a (v^p - v_bl^p)^(1/p) fitted to the runs"),
+                var_attrs("m s-1", "Recht-Ipson curve a (v^p - v_bl^p)^(1/p) fitted to the runs"),
             ),
             "exit_pitch": (
                 "velocity",
                 pitch,
-                _attrs("degree", "axis angle from the normal at exit (NaN: no perforation)"),
+                var_attrs("degree", "axis angle from the normal at exit (NaN: no perforation)"),
             ),
             "outcome": ("velocity", outcome, {"units": "1", "long_name": "outcome of the run"}),
         },
-        coords={"velocity": ("velocity", v, _attrs("m s-1", "impact speed"))},
+        coords={"velocity": ("velocity", v, var_attrs("m s-1", "impact speed"))},
         attrs={
             "title": "pencore residual velocity against impact velocity",
             "projectile": projectile,

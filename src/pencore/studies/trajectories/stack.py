@@ -21,12 +21,13 @@ from pencore.errors import InputError
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.run.impact import prepare, simulate
 from pencore.studies.common import (
-    _STR,
+    PARAMETER_ATTRS,
+    STRING_DTYPE,
     TRAJECTORY_VARIABLES,
-    _attrs,
-    _axis,
-    _signed_deviation,
-    _start,
+    axis_values,
+    signed_deviation,
+    start_point,
+    var_attrs,
 )
 
 __all__ = ["stack_trajectories", "trajectory_set"]
@@ -76,7 +77,7 @@ def stack_trajectories(
     c["time"] = (
         "time",
         t,
-        _attrs("s", "time since start (shared, thinned grid; NaN after a run ends)"),
+        var_attrs("s", "time since start (shared, thinned grid; NaN after a run ends)"),
     )
     ds = xr.Dataset(data, coords=c)
     ds.attrs.update(
@@ -127,12 +128,12 @@ def _sample(
     }
     reversed_ = np.zeros(shape, dtype=np.int8)
     n_steps = np.zeros(shape, dtype=np.int64)
-    outcome = np.empty(shape, dtype=_STR)
-    nose = np.empty(shape, dtype=_STR)
+    outcome = np.empty(shape, dtype=STRING_DTYPE)
+    nose = np.empty(shape, dtype=STRING_DTYPE)
     for idx, r in runs.items():
         rt = r["time"].values
         for k in TRAJECTORY_VARIABLES:
-            src = _signed_deviation(r) if k == "deviation_signed" else r[k].values
+            src = signed_deviation(r) if k == "deviation_signed" else r[k].values
             with np.errstate(invalid="ignore"):
                 hist[k][idx] = np.interp(t, rt, src, left=np.nan, right=np.nan)
         scal_f["penetration_depth"][idx] = float(r["penetration_depth"])
@@ -168,7 +169,7 @@ def _history_variables(
     data["deviation_signed"] = (
         tdims,
         hist["deviation_signed"],
-        _attrs(
+        var_attrs(
             "degree",
             "in-plane angle from the normal -y to the centre of mass velocity, "
             "positive towards +x (unwrapped)",
@@ -197,24 +198,24 @@ def _scalar_variables(
         "reversed": (
             dims,
             reversed_,
-            _attrs(
+            var_attrs(
                 "1", "1 if the centre of mass velocity turned towards the surface in the target"
             ),
         ),
         "penetration_depth": (
             dims,
             scal_f["penetration_depth"],
-            _attrs("m", "deepest point of the nose tip below the surface"),
+            var_attrs("m", "deepest point of the nose tip below the surface"),
         ),
         "path_length": (
             dims,
             scal_f["path_length"],
-            _attrs("m", "length of the nose-tip path below the surface"),
+            var_attrs("m", "length of the nose-tip path below the surface"),
         ),
         "final_deviation": (
             dims,
             scal_f["final_deviation"],
-            _attrs(
+            var_attrs(
                 "degree",
                 f"trajectory deviation from the normal (paper phi, alpha) {fd}",
                 speed_fraction=float(speed_fraction),
@@ -223,12 +224,12 @@ def _scalar_variables(
         "final_deviation_signed": (
             dims,
             scal_f["final_deviation_signed"],
-            _attrs("degree", f"signed in-plane trajectory deviation (positive towards +x) {fd}"),
+            var_attrs("degree", f"signed in-plane trajectory deviation (positive towards +x) {fd}"),
         ),
         "final_theta": (
             dims,
             scal_f["final_theta"],
-            _attrs("degree", "axis angle from the normal at the end of the run"),
+            var_attrs("degree", "axis angle from the normal at the end of the run"),
         ),
         "nose_direction": (
             dims,
@@ -238,20 +239,12 @@ def _scalar_variables(
         "t_first_contact": (
             dims,
             scal_f["t_first_contact"],
-            _attrs("s", "time of first contact with the target"),
+            var_attrs("s", "time of first contact with the target"),
         ),
-        "t_end": (dims, scal_f["t_end"], _attrs("s", "time at the end of the run")),
-        "n_steps": (dims, n_steps, _attrs("1", "accepted integration steps")),
-        "wall_time": (dims, scal_f["wall_time"], _attrs("s", "solver wall time")),
+        "t_end": (dims, scal_f["t_end"], var_attrs("s", "time at the end of the run")),
+        "n_steps": (dims, n_steps, var_attrs("1", "accepted integration steps")),
+        "wall_time": (dims, scal_f["wall_time"], var_attrs("s", "solver wall time")),
     }
-
-
-_PARAM_ATTRS = {
-    "velocity": _attrs("m s-1", "impact velocity V_i"),
-    "obliquity": _attrs("degree", "angle of obliquity phi_1 (axis from the target normal)"),
-    "yaw": _attrs("degree", "yaw angle phi_2 (velocity angle minus axis angle)"),
-    "omega": _attrs("rad s-1", "initial angular velocity about the centre of mass (+z)"),
-}
 
 
 def _runs_along(
@@ -303,17 +296,17 @@ def trajectory_set(
     initial nose-tip position (m), ``None`` for surface contact at x = 0. Returns
     :func:`stack_trajectories` on ``(dim, time)``.
     """
-    if dim not in _PARAM_ATTRS:
-        raise InputError(f"dim must be one of {', '.join(_PARAM_ATTRS)}, got {dim!r}")
-    vals = _axis(values, dim)
+    if dim not in PARAMETER_ATTRS:
+        raise InputError(f"dim must be one of {', '.join(PARAMETER_ATTRS)}, got {dim!r}")
+    vals = axis_values(values, dim)
     fixed = dict(velocity=velocity, obliquity=obliquity, yaw=yaw, omega=omega)
     runs = _runs_along(
-        projectile, target, dim, vals, resolve_numerics(numerics), _start(start), fixed
+        projectile, target, dim, vals, resolve_numerics(numerics), start_point(start), fixed
     )
     if _runs is not None:
         _runs.update(runs)
     ds = stack_trajectories(
-        runs, {dim: (vals, _PARAM_ATTRS[dim])}, n_time=n_time, speed_fraction=speed_fraction
+        runs, {dim: (vals, PARAMETER_ATTRS[dim])}, n_time=n_time, speed_fraction=speed_fraction
     )
     for k, v in fixed.items():
         if k != dim:

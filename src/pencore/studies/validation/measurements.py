@@ -75,7 +75,7 @@ from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.target import Target
 from pencore.run.impact import prepare, simulate
 from pencore.studies.common import t_half_width
-from pencore.studies.perforation import slab_target
+from pencore.studies.perforation.slabs import slab_target
 
 __all__ = [
     "QUANTITIES",
@@ -693,7 +693,7 @@ def summary_table(measurements: xr.Dataset, ratios: xr.Dataset | None = None) ->
     measurements : xarray.Dataset
         A :func:`measured_vs_predicted` result (its :func:`summary` variables).
     ratios : xarray.Dataset, optional
-        A :func:`pencore.studies.obliquity.compare_obliquity` result: the measured
+        A :func:`pencore.studies.perforation.obliquity.compare_obliquity` result: the measured
         obliquity ratios ``V_bl(theta) / V_bl(0)`` of plates, compared with pencore's
         analog (the paper's model, option ``none``) and with the line-of-sight rule.
 

@@ -1,12 +1,12 @@
 """Validation and verification studies of the paper's Section 3.
 
-* :func:`table2` (code in :mod:`pencore.studies.table2`) - the five soil tests of
+* :func:`table2` (code in :mod:`pencore.studies.validation.table2`) - the five soil tests of
   Forrestal & Luk (1992) (paper Table 2), run with every candidate projectile and both
   depth measures; the candidate closest to the paper's predicted column is selected and
   reported.
 * :func:`fig5` - penetration depth against impact velocity into concrete and aluminium
   (paper Fig. 5), with both closed forms beside it and the measured shots of the sources
-  (each run at its measured impact by :mod:`pencore.studies.measurements`).
+  (each run at its measured impact by :mod:`pencore.studies.validation.measurements`).
 * :func:`verification` - pencore against :func:`pencore.closedform.depth` for normal,
   frictionless impact over a velocity range (verification, not validation).
 
@@ -33,8 +33,8 @@ from pencore.inputs.library import get_projectile, get_target
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.target import Medium
 from pencore.run.impact import prepare, simulate
-from pencore.studies.common import _attrs
-from pencore.studies.measurements import read_shot_table
+from pencore.studies.common import var_attrs
+from pencore.studies.validation.measurements import read_shot_table
 
 __all__ = [
     "fig5",
@@ -140,17 +140,17 @@ def _depth_grid(
             "pencore_depth": (
                 ("case", "velocity"),
                 pen,
-                _attrs("m", "pencore penetration depth (deepest point of the nose tip)"),
+                var_attrs("m", "pencore penetration depth (deepest point of the nose tip)"),
             ),
             "pencore_path_length": (
                 ("case", "velocity"),
                 path,
-                _attrs("m", "pencore length of the nose-tip path below the surface"),
+                var_attrs("m", "pencore length of the nose-tip path below the surface"),
             ),
             "closedform_depth": (
                 ("case", "velocity"),
                 cf,
-                _attrs(
+                var_attrs(
                     "m",
                     "closed-form depth for normal frictionless impact "
                     "(exact nose entry + tunnel phase, pencore.closedform.depth)",
@@ -159,7 +159,7 @@ def _depth_grid(
             "rel_diff": (
                 ("case", "velocity"),
                 rel,
-                _attrs("1", "(pencore - closed form) / closed form"),
+                var_attrs("1", "(pencore - closed form) / closed form"),
             ),
         },
         coords={
@@ -168,7 +168,7 @@ def _depth_grid(
                 np.array([c["name"] for c in cases], dtype=object),
                 {"long_name": "case"},
             ),
-            "velocity": ("velocity", velocities, _attrs("m s-1", "impact velocity V_i")),
+            "velocity": ("velocity", velocities, var_attrs("m s-1", "impact velocity V_i")),
             "projectile": (
                 "case",
                 np.array([c["projectile"] for c in cases], dtype=object),
@@ -187,17 +187,17 @@ def _depth_grid(
             "crh": (
                 "case",
                 np.array([_crh(c["projectile"]) for c in cases]),
-                _attrs("1", "calibre radius head of the ogive nose (0.5: hemisphere)"),
+                var_attrs("1", "calibre radius head of the ogive nose (0.5: hemisphere)"),
             ),
             "mass": (
                 "case",
                 np.array([get_projectile(c["projectile"]).mass_properties().mass for c in cases]),
-                _attrs("kg", "projectile mass"),
+                var_attrs("kg", "projectile mass"),
             ),
             "diameter": (
                 "case",
                 np.array([get_projectile(c["projectile"]).diameter for c in cases]),
-                _attrs("m", "shank diameter"),
+                var_attrs("m", "shank diameter"),
             ),
         },
         attrs={
@@ -228,9 +228,9 @@ def fig5(
         ``[v_min, v_max]``, the rest are NaN.
     numerics : Numerics or mapping, optional
     shots : sequence of paths
-        Shot tables (:func:`pencore.studies.measurements.read_shot_table`); every shot's
+        Shot tables (:func:`pencore.studies.validation.measurements.read_shot_table`); every shot's
         projectile must be the projectile of at least one case. The shots are drawn, not
-        run here: :func:`pencore.studies.measurements.measured_vs_predicted` runs each at
+        run here: :func:`pencore.studies.validation.measurements.measured_vs_predicted` runs each at
         its measured impact.
 
     Returns
@@ -264,14 +264,14 @@ def fig5(
     ds["cavity_form_depth"] = (
         ("case", "velocity"),
         cavity,
-        _attrs(
+        var_attrs(
             "m",
             "closed-form depth with the full nose force from first contact "
             "(pencore.closedform.tunnel_depth; Piekutowski et al. 1999, Eq. 1)",
         ),
     )
     ds = ds.assign_coords(
-        target_density=("case", density, _attrs("kg m-3", "target density (NaN: not given)"))
+        target_density=("case", density, var_attrs("kg m-3", "target density (NaN: not given)"))
     )
     table = (
         pd.concat([read_shot_table(f) for f in shots], ignore_index=True)
@@ -298,12 +298,12 @@ def fig5(
     ds["experiment_velocity"] = (
         "experiment",
         col("velocity_m_s", float),
-        _attrs("m s-1", "measured striking velocity"),
+        var_attrs("m s-1", "measured striking velocity"),
     )
     ds["experiment_depth"] = (
         "experiment",
         col("measured_depth_m", float),
-        _attrs("m", "measured penetration depth (NaN: none printed)"),
+        var_attrs("m", "measured penetration depth (NaN: none printed)"),
     )
     ds["experiment_rigid"] = (
         "experiment",
@@ -360,12 +360,14 @@ def verification(
     ds["case_max_abs_rel_diff"] = (
         "case",
         case_max,
-        _attrs("1", "largest |pencore - closed form| / closed form over velocity"),
+        var_attrs("1", "largest |pencore - closed form| / closed form over velocity"),
     )
     ds["max_abs_rel_diff"] = (
         (),
         float(absrel[ic, iv]),
-        _attrs("1", "largest |pencore - closed form| / closed form over all cases and velocities"),
+        var_attrs(
+            "1", "largest |pencore - closed form| / closed form over all cases and velocities"
+        ),
     )
     ds.attrs.update(
         title="Verification: pencore against the closed form, normal frictionless impact",

@@ -10,8 +10,10 @@ import xarray as xr
 
 from pencore import analysis
 from pencore.inputs.numerics import Numerics
-from pencore.studies.common import _STR, _attrs
-from pencore.studies.trajectories import trajectory_set
+from pencore.studies.common import STRING_DTYPE, var_attrs
+from pencore.studies.config import StudySettings
+from pencore.studies.trajectories.stack import trajectory_set
+from pencore.workflowconfig.parts import values
 
 __all__ = ["fig7"]
 
@@ -48,14 +50,14 @@ def fig7(
     vals = ds["velocity"].values
     x2 = np.full(vals.size, np.nan)
     dth = np.full(vals.size, np.nan)
-    reason = np.empty(vals.size, dtype=_STR)
+    reason = np.empty(vals.size, dtype=STRING_DTYPE)
     for i in range(vals.size):
         ta = analysis.turning_angle(runs[(i,)], fraction=bracket_fraction)
         x2[i], dth[i], reason[i] = ta.x_2, ta.delta_theta, ta.reason
     ds["x_linear"] = (
         "velocity",
         x2,
-        _attrs(
+        var_attrs(
             "m",
             "centre of mass x where the curved part of the path ends (Point 2, "
             f"|curvature| below {bracket_fraction:g} of its peak)",
@@ -64,7 +66,7 @@ def fig7(
     ds["delta_theta"] = (
         "velocity",
         dth,
-        _attrs("degree", "total turning angle theta_2 - theta_1 (Eq. 12)"),
+        var_attrs("degree", "total turning angle theta_2 - theta_1 (Eq. 12)"),
     )
     ds["turning_angle_note"] = (
         "velocity",
@@ -73,3 +75,17 @@ def fig7(
     )
     ds.attrs["title"] = "Paper Fig. 7: trajectories at 45 deg obliquity around Vcr"
     return ds
+
+
+def run_fig7(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
+    """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
+    record in :mod:`pencore.workflowconfig.registry` names this function)."""
+    return fig7(
+        cfg["projectile"],
+        c.target,
+        float(cfg["obliquity_deg"]),
+        values(cfg["velocities_m_s"]),
+        start=c.start,
+        numerics=c.numerics,
+        n_time=c.n_time,
+    )

@@ -14,9 +14,17 @@ import xarray as xr
 from pencore import analysis
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.run.impact import prepare, simulate
-from pencore.studies.common import _STR, _attrs, _axis, start_from_height
-from pencore.studies.fig08_vcr import _numerics_dict
-from pencore.studies.trajectories import _PARAM_ATTRS, trajectory_set
+from pencore.studies.common import (
+    PARAMETER_ATTRS,
+    STRING_DTYPE,
+    axis_values,
+    numerics_record,
+    start_from_height,
+    var_attrs,
+)
+from pencore.studies.config import StudySettings
+from pencore.studies.trajectories.stack import trajectory_set
+from pencore.workflowconfig.parts import values
 
 __all__ = ["fig16", "start_height_study"]
 
@@ -75,8 +83,8 @@ def start_height_study(
     it. Dims ``(start_height, omega)``: ``alpha`` (final deviation), ``reversed``,
     ``theta_at_contact``, ``outcome``.
     """
-    hs = _axis(heights, "heights")
-    om = _axis(omegas, "omegas")
+    hs = axis_values(heights, "heights")
+    om = axis_values(omegas, "omegas")
     num = resolve_numerics(numerics)
     pr = prepare(projectile, target, num)
     shape = (hs.size, om.size)
@@ -84,7 +92,7 @@ def start_height_study(
     alpha_s = np.full(shape, np.nan)
     th_c = np.full(shape, np.nan)
     rev = np.zeros(shape, dtype=np.int8)
-    out = np.empty(shape, dtype=_STR)
+    out = np.empty(shape, dtype=STRING_DTYPE)
     for ih, h in enumerate(hs):
         for iw, w in enumerate(om):
             run = simulate(
@@ -110,7 +118,7 @@ def start_height_study(
             "alpha": (
                 dims,
                 alpha,
-                _attrs(
+                var_attrs(
                     "degree",
                     "trajectory deviation from the normal alpha (final deviation)",
                     speed_fraction=float(speed_fraction),
@@ -119,32 +127,61 @@ def start_height_study(
             "alpha_signed": (
                 dims,
                 alpha_s,
-                _attrs("degree", "signed in-plane final deviation (positive towards +x)"),
+                var_attrs("degree", "signed in-plane final deviation (positive towards +x)"),
             ),
             "theta_at_contact": (
                 dims,
                 th_c,
-                _attrs(
+                var_attrs(
                     "degree", "axis angle from the normal at first contact (free-flight rotation)"
                 ),
             ),
-            "reversed": (dims, rev, _attrs("1", "1 if the run turned back towards the surface")),
+            "reversed": (dims, rev, var_attrs("1", "1 if the run turned back towards the surface")),
             "outcome": (dims, out, {"units": "1", "long_name": "how the run ended"}),
         },
         coords={
             "start_height": (
                 "start_height",
                 hs,
-                _attrs("m", "height of the nose tip above the surface at t = 0 (0: touching)"),
+                var_attrs("m", "height of the nose tip above the surface at t = 0 (0: touching)"),
             ),
-            "omega": ("omega", om, _PARAM_ATTRS["omega"]),
+            "omega": ("omega", om, PARAMETER_ATTRS["omega"]),
         },
         attrs={
             "title": "Figs 16-17: sensitivity of alpha to the start height (not in the paper)",
             "projectile": projectile,
             "target": target,
             "velocity_m_s": float(velocity),
-            "numerics_json": json.dumps(_numerics_dict(num)),
+            "numerics_json": json.dumps(numerics_record(num)),
             "Conventions": "CF-1.8",
         },
+    )
+
+
+def run_fig16(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
+    """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
+    record in :mod:`pencore.workflowconfig.registry` names this function)."""
+    return fig16(
+        cfg["projectile"],
+        c.target,
+        float(cfg["velocity_m_s"]),
+        values(cfg["omega_rad_s"]),
+        start_height=c.start_height,
+        numerics=c.numerics,
+        n_time=c.n_time,
+        speed_fraction=c.speed_fraction,
+    )
+
+
+def run_start_height(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
+    """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
+    record in :mod:`pencore.workflowconfig.registry` names this function)."""
+    return start_height_study(
+        cfg["projectile"],
+        c.target,
+        float(cfg["velocity_m_s"]),
+        values(cfg["omega_rad_s"]),
+        values(cfg["start_heights_m"]),
+        numerics=c.numerics,
+        speed_fraction=c.speed_fraction,
     )

@@ -17,7 +17,7 @@ plates or projectiles is in pencore's library (6082, 2060, 6055, 7017, 7085 alum
 and a steel; APM2 bullets and cores), so pencore's ratio is that of an analog -- the
 library's 7.11 mm CRH-3 steel rod in the library aluminium law -- and the comparison is of
 the shape of ``V_bl(theta)``, not of its level. Statistics per material class and per
-option (:func:`pencore.studies.measurements.error_statistics` on the ratio).
+option (:func:`pencore.studies.validation.measurements.error_statistics` on the ratio).
 """
 
 from __future__ import annotations
@@ -37,10 +37,9 @@ from pencore.inputs.library import get_projectile
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.search.perforation import ballistic_limit
 from pencore.search.threshold import CriticalResult
-from pencore.studies.common import _attrs
-from pencore.studies.fig08_vcr import _search_vars
-from pencore.studies.measurements import error_statistics, read_data_csv
-from pencore.studies.perforation import slab_target
+from pencore.studies.common import search_variables, var_attrs
+from pencore.studies.perforation.slabs import slab_target
+from pencore.studies.validation.measurements import error_statistics, read_data_csv
 
 __all__ = [
     "OPTION_KEYS",
@@ -159,7 +158,7 @@ def ballistic_map(
                     )
         dims = ("t_over_d", "obliquity")
         ds = xr.Dataset(
-            _search_vars(
+            search_variables(
                 res, "v_bl", "m s-1", "ballistic limit (lowest speed that perforates)", dims
             ),  # fmt: skip
             coords={"t_over_d": tod, "obliquity": obl},
@@ -170,11 +169,11 @@ def ballistic_map(
     sec = 1.0 / np.cos(np.radians(obl))
     v0 = out["v_bl"].sel(obliquity=0.0)
     out["v_bl_los"] = v0 * xr.DataArray(sec, dims="obliquity", coords={"obliquity": obl})
-    out["v_bl_los"].attrs = _attrs("m s-1", "line-of-sight rule: V_bl(0) sec(obliquity)")
+    out["v_bl_los"].attrs = var_attrs("m s-1", "line-of-sight rule: V_bl(0) sec(obliquity)")
     out["ratio"] = out["v_bl"] / v0
-    out["ratio"].attrs = _attrs("1", "V_bl(obliquity) / V_bl(0)")
-    out["t_over_d"].attrs = _attrs("1", "plate thickness in projectile calibers")
-    out["obliquity"].attrs = _attrs("degree", "obliquity: shot line from the plate normal")
+    out["ratio"].attrs = var_attrs("1", "V_bl(obliquity) / V_bl(0)")
+    out["t_over_d"].attrs = var_attrs("1", "plate thickness in projectile calibers")
+    out["obliquity"].attrs = var_attrs("degree", "obliquity: shot line from the plate normal")
     out["option"].attrs = {"long_name": "near-surface option set"}
     out.attrs = {
         "title": "pencore ballistic-limit map with the line-of-sight rule",
@@ -238,16 +237,20 @@ def compare_obliquity(rows: pd.DataFrame, bl_map: xr.Dataset) -> xr.Dataset:
     ds = xr.Dataset(
         {
             **text,
-            "obliquity": ("row", obl["obliquity_deg"].to_numpy(), _attrs("degree", "obliquity")),
-            "t_over_d": ("row", obl["t_over_d"].to_numpy(), _attrs("1", "thickness / diameter")),
+            "obliquity": ("row", obl["obliquity_deg"].to_numpy(), var_attrs("degree", "obliquity")),
+            "t_over_d": ("row", obl["t_over_d"].to_numpy(), var_attrs("1", "thickness / diameter")),
             "measured_v_bl": (
                 "row",
                 obl["measured_v_bl_m_s"].to_numpy(),
-                _attrs("m s-1", "measured ballistic limit"),
+                var_attrs("m s-1", "measured ballistic limit"),
             ),  # fmt: skip
-            "measured_ratio": ("row", meas, _attrs("1", "measured V50(theta) / V50(0)")),
-            "los_ratio": ("row", sec, _attrs("1", "line-of-sight rule sec(theta)")),
-            "pencore_ratio": (("option", "row"), pred, _attrs("1", "pencore V_bl(theta)/V_bl(0)")),
+            "measured_ratio": ("row", meas, var_attrs("1", "measured V50(theta) / V50(0)")),
+            "los_ratio": ("row", sec, var_attrs("1", "line-of-sight rule sec(theta)")),
+            "pencore_ratio": (
+                ("option", "row"),
+                pred,
+                var_attrs("1", "pencore V_bl(theta)/V_bl(0)"),
+            ),
         },
         coords={"row": np.arange(len(obl)), "option": options},
     )
@@ -275,12 +278,12 @@ def compare_obliquity(rows: pd.DataFrame, bl_map: xr.Dataset) -> xr.Dataset:
         ds[f"stat_{k}"] = (
             ("model", "material_class"),
             np.asarray(v).reshape(shape),
-            _attrs("1", long_name),
+            var_attrs("1", long_name),
         )
     ds = ds.assign_coords(model=names, material_class=groups)
     # after assign_coords, which rebuilds the indexes' variables without their attributes
     for name, attrs in (
-        ("row", _attrs("1", "oblique row of the measurements file (0-based)")),
+        ("row", var_attrs("1", "oblique row of the measurements file (0-based)")),
         ("option", {"long_name": "near-surface option set"}),
         ("model", {"long_name": "model of the obliquity ratio"}),
         ("material_class", {"long_name": "plate material class"}),

@@ -3,7 +3,7 @@ one setting reproduces them all.
 
 Each *setting* (configured in ``attribution.settings``: a name, a label, a group, whether
 it is a physically argued reading of the paper or an attribution-only knob, and the
-choices of :func:`pencore.studies.disputed.disputed_quantities`) is one job
+choices of :func:`pencore.studies.attribution.disputed.disputed_quantities`) is one job
 (:func:`run_setting`); :func:`gather` joins them on a ``setting`` dimension, adds each
 quantity's relative difference from the paper, and :func:`attribution_table` gives, for
 each paper number, the best-supported explanation and whether ONE setting reproduces all
@@ -38,7 +38,7 @@ import xarray as xr
 from pencore.errors import InputError
 from pencore.paper.choices import check_settings
 from pencore.paper.claims import disputed_values
-from pencore.studies.disputed import disputed_quantities
+from pencore.studies.attribution.disputed import disputed_quantities
 
 __all__ = ["NUMBERS", "TOLERANCE", "run_setting", "gather", "attribution_table"]
 
@@ -62,8 +62,8 @@ NUMBERS: dict[str, tuple[str, str]] = {
 
 
 def run_setting(setting: Mapping[str, Any]) -> xr.Dataset:
-    """:func:`pencore.studies.disputed.disputed_quantities` of one setting, on a ``setting``
-    dimension of length 1 with its label, group and ``argued`` flag."""
+    """:func:`pencore.studies.attribution.disputed.disputed_quantities` of one setting, on a
+    ``setting`` dimension of length 1 with its label, group and ``argued`` flag."""
     st = check_settings([setting])[0]
     ds = disputed_quantities(st["choices"])
     ds = ds.expand_dims(setting=[st["name"]])  # every data variable gains the dimension

@@ -17,72 +17,22 @@ from pencore.errors import InputError
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.run.impact import prepare, run_impact, simulate
 from pencore.search import critical
-from pencore.search.threshold import STATUSES, VELOCITY_TOL
-from pencore.studies.common import _STR, PROJECTILES, _attrs, _axis, _start, projectile_coords
-from pencore.studies.parts import grid
-from pencore.studies.trajectories import _PARAM_ATTRS
+from pencore.search.threshold import VELOCITY_TOL
+from pencore.studies.common import (
+    PARAMETER_ATTRS,
+    PROJECTILES,
+    STRING_DTYPE,
+    axis_values,
+    numerics_record,
+    projectile_coords,
+    search_variables,
+    start_point,
+    var_attrs,
+)
+from pencore.studies.config import StudySettings
+from pencore.workflowconfig.parts import grid, value_range, values
 
 __all__ = ["vcr_study", "fig8"]
-
-
-def _search_vars(
-    results: np.ndarray, name: str, units: str, long_name: str, dims: tuple[str, ...]
-) -> dict[str, Any]:
-    """Variables ``name``, ``name_lo``, ``name_hi``, ``status``, ``n_evals``,
-    ``monotone``, ``message``, ``history`` from an object array of CriticalResult."""
-
-    def arr(f, dtype=float):
-        out = np.empty(results.shape, dtype=dtype)
-        for idx in np.ndindex(results.shape):
-            out[idx] = f(results[idx])
-        return out
-
-    return {
-        name: (
-            dims,
-            arr(lambda r: r.value),
-            _attrs(
-                units,
-                long_name,
-                note="midpoint of the final bracket; NaN unless status is ok or non_monotone",
-            ),
-        ),
-        f"{name}_lo": (
-            dims,
-            arr(lambda r: r.lo),
-            _attrs(units, f"{long_name}: largest value evaluated without the event (bracket low)"),
-        ),
-        f"{name}_hi": (
-            dims,
-            arr(lambda r: r.hi),
-            _attrs(units, f"{long_name}: smallest value evaluated with the event (bracket high)"),
-        ),
-        "status": (
-            dims,
-            arr(lambda r: r.status, _STR),
-            {"units": "1", "long_name": "search status: " + ", ".join(STATUSES)},
-        ),
-        "n_evals": (
-            dims,
-            arr(lambda r: r.n_evals, np.int64),
-            _attrs("1", "number of trajectories run by the search"),
-        ),
-        "monotone": (
-            dims,
-            arr(lambda r: int(r.monotone), np.int8),
-            _attrs("1", "0 if the coarse scan found the verdict not monotone"),
-        ),
-        "message": (
-            dims,
-            arr(lambda r: r.message, _STR),
-            {"units": "1", "long_name": "search report"},
-        ),
-        "history": (
-            dims,
-            arr(lambda r: json.dumps(r.to_dict()["history"]), _STR),
-            {"units": "1", "long_name": "every value evaluated and its verdict (JSON)"},
-        ),
-    }
 
 
 def vcr_study(
@@ -112,16 +62,16 @@ def vcr_study(
     ``lo`` is above them.
     """
     names = list(projectiles)
-    obl = _axis(obliquities, "obliquities")
-    yw = _axis(yaws, "yaws")
+    obl = axis_values(obliquities, "obliquities")
+    yw = axis_values(yaws, "yaws")
     low = np.asarray(list(low_speeds), dtype=float)
     num = resolve_numerics(numerics)
-    st = _start(start)
+    st = start_point(start)
     shape = (len(names), obl.size, yw.size)
     res = np.empty(shape, dtype=object)
-    nose_dir = np.full(shape, "", dtype=_STR)
+    nose_dir = np.full(shape, "", dtype=STRING_DTYPE)
     final_theta = np.full(shape, np.nan)
-    outcome_hi = np.full(shape, "", dtype=_STR)
+    outcome_hi = np.full(shape, "", dtype=STRING_DTYPE)
     low_rev = np.zeros(shape + (low.size,), dtype=np.int8)
     for ip, p in enumerate(names):
         pr = prepare(p, target, num)
@@ -152,7 +102,7 @@ def vcr_study(
                         ).reversed
                     )
     dims = ("projectile", "obliquity", "yaw")
-    data = _search_vars(res, "vcr", "m s-1", "critical reverse velocity V_cr", dims)
+    data = search_variables(res, "vcr", "m s-1", "critical reverse velocity V_cr", dims)
     if nose:
         data["nose_direction"] = (
             dims,
@@ -166,7 +116,7 @@ def vcr_study(
         data["final_theta"] = (
             dims,
             final_theta,
-            _attrs("degree", "axis angle from the normal at the end of the full run at vcr_hi"),
+            var_attrs("degree", "axis angle from the normal at the end of the full run at vcr_hi"),
         )
         data["outcome_at_vcr"] = (
             dims,
@@ -177,18 +127,18 @@ def vcr_study(
         data["low_speed_reversed"] = (
             (*dims, "low_velocity"),
             low_rev,
-            _attrs("1", "1 if the run at this low speed turned back (ricochet during entry)"),
+            var_attrs("1", "1 if the run at this low speed turned back (ricochet during entry)"),
         )
     coords = {
         **projectile_coords(names),
-        "obliquity": ("obliquity", obl, _PARAM_ATTRS["obliquity"]),
-        "yaw": ("yaw", yw, _PARAM_ATTRS["yaw"]),
+        "obliquity": ("obliquity", obl, PARAMETER_ATTRS["obliquity"]),
+        "yaw": ("yaw", yw, PARAMETER_ATTRS["yaw"]),
     }
     if low.size:
         coords["low_velocity"] = (
             "low_velocity",
             low,
-            _attrs("m s-1", "impact velocity below the search range"),
+            var_attrs("m s-1", "impact velocity below the search range"),
         )
     return xr.Dataset(
         data,
@@ -202,14 +152,10 @@ def vcr_study(
             "start_m": "surface contact at x = 0" if st is None else str(list(st)),
             "verdict": "simulate(..., stop_at_reversal=True).attrs['reversed'] == 1: the centre "
             "of mass velocity turned towards the surface while in the target",
-            "numerics_json": json.dumps(_numerics_dict(num)),
+            "numerics_json": json.dumps(numerics_record(num)),
             "Conventions": "CF-1.8",
         },
     )
-
-
-def _numerics_dict(num: Numerics) -> dict[str, Any]:
-    return {f: getattr(num, f) for f in Numerics.__dataclass_fields__}
 
 
 def fig8(
@@ -226,4 +172,46 @@ def fig8(
         raise InputError("fig8 is at zero yaw; use vcr_study for other yaws")
     ds = vcr_study(projectiles, obliquities, (0.0,), **kwargs).isel(yaw=0)
     ds.attrs["title"] = "Paper Fig. 8: critical reverse velocity against obliquity"
+    return ds
+
+
+def run_fig8(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
+    """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
+    record in :mod:`pencore.workflowconfig.registry` names this function)."""
+    lo, hi = value_range(cfg["velocity_range_m_s"])
+    return fig8(
+        [c.projectile],
+        values(cfg["obliquity_deg"]),
+        target=c.target,
+        lo=lo,
+        hi=hi,
+        tol=c.velocity_tol,
+        scan=c.scan,
+        start=c.start,
+        numerics=c.numerics,
+        low_speeds=values(cfg.get("low_velocities_m_s", [])),
+    )
+
+
+def run_fig12(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
+    """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
+    record in :mod:`pencore.workflowconfig.registry` names this function)."""
+    if c.obliquity is None:
+        raise InputError("Vcr against yaw runs per (projectile, obliquity): give obliquity=")
+    lo, hi = value_range(cfg["velocity_range_m_s"])
+    ds = vcr_study(
+        [c.projectile],
+        [float(c.obliquity)],
+        values(cfg["yaw_deg"]),
+        target=c.target,
+        lo=lo,
+        hi=hi,
+        tol=c.velocity_tol,
+        scan=c.scan,
+        start=c.start,
+        numerics=c.numerics,
+        nose=True,
+        low_speeds=values(cfg.get("low_velocities_m_s", [])),
+    )
+    ds.attrs["title"] = "Paper Figs 11-12: V_cr against yaw, final nose direction"
     return ds
