@@ -124,7 +124,7 @@ def test_predictions_are_the_solver_results(tmp_path):
 def test_statistics_by_option_on_the_soil_shots():
     from pencore.studies.validation.measurements import statistics_by_option
 
-    csv = Path(__file__).resolve().parents[2] / "config" / "table2.csv"
+    csv = Path(__file__).resolve().parents[3] / "config" / "table2.csv"
     entry = {"name": "soil", "csv": str(csv), "projectile": "p2", "target": "soil"}
     ds = statistics_by_option([entry], {"none": {}, "crater_2": {"crater_depth": 2.0}})
     assert list(ds["group"].values) == ["soil/penetration_depth"]
@@ -142,7 +142,7 @@ def test_statistics_by_option_on_the_soil_shots():
 
 # ----------------------------------------------------------------------------- shot tables
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[3]
 OGIVE = str(REPO / "config" / "aluminium_ogive_shots.csv")
 SHOT_HEADER = (
     "shot,projectile,striking_velocity_m_s,depth_m,pitch_deg,yaw_deg,rigid,table,page,source\n"

@@ -17,7 +17,7 @@ from pencore.studies.perforation.obliquity import (
     obliquity_summary,
 )
 
-CSV = Path(__file__).resolve().parents[2] / "config" / "oblique_ballistic_limits.csv"
+CSV = Path(__file__).resolve().parents[3] / "config" / "oblique_ballistic_limits.csv"
 
 
 def test_shipped_file_loads_with_sources_and_ratios():

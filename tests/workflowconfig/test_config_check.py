@@ -4,13 +4,11 @@ stops with one line naming the key path and the value (pencore.workflowconfig.co
 from __future__ import annotations
 
 import copy
-import shutil
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 import yaml
+from helpers import copy_workflow, run_snakemake
 
 from pencore.errors import ConfigError
 from pencore.workflowconfig.config_check import check_config, schema_error_message
@@ -130,14 +128,9 @@ def test_schema_errors_are_one_short_line(path, value, needles):
     ],
 )  # fmt: skip
 def test_snakemake_stops_at_parse_time_with_a_short_message(tmp_path, text, needle):
-    shutil.copy2(REPO / "Snakefile", tmp_path / "Snakefile")
-    for d in ("workflow", "config", ".test"):
-        shutil.copytree(REPO / d, tmp_path / d)
+    copy_workflow(tmp_path)
     (tmp_path / "bad.yaml").write_text(text)
-    r = subprocess.run(
-        [sys.executable, "-m", "snakemake", "-n", "--cores", "1", "--configfile", "bad.yaml"],
-        cwd=tmp_path, capture_output=True, text=True, timeout=300,
-    )  # fmt: skip
+    r = run_snakemake(tmp_path, "-n", "--cores", "1", "--configfile", "bad.yaml", timeout=300)
     out = r.stdout + r.stderr
     assert r.returncode != 0
     assert needle in out, out

@@ -35,7 +35,7 @@ CASES = [
 ]
 
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[3]
 SPHERE_SHOTS = REPO / "config" / "aluminium_sphere_shots.csv"
 
 
