@@ -23,7 +23,7 @@ from pencore.studies.config import StudySettings
 from pencore.studies.trajectories.stack import stack_trajectories
 from pencore.workflowconfig.parts import values
 
-__all__ = ["fig9"]
+__all__ = ["fig9", "run_fig9"]
 
 
 def fig9(

@@ -23,7 +23,7 @@ from pencore.studies.common import (
 from pencore.studies.config import StudySettings
 from pencore.workflowconfig.parts import value_range, values
 
-__all__ = ["omega_c_study"]
+__all__ = ["omega_c_study", "run_fig18"]
 
 
 def omega_c_study(

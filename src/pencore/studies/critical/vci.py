@@ -26,7 +26,7 @@ from pencore.studies.common import (
 from pencore.studies.config import StudySettings
 from pencore.workflowconfig.parts import value_range, values
 
-__all__ = ["vci_study"]
+__all__ = ["vci_study", "run_fig15"]
 
 
 def vci_study(

@@ -32,7 +32,7 @@ from pencore.studies.common import (
 from pencore.studies.config import StudySettings
 from pencore.workflowconfig.parts import grid, value_range, values
 
-__all__ = ["vcr_study", "fig8"]
+__all__ = ["vcr_study", "fig8", "run_fig8", "run_fig12"]
 
 
 def vcr_study(

@@ -15,7 +15,7 @@ from pencore.studies.config import StudySettings
 from pencore.studies.trajectories.stack import trajectory_set
 from pencore.workflowconfig.parts import values
 
-__all__ = ["fig7"]
+__all__ = ["fig7", "run_fig7"]
 
 
 def fig7(

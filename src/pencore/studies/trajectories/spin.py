@@ -26,7 +26,7 @@ from pencore.studies.config import StudySettings
 from pencore.studies.trajectories.stack import trajectory_set
 from pencore.workflowconfig.parts import values
 
-__all__ = ["fig16", "start_height_study"]
+__all__ = ["fig16", "start_height_study", "run_fig16", "run_start_height"]
 
 
 def fig16(

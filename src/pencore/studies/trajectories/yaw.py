@@ -1,4 +1,6 @@
-"""Figs 13-14: normal impact with a small yaw, under both yaw conventions.
+"""Trajectories with yaw: Fig. 11 (oblique impact of #4 with yaw -1 and +1 deg,
+:func:`run_fig11` on :func:`pencore.studies.trajectories.stack.trajectory_set`) and
+Figs 13-14: normal impact with a small yaw, under both yaw conventions.
 
 For a *normal* impact with yaw the paper does not say whether the velocity or the axis
 is normal; :func:`pencore.inputs.conventions.normal_impact_angles` maps both readings
@@ -23,7 +25,7 @@ from pencore.studies.config import StudySettings
 from pencore.studies.trajectories.stack import stack_trajectories, trajectory_set
 from pencore.workflowconfig.parts import values
 
-__all__ = ["fig13"]
+__all__ = ["fig13", "run_fig11", "run_fig13"]
 
 
 def fig13(
