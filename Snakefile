@@ -13,10 +13,10 @@ from snakemake.utils import min_version, validate
 
 from pencore.errors import ConfigError
 from pencore.io.results import set_aside_unreadable
-from pencore.studies.parts import remade_target
-from pencore.studies.config_check import check_config, read_config
-from pencore.studies.config_check import schema_error_message, strict_schema_error
-from pencore.studies.sources import physics_source_hash, plotting_source_hash
+from pencore.workflowconfig.parts import remade_target
+from pencore.workflowconfig.config_check import check_config, read_config
+from pencore.workflowconfig.config_check import schema_error_message, strict_schema_error
+from pencore.workflowconfig.sources import physics_source_hash, plotting_source_hash
 
 min_version("9.0")
 
@@ -28,7 +28,7 @@ configfile: "config/config.yaml"
 # repeated keys refused; Snakemake's reader takes 23:20 for 1400 and keeps the last of two
 # sections), in Snakemake's order: this file's configfile, each --configfile, --config.
 # A bad config stops here with one line naming the key path (Snakemake's own message
-# would print the whole schema; pencore.studies.config_check adds what a schema cannot say).
+# would print the whole schema; pencore.workflowconfig.config_check adds what a schema cannot say).
 try:
     _cli_files = [Path(f).absolute() for f in workflow.overwrite_configfiles]
     _own_files = [
@@ -73,7 +73,7 @@ ARCHIVE_DATASETS = []
 # Hashes of pencore's source as params.code (Snakemake's `code` trigger sees only a rule's
 # own script): solver/study rules get the physics (all but pencore/plotting), figure rules
 # the plotting package; physics changes reach figures through their dataset inputs.
-# See pencore.studies.sources.
+# See pencore.workflowconfig.sources.
 PHYSICS_CODE = physics_source_hash()
 PLOTTING_CODE = plotting_source_hash()
 

@@ -1,5 +1,5 @@
 """The attribution table of the docs (results, "Why the numbers differ"): the paper's
-disputed quantities, setting by setting (pencore.studies.disputed.disputed_quantities),
+disputed quantities, setting by setting (pencore.studies.attribution.disputed.disputed_quantities),
 run one at a time.
 
 Writes benchmarks/results/attribution.csv (one row per setting: the quantities, their
@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pandas as pd
 
-from pencore.studies.disputed import disputed_quantities, relative_differences
+from pencore.studies.attribution.disputed import disputed_quantities, relative_differences
 
 OUT = Path(__file__).parent / "results" / "attribution.csv"
 FE_COARSE = {"n_nose": 16, "n_shank": 16}

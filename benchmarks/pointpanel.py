@@ -450,7 +450,7 @@ def closed_form_depth(mass: float, a: float, crh: float, v1: float, medium=SOIL)
 # ------------------------------------------------------------------ the disputed cases
 
 #: Definitions as in config/config.yaml (section4: fig7/fig8, fig13, fig16) and
-#: pencore.studies.disputed: #2 at 45 deg with its tip from (-1, 1) m (Vcr); #2 at
+#: pencore.studies.attribution.disputed: #2 at 45 deg with its tip from (-1, 1) m (Vcr); #2 at
 #: 1000 m/s, normal, spun about the centre of mass, tip touching (alpha); #4, normal, the
 #: velocity normal and the axis tilted by 0.1 deg (the configured ``axis_tilted`` reading:
 #: ``simulate(obliquity=+0.1, yaw=-0.1)``), tip touching (phi).

@@ -3,9 +3,16 @@
 from __future__ import annotations
 
 import ast
+import math
+import shutil
 import subprocess
 import sys
 from pathlib import Path
+
+import numpy as np
+
+#: the repository's root (its Snakefile, workflow/, config/ and .test/)
+REPO = Path(__file__).resolve().parents[1]
 
 #: Modules that cost a start ~1 s together (the solver's kernels, scipy, xarray with
 #: pandas, matplotlib) and that light entry points must not load.
@@ -32,3 +39,39 @@ def heavy_modules_after(code: str, cwd: Path | None = None) -> list[str]:
     )
     assert out.returncode == 0, out.stderr
     return ast.literal_eval(out.stdout.strip().splitlines()[-1])
+
+
+def search_results(values, tol: float = 5.0) -> np.ndarray:
+    """An object array of :class:`pencore.search.threshold.CriticalResult` with thresholds
+    at ``values``, brackets of width ``tol``; NaN is ``above_range`` at 4000."""
+    from pencore.search.threshold import CriticalResult
+
+    out = []
+    for v in np.ravel(values):
+        if np.isnan(v):
+            out.append(
+                CriticalResult(math.nan, 4000.0, math.nan, 2, True, "above_range", "", (), tol)
+            )
+        else:
+            out.append(CriticalResult(v, v - tol / 2, v + tol / 2, 9, True, "ok", "", (), tol))
+    return np.array(out, dtype=object).reshape(np.shape(values))
+
+
+def copy_workflow(dest: Path) -> Path:
+    """The Snakefile, ``workflow/``, ``config/`` and ``.test/`` copied into ``dest``, so a
+    test's Snakemake run never touches the repository's own ``results/``."""
+    shutil.copy2(REPO / "Snakefile", dest / "Snakefile")
+    for d in ("workflow", "config", ".test"):
+        shutil.copytree(REPO / d, dest / d)
+    return dest
+
+
+def run_snakemake(cwd: Path, *args: str, timeout: float = 600) -> subprocess.CompletedProcess:
+    """``python -m snakemake *args`` in ``cwd`` with this interpreter, output captured."""
+    return subprocess.run(
+        [sys.executable, "-m", "snakemake", *args],
+        cwd=cwd,
+        capture_output=True,
+        text=True,
+        timeout=timeout,
+    )

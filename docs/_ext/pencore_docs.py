@@ -423,9 +423,9 @@ def residual_velocity_text() -> str:
 
 
 def _validation_summary():  # noqa: ANN202 (pandas.DataFrame)
-    """The validation summary of the archive (:func:`pencore.studies.measurements.
+    """The validation summary of the archive (:func:`pencore.studies.validation.measurements.
     summary_table` over the archived measurements and obliquity ratios)."""
-    from pencore.studies.measurements import summary_table
+    from pencore.studies.validation.measurements import summary_table
 
     with (
         open_archive(ARCHIVE / "validation" / "measurements.nc", "validation/measurements") as m,
@@ -555,9 +555,9 @@ def layers_table() -> str:
 
 
 def config_reference_page() -> str:
-    """Every workflow configuration key (:mod:`pencore.studies.config_reference`), its
+    """Every workflow configuration key (:mod:`pencore.workflowconfig.config_reference`), its
     title dropped to sit under the page's own."""
-    from pencore.studies.config_reference import config_reference
+    from pencore.workflowconfig.config_reference import config_reference
 
     return config_reference(REPO).split("\n", 1)[1].strip()
 

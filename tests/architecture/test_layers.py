@@ -9,6 +9,7 @@ import re
 import shutil
 import subprocess
 import sys
+import tomllib
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[2]
@@ -153,3 +154,22 @@ def test_import_linter_contracts_hold():
     out = subprocess.run([exe], cwd=REPO, capture_output=True, text=True)
     assert out.returncode == 0, out.stdout[-3000:]
     assert " 0 broken" in out.stdout
+
+
+def test_the_snakefile_imports_only_what_the_light_contract_covers():
+    """The Snakefile and its rule files run at every Snakemake start (each dry run, targeted
+    rerun, cluster job): each pencore module they import is a source of the contract that
+    forbids the solver, numba and the data stack there."""
+    config = tomllib.loads((REPO / "pyproject.toml").read_text())["tool"]["importlinter"]
+    (light,) = [c for c in config["contracts"] if c["name"].startswith("what the Snakefile")]
+    sources = [REPO / "Snakefile", *sorted((REPO / "workflow" / "rules").glob("*.smk"))]
+    imported = {
+        line.split()[1]
+        for src in sources
+        for line in src.read_text().splitlines()
+        if line.startswith(("from pencore", "import pencore"))
+    }
+    assert imported, "found no pencore import in the workflow (the test reads nothing)"
+    covered = tuple(light["source_modules"])
+    outside = sorted(m for m in imported if not m.startswith(covered))
+    assert outside == [], f"the Snakefile imports {outside}, which no light contract covers"

@@ -167,7 +167,8 @@ def test_results_file_records_agreement_within_the_test_tolerances(pp):
 
 
 def test_docs_quote_the_results_file(pp):
-    """The agreement the docs and pencore.studies.disputed quote is the results file's."""
+    """The agreement the docs and pencore.studies.attribution.disputed quote is the results
+    file's."""
     with pp.OUT.open(newline="") as fh:
         rows = {r["quantity"]: r for r in csv.DictReader(fh)}
 
@@ -185,7 +186,9 @@ def test_docs_quote_the_results_file(pp):
         f"{g('phi_1000', 'tolerance')} deg)",
     ):
         assert text in page
-    doc = " ".join((repo / "src" / "pencore" / "studies" / "disputed.py").read_text().split())
+    doc = " ".join(
+        (repo / "src" / "pencore" / "studies" / "attribution" / "disputed.py").read_text().split()
+    )
     assert f"Vcr at 45 deg within {g('vcr', 'difference')} m/s" in doc
     assert f"alpha at 20 rad/s within {g('alpha_20', 'difference')} deg" in doc
 

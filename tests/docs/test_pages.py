@@ -78,7 +78,7 @@ def test_ensemble_page_shows_the_shipped_case():
 
 
 def test_typed_numbers_equal_their_sources():
-    from pencore.studies.attribution import TOLERANCE
+    from pencore.studies.attribution.settings import TOLERANCE
 
     assert f"{100 * TOLERANCE:g} %" in _page("results/attribution.md")
     min_job_age = re.search(r"MinJobAge=(\d+)", (REPO / ".ci/slurm.sh").read_text()).group(1)

@@ -54,7 +54,7 @@ def test_relative_links_resolve():
 def test_every_number_in_the_prose_is_checked():
     """Numbers outside code and generated blocks: each is the paper's citation, or
     a value checked here against the file that holds it."""
-    from pencore.studies.attribution import TOLERANCE
+    from pencore.studies.attribution.settings import TOLERANCE
 
     prose = re.sub(r"```.*?```", "", README, flags=re.S)
     prose = re.sub(r"<!-- generated:.*?<!-- end generated -->", "", prose, flags=re.S)

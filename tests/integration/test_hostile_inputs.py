@@ -839,7 +839,7 @@ BAD_CONFIG = [
 @pytest.mark.parametrize("path, value, word", BAD_CONFIG, ids=lambda x: str(x)[:40])
 def test_workflow_config_refused_at_parse_time(path, value, word):
     from pencore.errors import ConfigError
-    from pencore.studies.config_check import check_config
+    from pencore.workflowconfig.config_check import check_config
 
     cfg = _edit(_config(), path, value)
     t0 = time.monotonic()
@@ -855,7 +855,7 @@ def test_workflow_config_refused_at_parse_time(path, value, word):
 def test_shipped_workflow_configs_pass():
     import yaml
 
-    from pencore.studies.config_check import check_config
+    from pencore.workflowconfig.config_check import check_config
 
     check_config(_config(), REPO)
     large = _config()
@@ -920,7 +920,7 @@ def test_workflow_config_read_through_the_gate(text, word, tmp_path):
     import yaml
 
     from pencore.errors import ConfigError
-    from pencore.studies.config_check import read_config, strict_schema_error
+    from pencore.workflowconfig.config_check import read_config, strict_schema_error
 
     extra = tmp_path / "extra.yaml"
     extra.write_text(text)
@@ -941,7 +941,7 @@ def test_workflow_config_merged_as_snakemake_merges_it(tmp_path):
     import yaml
 
     from pencore.errors import ConfigError
-    from pencore.studies.config_check import check_config, read_config, strict_schema_error
+    from pencore.workflowconfig.config_check import check_config, read_config, strict_schema_error
 
     # a --configfile updates the shipped one section by section; --config KEY=VALUE on top
     extra = tmp_path / "extra.yaml"
@@ -967,7 +967,7 @@ def test_workflow_config_merged_as_snakemake_merges_it(tmp_path):
 )
 def test_workflow_counts_refused_before_the_plan(path, value, word):
     from pencore.errors import ConfigError
-    from pencore.studies.config_check import check_config
+    from pencore.workflowconfig.config_check import check_config
 
     t0 = time.monotonic()
     with pytest.raises(ConfigError) as info:
@@ -1145,7 +1145,7 @@ def test_a_corrupt_chunk_part_set_aside_is_asked_for_again():
     # an intermediate file set aside would stay missing while the gathered result is up
     # to date; the Snakefile asks for it in `all` when a rule of this configuration
     # still makes it (and not a part beyond n_chunks, left by an earlier configuration)
-    from pencore.studies.parts import remade_target
+    from pencore.workflowconfig.parts import remade_target
 
     class Rule:
         def __init__(self, name: str, pattern: str) -> None:

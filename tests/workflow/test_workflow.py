@@ -19,6 +19,7 @@ import numpy as np
 import pandas as pd
 import pytest
 import yaml
+from helpers import copy_workflow, run_snakemake
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import validate
 
@@ -33,23 +34,6 @@ STUDY_RULES = ("table2", "fig5", "verification")
 FIGURE_RULES = ("table2_figure", "fig5_figure", "verification_figure")
 
 
-def _copy_workflow(dest: Path) -> Path:
-    shutil.copy2(REPO / "Snakefile", dest / "Snakefile")
-    for d in ("workflow", "config", ".test"):
-        shutil.copytree(REPO / d, dest / d)
-    return dest
-
-
-def _snakemake(cwd: Path, *args: str, timeout: float = 600) -> subprocess.CompletedProcess:
-    return subprocess.run(
-        [sys.executable, "-m", "snakemake", *args],
-        cwd=cwd,
-        capture_output=True,
-        text=True,
-        timeout=timeout,
-    )
-
-
 def _shipped_config() -> dict:
     return yaml.safe_load((REPO / "config" / "config.yaml").read_text())
 
@@ -59,11 +43,11 @@ def _shipped_config() -> dict:
 
 @pytest.fixture(scope="module")
 def workdir(tmp_path_factory) -> Path:
-    return _copy_workflow(tmp_path_factory.mktemp("workflow"))
+    return copy_workflow(tmp_path_factory.mktemp("workflow"))
 
 
 def test_dry_run_lists_every_study(workdir):
-    r = _snakemake(workdir, "-n", "--cores", "1")
+    r = run_snakemake(workdir, "-n", "--cores", "1")
     assert r.returncode == 0, r.stderr + r.stdout
     out = r.stdout + r.stderr
     for rule in (*STUDY_RULES, *FIGURE_RULES, "perforation_study", "perforation_figure", "all"):
@@ -73,13 +57,13 @@ def test_dry_run_lists_every_study(workdir):
 
 
 def test_dry_run_with_workflow_profiles(workdir):
-    r = _snakemake(workdir, "-n", "--workflow-profile", "workflow/profiles/default")
+    r = run_snakemake(workdir, "-n", "--workflow-profile", "workflow/profiles/default")
     assert r.returncode == 0, r.stderr + r.stdout
     assert "Using workflow specific profile workflow/profiles/default" in r.stdout + r.stderr
 
 
 def test_profile_keys_are_snakemake_options():
-    help_text = _snakemake(REPO, "--help").stdout
+    help_text = run_snakemake(REPO, "--help").stdout
     for name in ("default", "slurm"):
         prof = yaml.safe_load((REPO / "workflow" / "profiles" / name / "config.yaml").read_text())
         for key in prof:
@@ -87,14 +71,14 @@ def test_profile_keys_are_snakemake_options():
 
 
 def test_archive_target_dry_run(workdir):
-    r = _snakemake(workdir, "-n", "--cores", "1", "archive")
+    r = run_snakemake(workdir, "-n", "--cores", "1", "archive")
     assert r.returncode == 0, r.stderr + r.stdout
     for study in STUDY_RULES:
         assert f"results/archive/validation/{study}.nc" in r.stdout
 
 
 def test_lint_clean(workdir):
-    r = _snakemake(workdir, "--lint")
+    r = run_snakemake(workdir, "--lint")
     assert r.returncode == 0, r.stdout + r.stderr
 
 
@@ -219,8 +203,8 @@ def test_fig5_draws_every_shipped_shot():
 
 @pytest.fixture(scope="module")
 def e2e(tmp_path_factory) -> Path:
-    wd = _copy_workflow(tmp_path_factory.mktemp("e2e"))
-    r = _snakemake(wd, "--cores", "2", "--configfile", ".test/config.yaml")
+    wd = copy_workflow(tmp_path_factory.mktemp("e2e"))
+    r = run_snakemake(wd, "--cores", "2", "--configfile", ".test/config.yaml")
     assert r.returncode == 0, r.stderr[-4000:]
     return wd
 
@@ -331,13 +315,13 @@ def test_e2e_figures_logs_benchmarks(e2e):
 
 @pytest.mark.slow
 def test_e2e_rerun_is_targeted(e2e):
-    r = _snakemake(e2e, "-n", "--cores", "1", "--configfile", ".test/config.yaml")
+    r = run_snakemake(e2e, "-n", "--cores", "1", "--configfile", ".test/config.yaml")
     assert r.returncode == 0
     assert "Nothing to be done" in r.stdout + r.stderr
     cfg = yaml.safe_load((e2e / ".test/config.yaml").read_text())
     cfg["validation"]["verification"]["velocities_m_s"]["n"] = 4
     (e2e / "alt.yaml").write_text(yaml.safe_dump(cfg))
-    r = _snakemake(e2e, "-n", "--cores", "1", "--configfile", "alt.yaml")
+    r = run_snakemake(e2e, "-n", "--cores", "1", "--configfile", "alt.yaml")
     out = r.stdout + r.stderr
     assert r.returncode == 0, out
     assert "rule verification:" in out and "params have changed" in out
@@ -395,7 +379,7 @@ def _planned_rules_nonempty(planned: set[str]) -> set[str]:
 
 @pytest.mark.slow
 def test_e2e_report(e2e):
-    r = _snakemake(e2e, "--configfile", ".test/config.yaml", "--report", "results/report.html")
+    r = run_snakemake(e2e, "--configfile", ".test/config.yaml", "--report", "results/report.html")
     assert r.returncode == 0, r.stderr[-3000:]
     assert (e2e / "results/report.html").stat().st_size > 100_000
 

@@ -1,5 +1,5 @@
 # Attribution study: the paper's disputed numbers under each reading of what
-# the paper leaves open. pencore.studies.attribution; settings in config `attribution`.
+# the paper leaves open. pencore.studies.attribution.settings; settings in config `attribution`.
 #   attribution_setting  one job per setting: results/attribution/parts/<setting>.nc
 #   attribution_gather   results/attribution/attribution.nc and attribution_table.csv
 #   attribution_figure   results/attribution/attribution.{png,pdf}

@@ -1,5 +1,5 @@
 # Near-surface options against measured oblique ballistic limits (beyond the paper),
-# pencore.studies.obliquity.
+# pencore.studies.perforation.obliquity.
 #   near_surface_part    ballistic-limit map (t/d x obliquity) of one option set
 #   near_surface_map     the parts joined (option x t/d x obliquity) with the
 #                        line-of-sight rule, and the measured obliquity ratios against it

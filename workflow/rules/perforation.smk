@@ -1,4 +1,4 @@
-# Perforation of finite slabs (beyond the paper), pencore.studies.perforation.
+# Perforation of finite slabs (beyond the paper), pencore.studies.perforation.slabs.
 #   perforation_ballistic_limit    ballistic limit against slab thickness and obliquity
 #   perforation_residual_velocity  residual against impact velocity, Recht-Ipson fit
 PERFORATION = config["perforation"]

@@ -1,11 +1,11 @@
-# Section 4 studies of the paper (Figs 7-18) and the comparison table.
-#   s4_study             one dataset: results/<study>/<name>.nc (fig7, fig9, fig11, fig13,
-#                        fig16 and its start-height study)
-#   s4_part              the heavy searches split into independent jobs (both cores busy):
-#                        fig8, fig15, fig18 per projectile; fig12 per (projectile, obliquity)
-#   s4_gather            joins the parts: results/fig8/vcr.nc, results/fig12/vcr_yaw.nc,
-#                        results/fig15/vci.nc, results/fig18/omega_c.nc
-#   s4_<study>_figure    PNG + PDF from the dataset (restyling does not rerun the solver)
+# Section 4 studies of the paper (Figs 7-18) and the comparison table, one set of rules
+# for every record of pencore.workflowconfig.registry.STUDIES:
+#   s4_study             a study that runs as one job: its dataset results/<folder>/<name>.nc
+#   s4_part              a study split into independent jobs (both cores busy), per
+#                        projectile or per (projectile, obliquity): results/<folder>/parts/
+#   s4_gather            joins a split study's parts into its dataset
+#   s4_<study>_figure    PNG + PDF from the dataset (restyling does not rerun the solver),
+#                        captioned by workflow/report/section4_<study>.rst
 #   s4_paper_comparison  results/paper_comparison.csv: every claim of config/paper_claims.csv
 #                        beside pencore's value
 # Physics in pencore.studies.{config,comparison} (from_config, gather, paper_comparison); figures in
@@ -25,13 +25,13 @@ rule s4_study:
     benchmark:
         "results/benchmarks/section4/{study}_{name}.tsv"
     wildcard_constraints:
-        study="fig7|fig9|fig11|fig13|fig16",
-        name="trajectories|turning_angle|start_height",
+        study=s4_alternatives(folder for folder, _ in S4_SINGLE),
+        name=s4_alternatives(name for _, name in S4_SINGLE),
     conda:
         "../envs/pencore.yaml"
     params:
-        kind=lambda wc: "start_height" if wc.name == "start_height" else wc.study,
-        config=lambda wc: s4_params("start_height" if wc.name == "start_height" else wc.study),
+        kind=s4_study_of,
+        config=lambda wc: s4_params(s4_study_of(wc)),
         code=PHYSICS_CODE,
     script:
         "../scripts/section4_study.py"
@@ -45,13 +45,13 @@ rule s4_part:
     benchmark:
         "results/benchmarks/section4/{study}_part_{part}.tsv"
     wildcard_constraints:
-        study="fig8|fig12|fig15|fig18",
+        study=s4_alternatives(folder for folder, _ in S4_SPLIT),
         part=r"p[0-9]+(?:_[-0-9.]+)?",
     conda:
         "../envs/pencore.yaml"
     params:
-        kind=lambda wc: wc.study,
-        config=lambda wc: s4_params(wc.study),
+        kind=s4_study_of,
+        config=lambda wc: s4_params(s4_study_of(wc)),
         code=PHYSICS_CODE,
     script:
         "../scripts/section4_study.py"
@@ -59,7 +59,7 @@ rule s4_part:
 
 rule s4_gather:
     input:
-        parts=lambda wc: s4_parts(wc.study),
+        parts=lambda wc: s4_parts(s4_study_of(wc)),
     output:
         nc="results/{study}/{name}.nc",
     log:
@@ -67,14 +67,14 @@ rule s4_gather:
     benchmark:
         "results/benchmarks/section4/{study}_{name}_gather.tsv"
     wildcard_constraints:
-        study="fig8|fig12|fig15|fig18",
-        name="vcr|vcr_yaw|vci|omega_c",
+        study=s4_alternatives(folder for folder, _ in S4_SPLIT),
+        name=s4_alternatives(name for _, name in S4_SPLIT),
     localrule: True
     conda:
         "../envs/pencore.yaml"
     params:
-        kind=lambda wc: wc.study,
-        config=lambda wc: s4_params(wc.study),
+        kind=s4_study_of,
+        config=lambda wc: s4_params(s4_study_of(wc)),
         code=PHYSICS_CODE,
     script:
         "../scripts/section4_gather.py"
@@ -83,24 +83,24 @@ rule s4_gather:
 # ----------------------------------------------------------------------------- figures
 
 
-for _kind, (_entry, _dataset) in S4_DATASETS.items():
+for _kind, _study in STUDIES.items():
 
     rule:
         name:
             f"s4_{_kind}_figure"
         input:
-            nc=_dataset,
+            nc=_study.dataset,
             # the paper's numbers drawn beside pencore's (pencore.paper.claims)
             claims="config/paper_claims.csv",
         output:
             png=report(
-                s4_figure_path(_kind, "png"),
+                f"{_study.figure}.png",
                 caption=f"../report/section4_{_kind}.rst",
                 category="2 Section 4 (Figs 7-18)",
-                subcategory=S4_FIGURE_TITLES[_kind],
-                labels={"name": S4_FIGURE_TITLES[_kind], "type": "figure"},
+                subcategory=_study.title,
+                labels={"name": _study.title, "type": "figure"},
             ),
-            pdf=s4_figure_path(_kind, "pdf"),
+            pdf=f"{_study.figure}.pdf",
         log:
             f"results/logs/section4/{_kind}_figure.log",
         benchmark:
@@ -110,6 +110,8 @@ for _kind, (_entry, _dataset) in S4_DATASETS.items():
             "../envs/pencore.yaml"
         params:
             kind=_kind,
+            # the study's configuration entry, for its caption
+            entry=canonical(S4[_study.entry]),
             code=PLOTTING_CODE,
         script:
             "../scripts/section4_figure.py"
@@ -120,7 +122,7 @@ for _kind, (_entry, _dataset) in S4_DATASETS.items():
 
 rule s4_paper_comparison:
     input:
-        **{kind: dataset for kind, (_, dataset) in S4_DATASETS.items()},
+        **{kind: study.dataset for kind, study in STUDIES.items()},
         table2="results/validation/table2.csv",
         claims="config/paper_claims.csv",
     output:
@@ -134,7 +136,6 @@ rule s4_paper_comparison:
         "../envs/pencore.yaml"
     params:
         yaw_convention=S4["yaw_convention"],
-        vci_threshold=S4["fig15"]["threshold_deg"],
         code=PHYSICS_CODE,
     script:
         "../scripts/section4_compare.py"
@@ -156,10 +157,10 @@ rule s4_archive_comparison:
 
 
 ALL_TARGETS.extend(
-    [dataset for _, dataset in S4_DATASETS.values()]
-    + [s4_figure_path(kind, ext) for kind in S4_DATASETS for ext in ("png", "pdf")]
+    [study.dataset for study in STUDIES.values()]
+    + [f"{study.figure}.{ext}" for study in STUDIES.values() for ext in ("png", "pdf")]
     + ["results/paper_comparison.csv"]
 )
 ARCHIVE_DATASETS.extend(
-    [dataset for _, dataset in S4_DATASETS.values()] + ["results/paper_comparison.csv"]
+    [study.dataset for study in STUDIES.values()] + ["results/paper_comparison.csv"]
 )

@@ -1,9 +1,9 @@
-"""Rule attribution_setting: thin adapter to pencore.studies.attribution.run_setting."""
+"""Rule attribution_setting: thin adapter to pencore.studies.attribution.settings.run_setting."""
 
 from _common import start_log
 
 from pencore.io.netcdf import write_netcdf
-from pencore.studies.attribution import NUMBERS, gather, run_setting
+from pencore.studies.attribution.settings import NUMBERS, gather, run_setting
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 setting = dict(smk.params.setting)

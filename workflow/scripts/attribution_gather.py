@@ -1,10 +1,10 @@
-"""Rule attribution_gather: thin adapter to pencore.studies.attribution.gather/table."""
+"""Rule attribution_gather: thin adapter to pencore.studies.attribution.settings.gather/table."""
 
 import pandas as pd
 from _common import start_log
 
 from pencore.io.netcdf import read_netcdf, write_netcdf
-from pencore.studies.attribution import attribution_table, gather
+from pencore.studies.attribution.settings import attribution_table, gather
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], "attribution_gather")

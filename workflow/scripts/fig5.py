@@ -1,9 +1,9 @@
-"""Rule fig5 (paper Fig. 5): thin adapter to pencore.studies.validation.fig5."""
+"""Rule fig5 (paper Fig. 5): thin adapter to pencore.studies.validation.depth.fig5."""
 
 from _common import start_log
 
 from pencore.io.netcdf import file_sha256, write_netcdf
-from pencore.studies.validation import fig5, velocity_grid
+from pencore.studies.validation.depth import fig5, velocity_grid
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], "fig5")

@@ -1,9 +1,10 @@
-"""Rule measurements: thin adapter to pencore.studies.measurements.measured_vs_predicted."""
+"""Rule measurements: thin adapter to
+pencore.studies.validation.measurements.measured_vs_predicted."""
 
 from _common import start_log
 
 from pencore.io.netcdf import file_sha256, write_netcdf
-from pencore.studies.measurements import measured_vs_predicted
+from pencore.studies.validation.measurements import measured_vs_predicted
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], "measurements")

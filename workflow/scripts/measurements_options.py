@@ -1,9 +1,10 @@
-"""Rule measurements_options: thin adapter to pencore.studies.measurements.statistics_by_option."""
+"""Rule measurements_options: thin adapter to
+pencore.studies.validation.measurements.statistics_by_option."""
 
 from _common import start_log
 
 from pencore.io.netcdf import file_sha256, write_netcdf
-from pencore.studies.measurements import statistics_by_option
+from pencore.studies.validation.measurements import statistics_by_option
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], "measurements_options")

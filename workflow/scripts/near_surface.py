@@ -1,10 +1,10 @@
-"""Rule near_surface_map: thin adapter to pencore.studies.obliquity (the option sets' maps
-joined, and the measured obliquity ratios against them)."""
+"""Rule near_surface_map: thin adapter to pencore.studies.perforation.obliquity (the option
+sets' maps joined, and the measured obliquity ratios against them)."""
 
 from _common import start_log
 
 from pencore.io.netcdf import file_sha256, read_netcdf, write_netcdf
-from pencore.studies.obliquity import (
+from pencore.studies.perforation.obliquity import (
     combine_maps,
     compare_obliquity,
     load_oblique,

@@ -1,10 +1,10 @@
-"""Rule near_surface_part: thin adapter to pencore.studies.obliquity.ballistic_map for one
-option set."""
+"""Rule near_surface_part: thin adapter to
+pencore.studies.perforation.obliquity.ballistic_map for one option set."""
 
 from _common import start_log
 
 from pencore.io.netcdf import write_netcdf
-from pencore.studies.obliquity import ballistic_map
+from pencore.studies.perforation.obliquity import ballistic_map
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], f"near_surface_part {smk.wildcards.option}")

@@ -1,10 +1,10 @@
-"""Rules perforation_*: thin adapter to pencore.studies.perforation."""
+"""Rules perforation_*: thin adapter to pencore.studies.perforation.slabs."""
 
 from _common import start_log
 
 from pencore.io.netcdf import write_netcdf
-from pencore.studies.perforation import ballistic_limit_map, residual_velocity_curve
-from pencore.studies.validation import velocity_grid
+from pencore.studies.perforation.slabs import ballistic_limit_map, residual_velocity_curve
+from pencore.studies.validation.depth import velocity_grid
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 kind = smk.params.kind

@@ -19,7 +19,6 @@ df = paper_comparison(
     **datasets,
     table2=table2,
     yaw_convention=smk.params.yaw_convention,
-    vci_threshold=smk.params.vci_threshold,
 )
 df.to_csv(smk.output.csv, index=False, float_format="%.6g")
 with pd.option_context("display.width", 200, "display.max_colwidth", 90):

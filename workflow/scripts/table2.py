@@ -1,11 +1,11 @@
-"""Rule table2 (paper Table 2, soil): thin adapter to pencore.studies.table2 (the runs and
-the selection, :func:`table2`; the candidates' table, :func:`selection_table`)."""
+"""Rule table2 (paper Table 2, soil): thin adapter to pencore.studies.validation.table2 (the
+runs and the selection, :func:`table2`; the candidates' table, :func:`selection_table`)."""
 
 import pandas as pd
 from _common import start_log
 
 from pencore.io.netcdf import file_sha256, write_netcdf
-from pencore.studies.table2 import selection_table, table2
+from pencore.studies.validation.table2 import selection_table, table2
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], "table2")

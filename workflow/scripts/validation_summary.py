@@ -1,9 +1,10 @@
-"""Rule validation_summary: thin adapter to pencore.studies.measurements.summary_table."""
+"""Rule validation_summary: thin adapter to
+pencore.studies.validation.measurements.summary_table."""
 
 from _common import start_log
 
 from pencore.io.netcdf import read_netcdf
-from pencore.studies.measurements import summary_table
+from pencore.studies.validation.measurements import summary_table
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], "validation_summary")

@@ -1,11 +1,11 @@
-"""Rule verification: thin adapter to pencore.studies.validation.verification."""
+"""Rule verification: thin adapter to pencore.studies.validation.depth.verification."""
 
 from pathlib import Path
 
 from _common import start_log
 
 from pencore.io.netcdf import write_netcdf
-from pencore.studies.validation import velocity_grid, verification, verification_summary
+from pencore.studies.validation.depth import velocity_grid, verification, verification_summary
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 log = start_log(smk.log[0], "verification")

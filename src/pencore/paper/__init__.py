@@ -2,5 +2,5 @@
 (:mod:`claims`, from ``config/paper_claims.csv`` and ``config/table2.csv``) and the
 choices a reading of the paper fixes (:mod:`choices`). Nothing here runs the model: the
 studies that compare with the paper (:mod:`pencore.studies.comparison`,
-:mod:`pencore.studies.disputed`, :mod:`pencore.studies.attribution`) read it.
+:mod:`pencore.studies.attribution.disputed`, :mod:`pencore.studies.attribution.settings`) read it.
 """

@@ -1,10 +1,10 @@
 """Checks of the attribution study's configuration: the choices one setting fixes for
-:func:`pencore.studies.disputed.disputed_quantities` (shank model, numerics, the readings of
-the paper's yaw, spin centre and "turns back", start height, friction) and the list of
-configured settings.
+:func:`pencore.studies.attribution.disputed.disputed_quantities` (shank model, numerics,
+the readings of the paper's yaw, spin centre and "turns back", start height, friction) and
+the list of configured settings.
 
-Apart from :mod:`pencore.studies.disputed` so that the workflow's configuration check, run at
-every Snakemake start, names a bad choice without loading the solver.
+Apart from :mod:`pencore.studies.attribution.disputed` so that the workflow's configuration
+check, run at every Snakemake start, names a bad choice without loading the solver.
 """
 
 from __future__ import annotations

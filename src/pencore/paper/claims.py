@@ -185,7 +185,7 @@ def paper_values(claims: pd.DataFrame | None = None) -> dict[str, Any]:
 
 def disputed_values(claims: pd.DataFrame | None = None) -> dict[str, Any]:
     """The paper's values of the quantities the attribution study disputes
-    (:func:`pencore.studies.disputed.disputed_quantities`), from the claims and, for the
+    (:func:`pencore.studies.attribution.disputed.disputed_quantities`), from the claims and, for the
     Table 2 depth, :data:`TABLE2_FILE`.
 
     Keys: ``alpha`` {omega rad/s: deg} (Sect. 4.3 text on Figs 16-17), ``turned_back``

@@ -15,12 +15,13 @@ module             figures
 
 Each ``plot_*`` function takes the study's dataset and returns a
 :class:`matplotlib.figure.Figure`; :func:`save_figure` writes it (format from the suffix).
-:data:`PLOTS` maps the workflow's figure kinds to the functions.
+:data:`PLOTS` maps the workflow's figure kinds to the functions: the Section 4 studies'
+from their records (:mod:`pencore.workflowconfig.registry`), the other figures listed here.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator, Mapping
 
 from matplotlib.figure import Figure
 
@@ -43,6 +44,7 @@ from pencore.plotting.trajectories import (
     plot_start_height,
 )
 from pencore.plotting.turning import plot_fig9
+from pencore.workflowconfig import registry
 
 __all__ = [
     "STYLE",
@@ -71,24 +73,35 @@ __all__ = [
     "PLOTS",
 ]
 
-#: Figure kind (as used by the workflow) -> plotting function.
-PLOTS: dict[str, Callable[..., Figure]] = {
+#: The figures outside the Section 4 studies (their rules are written out in ``workflow/rules``).
+_OTHER_PLOTS: dict[str, Callable[..., Figure]] = {
     "table2": plot_table2,
     "fig5": plot_fig5,
     "verification": plot_verification,
-    "fig7": plot_fig7,
-    "fig8": plot_fig8,
-    "fig9": plot_fig9,
-    "fig11": plot_fig11,
-    "fig12": plot_fig12,
     "ballistic_limit": plot_ballistic_limit,
     "residual_velocity": plot_residual_velocity,
     "measurements": plot_measurements,
     "attribution": plot_attribution,
     "ensemble": plot_ensemble,
-    "fig13": plot_fig13,
-    "fig15": plot_fig15,
-    "fig16": plot_fig16,
-    "start_height": plot_start_height,
-    "fig18": plot_fig18,
 }
+
+
+class _PlotTable(Mapping[str, Callable[..., Figure]]):
+    """Figure kind -> plotting function: the other figures, then each study of
+    :data:`pencore.workflowconfig.registry.STUDIES` (its ``plot``), read when asked."""
+
+    def __getitem__(self, kind: str) -> Callable[..., Figure]:
+        if kind in _OTHER_PLOTS:
+            return _OTHER_PLOTS[kind]
+        return registry.resolve(registry.STUDIES[kind].plot, __name__)
+
+    def __iter__(self) -> Iterator[str]:
+        yield from _OTHER_PLOTS
+        yield from registry.STUDIES
+
+    def __len__(self) -> int:
+        return len(_OTHER_PLOTS) + len(registry.STUDIES)
+
+
+#: Figure kind (as used by the workflow) -> plotting function.
+PLOTS: Mapping[str, Callable[..., Figure]] = _PlotTable()

@@ -83,7 +83,7 @@ def plot_measurements(ds: xr.Dataset) -> Figure:
     filled: a shot whose projectile stayed rigid by its authors' limits, open: one that
     deformed or eroded (left out of the statistics). The box gives, per data file and law,
     the rigid shots' number, bias (mean of predicted / measured - 1) and mean absolute
-    relative error (pencore.studies.measurements.summary).
+    relative error (pencore.studies.validation.measurements.summary).
     """
     quantities = list(ds["quantity"].values)
     fig = new_figure(5.6 * len(quantities), 7.0)
@@ -156,7 +156,7 @@ def plot_ballistic_map(bl_map: xr.Dataset, cmp: xr.Dataset | None = None) -> Fig
     ``v_bl(0) sec(theta)`` dashed.
     Right: ``v_bl(theta) / v_bl(0)`` against obliquity at the map's thickness nearest
     the measured plates' median, one line per near-surface option, ``sec(theta)``
-    dashed, and the measured ratios (``cmp``, :func:`pencore.studies.obliquity.
+    dashed, and the measured ratios (``cmp``, :func:`pencore.studies.perforation.obliquity.
     compare_obliquity`) as points.
     """
     fig = new_figure(11.0, 4.6)

@@ -4,6 +4,7 @@ start points, and attribute helpers.
 
 from __future__ import annotations
 
+import json
 import math
 from collections.abc import Iterable, Sequence
 from typing import Any
@@ -14,6 +15,8 @@ from scipy import stats
 
 from pencore.errors import InputError
 from pencore.inputs.library import get_projectile
+from pencore.inputs.numerics import Numerics
+from pencore.search.threshold import STATUSES
 
 __all__ = [
     "PROJECTILES",
@@ -21,6 +24,15 @@ __all__ = [
     "projectile_coords",
     "start_from_height",
     "combine",
+    "t_half_width",
+    "STRING_DTYPE",
+    "var_attrs",
+    "axis_values",
+    "start_point",
+    "PARAMETER_ATTRS",
+    "search_variables",
+    "numerics_record",
+    "signed_deviation",
 ]
 
 
@@ -46,7 +58,8 @@ TRAJECTORY_VARIABLES = (
 )
 
 
-_STR = object  # dtype of string variables (netCDF variable-length strings)
+#: dtype of string variables (netCDF variable-length strings)
+STRING_DTYPE = object
 
 
 def t_half_width(x: Any, level: float = 0.95) -> float:
@@ -59,7 +72,8 @@ def t_half_width(x: Any, level: float = 0.95) -> float:
     return float(stats.t.ppf(0.5 + level / 2, n - 1) * x.std(ddof=1) / math.sqrt(n))
 
 
-def _attrs(units: str, long_name: str, **extra: Any) -> dict[str, Any]:
+def var_attrs(units: str, long_name: str, **extra: Any) -> dict[str, Any]:
+    """A variable's attributes: ``units``, ``long_name`` and any ``extra``."""
     return {"units": units, "long_name": long_name, **extra}
 
 
@@ -77,15 +91,17 @@ def projectile_coords(projectiles: Sequence[str]) -> dict[str, Any]:
     return {
         "projectile": (
             "projectile",
-            np.array(names, dtype=_STR),
+            np.array(names, dtype=STRING_DTYPE),
             {"long_name": "projectile (paper Table 3)", "units": "1"},
         ),
         "lc_over_l": (
             "projectile",
             np.array(lcl),
-            _attrs("1", "nose tip to centre of mass over total length, L_c/L (pencore geometry)"),
+            var_attrs(
+                "1", "nose tip to centre of mass over total length, L_c/L (pencore geometry)"
+            ),
         ),
-        "mass": ("projectile", np.array(mass), _attrs("kg", "projectile mass")),
+        "mass": ("projectile", np.array(mass), var_attrs("kg", "projectile mass")),
     }
 
 
@@ -101,7 +117,9 @@ def start_from_height(height: float) -> tuple[float, float, float] | None:
     return None if h == 0.0 else (0.0, h, 0.0)
 
 
-def _axis(values: Iterable[float], what: str) -> np.ndarray:
+def axis_values(values: Iterable[float], what: str) -> np.ndarray:
+    """The values of a dataset axis as floats; one line naming ``what`` if empty, not
+    finite or repeated."""
     v = np.asarray(list(values), dtype=float).ravel()
     if v.size == 0 or not np.all(np.isfinite(v)):
         raise InputError(f"{what} must be a non-empty list of numbers, got {list(v)}")
@@ -110,7 +128,8 @@ def _axis(values: Iterable[float], what: str) -> np.ndarray:
     return v
 
 
-def _start(start: Sequence[float] | None) -> tuple[float, float, float] | None:
+def start_point(start: Sequence[float] | None) -> tuple[float, float, float] | None:
+    """A start point of the nose tip (m) as 3 floats, or None (touching the surface)."""
     if start is None:
         return None
     s = tuple(float(x) for x in start)
@@ -119,7 +138,7 @@ def _start(start: Sequence[float] | None) -> tuple[float, float, float] | None:
     return s
 
 
-def _signed_deviation(ds: xr.Dataset) -> np.ndarray:
+def signed_deviation(ds: xr.Dataset) -> np.ndarray:
     """In-plane velocity angle from -y, positive towards +x, unwrapped (degree)."""
     return np.degrees(np.unwrap(np.arctan2(ds["vel_x"].values, -ds["vel_y"].values)))
 
@@ -137,3 +156,82 @@ def combine(parts: Sequence[xr.Dataset], dim: str = "projectile") -> xr.Dataset:
         compat="override",
         combine_attrs="override",
     )
+
+
+#: Attributes of the impact parameters when they are a dataset's coordinates (SI units,
+#: angles in degrees as at the edges).
+PARAMETER_ATTRS = {
+    "velocity": var_attrs("m s-1", "impact velocity V_i"),
+    "obliquity": var_attrs("degree", "angle of obliquity phi_1 (axis from the target normal)"),
+    "yaw": var_attrs("degree", "yaw angle phi_2 (velocity angle minus axis angle)"),
+    "omega": var_attrs("rad s-1", "initial angular velocity about the centre of mass (+z)"),
+}
+
+
+def search_variables(
+    results: np.ndarray, name: str, units: str, long_name: str, dims: tuple[str, ...]
+) -> dict[str, Any]:
+    """Variables ``name``, ``name_lo``, ``name_hi``, ``status``, ``n_evals``,
+    ``monotone``, ``message``, ``history`` from an object array of CriticalResult."""
+
+    def arr(f, dtype=float):
+        out = np.empty(results.shape, dtype=dtype)
+        for idx in np.ndindex(results.shape):
+            out[idx] = f(results[idx])
+        return out
+
+    return {
+        name: (
+            dims,
+            arr(lambda r: r.value),
+            var_attrs(
+                units,
+                long_name,
+                note="midpoint of the final bracket; NaN unless status is ok or non_monotone",
+            ),
+        ),
+        f"{name}_lo": (
+            dims,
+            arr(lambda r: r.lo),
+            var_attrs(
+                units, f"{long_name}: largest value evaluated without the event (bracket low)"
+            ),
+        ),
+        f"{name}_hi": (
+            dims,
+            arr(lambda r: r.hi),
+            var_attrs(
+                units, f"{long_name}: smallest value evaluated with the event (bracket high)"
+            ),
+        ),
+        "status": (
+            dims,
+            arr(lambda r: r.status, STRING_DTYPE),
+            {"units": "1", "long_name": "search status: " + ", ".join(STATUSES)},
+        ),
+        "n_evals": (
+            dims,
+            arr(lambda r: r.n_evals, np.int64),
+            var_attrs("1", "number of trajectories run by the search"),
+        ),
+        "monotone": (
+            dims,
+            arr(lambda r: int(r.monotone), np.int8),
+            var_attrs("1", "0 if the coarse scan found the verdict not monotone"),
+        ),
+        "message": (
+            dims,
+            arr(lambda r: r.message, STRING_DTYPE),
+            {"units": "1", "long_name": "search report"},
+        ),
+        "history": (
+            dims,
+            arr(lambda r: json.dumps(r.to_dict()["history"]), STRING_DTYPE),
+            {"units": "1", "long_name": "every value evaluated and its verdict (JSON)"},
+        ),
+    }
+
+
+def numerics_record(num: Numerics) -> dict[str, Any]:
+    """The fields of ``num`` as a plain dict (the ``numerics_json`` attribute of a dataset)."""
+    return {f: getattr(num, f) for f in Numerics.__dataclass_fields__}

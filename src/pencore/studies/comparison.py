@@ -3,13 +3,17 @@
 Each claim names, in its ``computed_by`` column, an entry of :data:`HANDLERS`: a function
 of the claim and the study datasets that returns the claim's table rows (none when its
 study was not given). The paper's values come from the claim, never from code; verdicts
-on the paper's trends are computed from the datasets with :func:`trend`.
+on the paper's trends are computed from the datasets with :func:`trend`. The rows are
+formatted, rounded and looked up in the search datasets by the helpers below; the spin
+claims (Figs 16-18, Sect. 4.3) compare the deviation alpha and the turning back at an
+initial angular velocity, with the start-height study beside them, and omega_c of #2.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping
+from itertools import product
 from typing import Any
 
 import numpy as np
@@ -20,22 +24,292 @@ from pencore import analysis
 from pencore.errors import InputError
 from pencore.inputs.library import get_projectile
 from pencore.paper.claims import at, load_claims
-from pencore.studies.comparison_rows import (
-    _COLUMNS,
-    _close,
-    _nose_rows,
-    _pencore_rel,
-    _row,
-    _search_lines,
-    _search_value,
-)
-from pencore.studies.comparison_spin import _fig16_alpha, _fig16_reverses, _omega_c_p2
 from pencore.studies.trends import trend
 
 __all__ = ["paper_comparison", "HANDLERS"]
 
 Claim = Mapping[str, Any]
 Rows = list[dict[str, Any]]
+
+
+# ----------------------------------------------------------------------------- rows
+
+
+def _search_lines(
+    ds: xr.Dataset, name: str, along: str, *, fixed: Mapping[str, Any] | None = None
+) -> list[tuple[str, np.ndarray, np.ndarray, np.ndarray]]:
+    """Lines of a search dataset along ``along`` for every other index."""
+    sub = ds.sel(fixed) if fixed else ds
+    da_lo = sub[f"{name}_lo"]
+    others = [d for d in da_lo.dims if d != along]
+    par = _parameter_values(sub, along)
+    lines = []
+    for idx in product(*(range(sub.sizes[d]) for d in others)):
+        sel = dict(zip(others, idx, strict=True))
+        lo = sub[f"{name}_lo"].isel(sel).transpose(along).values
+        hi = sub[f"{name}_hi"].isel(sel).transpose(along).values
+        label = ", ".join(f"{d}={_fmt_coord(sub[d].values[i])}" for d, i in sel.items())
+        lines.append((label or name, par, lo, hi))
+    return lines
+
+
+def _parameter_values(ds: xr.Dataset, along: str) -> np.ndarray:
+    if along == "projectile":
+        return np.asarray(ds["lc_over_l"].values, float)
+    return np.asarray(ds[along].values, float)
+
+
+def _fmt_coord(v: Any) -> str:
+    return f"{v:g}" if isinstance(v, float | np.floating) else str(v)
+
+
+_COLUMNS = [
+    "quantity",
+    "paper_value",
+    "pencore_value",
+    "difference",
+    "units",
+    "note",
+    "kind",
+    "source",
+]
+
+
+def _row(
+    quantity: str, paper: Any, pencore: Any, units: str, note: str, kind: str, source: str
+) -> dict[str, Any]:
+    if kind == "value" and _is_num(paper) and _is_num(pencore):
+        diff: Any = float(pencore) - float(paper)
+    elif kind == "verdict":
+        diff = "agrees" if str(paper) == str(pencore) else "differs"
+    else:
+        diff = ""
+    return dict(
+        quantity=quantity,
+        paper_value=_round(paper),
+        pencore_value=_round(pencore),
+        difference=_round(diff),
+        units=units,
+        note=note,
+        kind=kind,
+        source=source,
+    )
+
+
+def _round(x: Any, digits: int = 6) -> Any:
+    """Floats to ``digits`` significant digits (the table is for reading)."""
+    if isinstance(x, float | np.floating) and math.isfinite(float(x)):
+        return float(f"{float(x):.{digits}g}")
+    return x
+
+
+def _is_num(x: Any) -> bool:
+    return isinstance(x, int | float | np.integer | np.floating) and math.isfinite(float(x))
+
+
+def _search_value(ds: xr.Dataset, name: str, sel: Mapping[str, Any]) -> tuple[Any, str]:
+    """(value or bound string, note) of one search cell."""
+    cell = ds.sel(sel)
+    status = str(cell["status"].values)
+    lo, hi = float(cell[f"{name}_lo"]), float(cell[f"{name}_hi"])
+    if status in ("ok", "non_monotone"):
+        note = f"bracket [{lo:.6g}, {hi:.6g}]"
+        if status == "non_monotone":
+            note += "; verdict NOT monotone (lowest threshold found)"
+        return float(cell[name]), note
+    if status == "above_range":
+        return f"> {lo:g}", "above_range: no event up to the top of the search range"
+    if status == "below_range":
+        return f"<= {hi:g}", "below_range: event already at the bottom of the search range"
+    return float(cell[name]), f"status {status}: bracket [{lo:.6g}, {hi:.6g}]"
+
+
+def _pencore_rel(pencore: Any, paper: float) -> str:
+    if _is_num(pencore) and paper:
+        return f"{100.0 * (float(pencore) - paper) / paper:+.1f} %"
+    return ""
+
+
+def _nose_rows(ds: xr.Dataset) -> list[dict[str, Any]]:
+    """Verdicts on the paper's Fig. 12 statements about the final nose direction."""
+    src = "results/fig12/vcr_yaw.nc: nose_direction"
+    nd = ds["nose_direction"]
+    known = nd != ""
+    minus = (nd == "-x") & known
+    rows = []
+    neg = ds["yaw"] < 0
+    n_neg = int((known & neg).sum())
+    n_neg_plus = int(((nd == "+x") & neg).sum())
+    rows.append(
+        _row(
+            "Fig. 12: nose points +x at Vcr for every negative yaw",
+            "yes",
+            "yes" if n_neg and n_neg_plus == n_neg else "no",
+            "",
+            f"{n_neg_plus} of {n_neg} negative-yaw cases end +x",
+            "verdict",
+            src,
+        )
+    )
+
+    def count(**sel: Any) -> int:
+        return int(minus.sel(sel).sum())
+
+    obl = [float(o) for o in ds["obliquity"].values]
+    if len(obl) >= 2:
+        lo_o, hi_o = min(obl), max(obl)
+        a, b = count(obliquity=lo_o), count(obliquity=hi_o)
+        rows.append(
+            _row(
+                f"Fig. 12: flip to -x more likely at {lo_o:g} than {hi_o:g} deg",
+                "yes",
+                "yes" if a > b else "no",
+                "",
+                f"-x cases: {a} at {lo_o:g} deg, {b} at {hi_o:g} deg",
+                "verdict",
+                src,
+            )
+        )
+    projs = list(ds["projectile"].values)
+    if len(projs) >= 2:
+        lcl = ds["lc_over_l"].values
+        p_lo, p_hi = projs[int(np.argmin(lcl))], projs[int(np.argmax(lcl))]
+        a, b = count(projectile=p_hi), count(projectile=p_lo)
+        rows.append(
+            _row(
+                f"Fig. 12: flip to -x more likely for larger Lc/L ({p_hi} than {p_lo})",
+                "yes",
+                "yes" if a > b else "no",
+                "",
+                f"-x cases: {a} for {p_hi}, {b} for {p_lo}",
+                "verdict",
+                src,
+            )
+        )
+    n_minus = int(minus.sum())
+    n_big = int((minus & (ds["yaw"] > 1.0)).sum())
+    rows.append(
+        _row(
+            "Fig. 12: the flip to -x happens only for yaw > 1 deg",
+            "yes",
+            "yes" if n_minus and n_big == n_minus else "no",
+            "",
+            f"{n_minus} -x case(s), {n_big} of them at yaw > 1 deg",
+            "verdict",
+            src,
+        )
+    )
+    return rows
+
+
+def _close(values: Any, v: float) -> bool:
+    """Whether any of ``values`` is ``v`` (to numpy's ``isclose``)."""
+    return bool(np.any(np.isclose(np.asarray(values, float), v)))
+
+
+# ----------------------------------------------------------------------------- spin (Figs 16-18)
+
+
+def _start_heights(d: Mapping[str, Any], w: float) -> list[tuple[float, float, int]]:
+    """(tip start height m, alpha deg, reversed 0/1) of the start-height study at spin w."""
+    sh = d.get("start_height")
+    if sh is None or not _close(sh["omega"], w):
+        return []
+    cells = [sh.sel(omega=w, start_height=hh) for hh in sh["start_height"].values]
+    return [(float(x["start_height"]), float(x["alpha"]), int(x["reversed"])) for x in cells]
+
+
+def _fig16_alpha(c: Claim, d: Mapping[str, Any]) -> Rows:
+    w, a = float(at(c["at"])[0]["omega"]), float(c["value"])
+    rows = []
+    fig16 = d.get("fig16")
+    if fig16 is not None and _close(fig16["omega"], w):
+        h = float(fig16.attrs.get("start_height_m", 0.0))
+        pen = float(fig16["final_deviation"].sel(omega=w))
+        rows.append(
+            _row(
+                f"Fig. 16: deviation alpha of #2, 1000 m/s, omega = {w:g} rad/s",
+                a,
+                pen,
+                c["units"],
+                f"{_pencore_rel(pen, a)}; tip starting {h:g} m above the surface",
+                "value",
+                "results/fig16/trajectories.nc",
+            )
+        )
+    for hh, pen, rev in _start_heights(d, w):
+        rows.append(
+            _row(
+                f"Start-height sensitivity: alpha at omega = {w:g} rad/s, tip {hh:g} m above",
+                a,
+                pen,
+                c["units"],
+                f"{_pencore_rel(pen, a)}; reversed = {rev}",
+                "value",
+                "results/fig16/start_height.nc",
+            )
+        )
+    return rows
+
+
+def _fig16_reverses(c: Claim, d: Mapping[str, Any]) -> Rows:
+    w = float(at(c["at"])[0]["omega"])
+    rows = []
+    fig16 = d.get("fig16")
+    if fig16 is not None and _close(fig16["omega"], w):
+        h = float(fig16.attrs.get("start_height_m", 0.0))
+        rev = int(fig16["reversed"].sel(omega=w))
+        rows.append(
+            _row(
+                f"Fig. 16: turns back at omega = {w:g} rad/s (#2, 1000 m/s)",
+                c["value"],
+                "yes" if rev else "no",
+                "",
+                f"tip starting {h:g} m above the surface",
+                "verdict",
+                "results/fig16/trajectories.nc",
+            )
+        )
+    for hh, pen, rev in _start_heights(d, w):
+        rows.append(
+            _row(
+                f"Start-height sensitivity: turns back at omega = {w:g} rad/s, tip {hh:g} m above",
+                c["value"],
+                "yes" if rev else "no",
+                "",
+                f"alpha = {pen:.3g} deg",
+                "verdict",
+                "results/fig16/start_height.nc",
+            )
+        )
+    return rows
+
+
+def _omega_c_p2(c: Claim, d: Mapping[str, Any]) -> Rows:
+    fig18 = d.get("fig18")
+    if (
+        fig18 is None
+        or "p2" not in fig18["projectile"].values
+        or not _close(fig18["velocity"], 1000.0)
+    ):
+        return []
+    lo_p, hi_p = float(c["value"]), float(c["value_hi"])
+    val, note = _search_value(fig18, "omega_c", {"projectile": "p2", "velocity": 1000.0})
+    return [
+        _row(
+            "omega_c of #2 at 1000 m/s (Figs 16-17)",
+            0.5 * (lo_p + hi_p),
+            val,
+            c["units"],
+            f"paper: {lo_p:g} does not turn back, {hi_p:g} does (derived: midpoint of "
+            f"({lo_p:g}, {hi_p:g}]); pencore {note}",
+            "value",
+            "results/fig18/omega_c.nc",
+        )
+    ]
+
+
+# ----------------------------------------------------------------------------- claims
 
 
 def _trend_row(quantity: str, claim: Claim, lines: list, source: str) -> dict[str, Any]:
@@ -402,6 +676,11 @@ def paper_comparison(
         The study datasets; ``None`` skips the claims they compute.
     table2 : pandas.DataFrame, optional
         ``results/validation/table2.csv``. ``table3``: include the Table 3 rows.
+    yaw_convention : str
+        The configured yaw convention (marked in the Fig. 13 rows).
+    vci_threshold : float, optional
+        The deviation threshold (deg) the Vci rows lead with; default the
+        ``primary_threshold_deg`` of ``fig15``, else 5 deg.
 
     Returns
     -------
@@ -413,6 +692,8 @@ def paper_comparison(
         ``note``); brackets are compared at their midpoint, with the bracket in ``note``.
     """
     df = load_claims() if claims is None else claims
+    if vci_threshold is None and fig15 is not None and "primary_threshold_deg" in fig15.attrs:
+        vci_threshold = float(fig15.attrs["primary_threshold_deg"])
     data = dict(
         fig7=fig7, fig8=fig8, fig9=fig9, fig11=fig11, fig12=fig12, fig13=fig13, fig15=fig15,
         fig16=fig16, start_height=start_height, fig18=fig18, table2=table2, table3=table3,

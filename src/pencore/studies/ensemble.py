@@ -45,7 +45,7 @@ from scipy import stats
 from pencore.errors import InputError
 from pencore.run.impact import prepare, simulate
 from pencore.studies.common import t_half_width
-from pencore.studies.ensemble_cases import VARIABLES, check_case
+from pencore.workflowconfig.ensemble_cases import VARIABLES, check_case
 
 __all__ = [
     "sample_conditions",

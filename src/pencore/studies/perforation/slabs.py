@@ -1,0 +1,180 @@
+"""Beyond the paper: perforation of finite slabs.
+
+* :func:`ballistic_limit_map`: the ballistic limit v_bl (:func:`pencore.search.critical.
+  ballistic_limit`) of one projectile against slab thickness and obliquity;
+* :func:`residual_velocity_curve`: residual speed against impact speed for one slab,
+  with the Recht-Ipson curve ``v_r = a (v^p - v_bl^p)^(1/p)`` fitted to it
+  (:func:`pencore.search.perforation.fit_recht_ipson`, ``v_bl`` from the search).
+
+These are model predictions (no measurement is compared here): the DAFL model with the
+paper's concrete law, no crater or free-surface reduction unless the study's ``crater_depth``
+/ ``free_surface_depth`` turn them on.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from pencore.inputs.library import get_target
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.inputs.target import Layer, Target
+from pencore.run.impact import prepare, simulate
+from pencore.search.perforation import ballistic_limit, fit_recht_ipson, recht_ipson
+from pencore.search.threshold import VELOCITY_TOL
+from pencore.studies.common import STRING_DTYPE, axis_values, search_variables, var_attrs
+
+__all__ = ["slab_target", "ballistic_limit_map", "residual_velocity_curve"]
+
+
+def slab_target(
+    medium: str,
+    thickness: float,
+    crater_depth: float = 0.0,
+    free_surface_depth: float = 0.0,
+    plastic_zone_ratio: float = 0.0,
+) -> Target:
+    """A single slab of the named medium, ``thickness`` m, with the near-surface options
+    (calibers, and the finite-sphere ratio ``c/a``; 0 = off)."""
+    t = get_target(medium)
+    slab = Target(f"{medium} slab {thickness:g} m", (Layer(t.medium, float(thickness)),))
+    if crater_depth or free_surface_depth or plastic_zone_ratio:
+        slab = slab.with_windows(crater_depth, free_surface_depth, plastic_zone_ratio)
+    return slab
+
+
+def ballistic_limit_map(
+    projectile: str,
+    medium: str,
+    thicknesses: Sequence[float],
+    obliquities: Sequence[float],
+    *,
+    lo: float = 50.0,
+    hi: float = 3000.0,
+    tol: float = VELOCITY_TOL,
+    scan: int | None = 5,
+    crater_depth: float = 0.0,
+    free_surface_depth: float = 0.0,
+    plastic_zone_ratio: float = 0.0,
+    numerics: Numerics | Mapping[str, Any] | None = None,
+) -> xr.Dataset:
+    """Ballistic limit (m/s) on ``(thickness m, obliquity deg)``: one search per cell."""
+    th = axis_values(thicknesses, "thicknesses")
+    obl = axis_values(obliquities, "obliquities")
+    num = resolve_numerics(numerics)
+    res = np.empty((th.size, obl.size), dtype=object)
+    for i, h in enumerate(th):
+        t = slab_target(medium, h, crater_depth, free_surface_depth, plastic_zone_ratio)
+        for j, o in enumerate(obl):
+            res[i, j] = ballistic_limit(
+                projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan, numerics=num
+            )
+    dims = ("thickness", "obliquity")
+    return xr.Dataset(
+        search_variables(
+            res, "v_bl", "m s-1", "ballistic limit (lowest speed that perforates)", dims
+        ),
+        coords={
+            "thickness": ("thickness", th, var_attrs("m", "slab thickness")),
+            "obliquity": ("obliquity", obl, var_attrs("degree", "obliquity of the axis")),
+        },
+        attrs={
+            "title": "pencore ballistic limit against slab thickness and obliquity",
+            "projectile": projectile,
+            "medium": medium,
+            "crater_depth_calibers": float(crater_depth),
+            "free_surface_depth_calibers": float(free_surface_depth),
+            **({"plastic_zone_ratio": float(plastic_zone_ratio)} if plastic_zone_ratio else {}),
+            "search_lo_m_s": float(lo),
+            "search_hi_m_s": float(hi),
+            "search_tol_m_s": float(tol),
+        },
+    )
+
+
+def residual_velocity_curve(
+    projectile: str,
+    medium: str,
+    thickness: float,
+    velocities: Sequence[float],
+    *,
+    obliquity: float = 0.0,
+    lo: float = 50.0,
+    hi: float = 3000.0,
+    tol: float = 1.0,
+    crater_depth: float = 0.0,
+    free_surface_depth: float = 0.0,
+    numerics: Numerics | Mapping[str, Any] | None = None,
+) -> xr.Dataset:
+    """Residual speed (m/s) against impact speed for one slab, with the ballistic limit
+    (searched to ``tol``) and the Recht-Ipson fit.
+
+    The fit is made twice: with ``v_bl`` fixed at the searched value (``a``, ``p`` free),
+    and with the rigid-body values ``a = 1``, ``p = 2`` for comparison (the RMS residual
+    of each is recorded).
+    """
+    v = axis_values(velocities, "velocities")
+    num = resolve_numerics(numerics)
+    t = slab_target(medium, thickness, crater_depth, free_surface_depth)
+    pr = prepare(projectile, t, num)
+    vr = np.zeros(v.size)
+    pitch = np.full(v.size, np.nan)
+    outcome = np.empty(v.size, dtype=STRING_DTYPE)
+    for k, vi in enumerate(v):
+        ds = simulate(pr.projectile, pr.target, float(vi), obliquity, prepared=pr)
+        outcome[k] = ds.attrs["outcome"]
+        if outcome[k] == "perforated":
+            vr[k] = ds.attrs["residual_velocity"]
+            pitch[k] = ds.attrs["exit_pitch_deg"]
+    bl = ballistic_limit(projectile, t, obliquity, lo=lo, hi=hi, tol=tol, numerics=num)
+    fit = {"a": math.nan, "p": math.nan, "v_bl": bl.value, "rms": math.nan}
+    rms_rigid = math.nan
+    if bl.converged and (vr > 0).sum() >= 2:
+        fit = fit_recht_ipson(v, vr, v_bl=bl.value)
+        rigid = recht_ipson(v[vr > 0], bl.value)
+        rms_rigid = float(np.sqrt(np.mean((rigid - vr[vr > 0]) ** 2)))
+    curve = recht_ipson(v, fit["v_bl"], fit["a"], fit["p"])
+    return xr.Dataset(
+        {
+            "residual_velocity": (
+                "velocity",
+                vr,
+                var_attrs(
+                    "m s-1", "centre-of-mass speed when clear of the slab (0: no perforation)"
+                ),
+            ),
+            "recht_ipson": (
+                "velocity",
+                curve,
+                var_attrs("m s-1", "Recht-Ipson curve a (v^p - v_bl^p)^(1/p) fitted to the runs"),
+            ),
+            "exit_pitch": (
+                "velocity",
+                pitch,
+                var_attrs("degree", "axis angle from the normal at exit (NaN: no perforation)"),
+            ),
+            "outcome": ("velocity", outcome, {"units": "1", "long_name": "outcome of the run"}),
+        },
+        coords={"velocity": ("velocity", v, var_attrs("m s-1", "impact speed"))},
+        attrs={
+            "title": "pencore residual velocity against impact velocity",
+            "projectile": projectile,
+            "medium": medium,
+            "thickness_m": float(thickness),
+            "obliquity_deg": float(obliquity),
+            "crater_depth_calibers": float(crater_depth),
+            "free_surface_depth_calibers": float(free_surface_depth),
+            "v_bl_m_s": float(bl.value),
+            "v_bl_lo_m_s": float(bl.lo),
+            "v_bl_hi_m_s": float(bl.hi),
+            "v_bl_status": bl.status,
+            "recht_ipson_a": float(fit["a"]),
+            "recht_ipson_p": float(fit["p"]),
+            "recht_ipson_rms_m_s": float(fit["rms"]),
+            "recht_ipson_rigid_rms_m_s": rms_rigid,
+        },
+    )
