@@ -289,6 +289,28 @@ def dataset_attrs_table() -> str:
     return "\n".join(lines)
 
 
+def duration(seconds: float) -> str:
+    """A duration as a reader says it: ``46 s``, ``2.6 min``, ``1.5 h``."""
+    if seconds < 100:
+        return f"{seconds:.2g} s" if seconds < 10 else f"{seconds:.0f} s"
+    if seconds < 6000:
+        return f"{seconds / 60:.2g} min"
+    return f"{seconds / 3600:.2g} h"
+
+
+def timing_sentence() -> str:
+    """The README's line on how long its first command takes, from the benchmarks."""
+    speed = pd.read_csv(BENCH / "speed.csv").set_index("figure")
+    compile_ = pd.read_csv(BENCH / "compile.csv").set_index("case")
+    repro = speed.loc["reproduction_wall"]
+    return (
+        f"On {int(repro['cores'])} cores ({repro['cpu_model']}) the install compiles the kernels "
+        f"in about {duration(compile_.loc['warmup', 'cpu_s'])} of CPU and the reproduction takes "
+        f"about {duration(repro['value'])} (`benchmarks/results/compile.csv`, `speed.csv`; "
+        "downloading the dependencies comes on top)."
+    )
+
+
 def numbers() -> dict[str, str]:
     """Single numbers for the prose (MyST substitutions), each read from its file."""
     table = comparison()
@@ -321,6 +343,8 @@ def numbers() -> dict[str, str]:
     out["reproduction_wall_s"] = _fmt(speed["reproduction_wall"], 2)
     compile_ = pd.read_csv(BENCH / "compile.csv").set_index("case")["cpu_s"]
     out["warmup_s"] = _fmt(compile_["warmup"], 2)
+    out["reproduction_wall"] = duration(speed["reproduction_wall"])
+    out["warmup_cpu"] = duration(compile_["warmup"])
     out["comparison_counts"] = comparison_counts()
     from pencore.inputs import gate
     from pencore.inputs.numerics import DEFAULT_MAX_WALL
@@ -588,6 +612,7 @@ PAGES: dict[str, Callable[[], str]] = {
 README_BLOCKS: dict[str, Callable[[], str]] = {
     "headline": headline_table,
     "validation": validation_headline,
+    "timing": timing_sentence,
 }
 
 _BLOCK = re.compile(
