@@ -587,7 +587,59 @@ def config_reference_page() -> str:
 
 
 #: every generated page: file name in docs/_generated -> the function that writes it
+def _cff_names(authors: list[dict[str, str]]) -> list[str]:
+    return [
+        a.get("name") or f"{a.get('family-names', '')}, {a.get('given-names', '')}".strip(", ")
+        for a in authors
+    ]
+
+
+def cite_page(cff: Path = REPO / "CITATION.cff") -> str:
+    """The "How to cite" page from ``CITATION.cff``: its message, the software's and each
+    reference's citation, and BibTeX entries for both."""
+    import yaml
+
+    c = yaml.safe_load(cff.read_text())
+    url = c.get("repository-code") or c.get("url")
+    authors = " and ".join(_cff_names(c["authors"]))
+    lines = [
+        " ".join(c["message"].split()),
+        "",
+        f"- **The software**: {authors}, *{c['title']}*, version {c['version']}"
+        + (f", {url}" if url else "")
+        + f" (licence {c['license']}).",
+    ]
+    bib = [
+        "@software{pencore,",
+        f"  author = {{{{{authors}}}}},",
+        f"  title = {{{c['title'].replace('&', chr(92) + '&')}}},",
+        f"  version = {{{c['version']}}},",
+        *([f"  url = {{{url}}},"] if url else []),
+        "}",
+    ]
+    for r in c.get("references", []):
+        names = _cff_names(r["authors"])
+        lines.append(
+            f"- **The paper**: {', '.join(names)}, *{r['title']}*, {r['journal']} "
+            f"{r['volume']} ({r['year']}) {r['start']}-{r['end']}."
+        )
+        key = f"{r['authors'][0]['family-names'].lower().replace('-', '')}{r['year']}"
+        bib += [
+            f"@article{{{key},",
+            f"  author = {{{' and '.join(names)}}},",
+            f"  title = {{{r['title']}}},",
+            f"  journal = {{{r['journal']}}},",
+            f"  volume = {{{r['volume']}}},",
+            f"  pages = {{{r['start']}--{r['end']}}},",
+            f"  year = {{{r['year']}}},",
+            "}",
+        ]
+    lines += ["", "BibTeX:", "", "```bibtex", *bib, "```"]
+    return "\n".join(lines)
+
+
 PAGES: dict[str, Callable[[], str]] = {
+    "cite.md": cite_page,
     "headline.md": headline_table,
     "comparison.md": comparison_table,
     "limits.md": limits_table,
