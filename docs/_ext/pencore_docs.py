@@ -248,8 +248,8 @@ def attribution_table() -> str:
     )["paper_value"]
     header = {
         "setting": "setting",
-        "alpha_5": f"alpha 5 rad/s (paper {_fmt(alpha[5.0])} deg)",
-        "alpha_20": f"alpha 20 rad/s (paper {_fmt(alpha[20.0])} deg)",
+        "alpha_5": f"phi #2 5 rad/s (paper {_fmt(alpha[5.0])} deg)",
+        "alpha_20": f"phi #2 20 rad/s (paper {_fmt(alpha[20.0])} deg)",
         "back_25": "turns back at 25 rad/s (paper: yes)",
         "vcr": f"Vcr (paper {_fmt(lo)}-{_fmt(hi)} m/s)",
         "depth_280": f"depth 280 m/s (paper {depth_280} m)",
