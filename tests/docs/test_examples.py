@@ -183,3 +183,16 @@ def test_yaml_block_passes_its_gate(block, tmp_path):
         schema = yaml.safe_load((REPO / "workflow/schemas/config.schema.yaml").read_text())
         assert strict_schema_error(config, schema) is None
         check_config(config, root=REPO)
+
+
+def test_durations_read_as_a_reader_says_them(gen):
+    """Times in the prose are said in s, min or h, never in exponent notation."""
+    assert gen.duration(46.7) == "47 s"
+    assert gen.duration(157.2) == "2.6 min"
+    assert gen.duration(7200.0) == "2 h"
+    numbers = gen.numbers()
+    for page in PAGES:
+        used = re.findall(r"\{\{\s*(\w+)\s*\}\}", page.read_text())
+        shown = {k: numbers[k] for k in used}
+        assert not [k for k, v in shown.items() if re.search(r"\de[+-]\d", v)], page.name
+    assert "min" in gen.timing_sentence()
