@@ -13,11 +13,14 @@ if [[ -z ${1:-} ]]; then
         || { cat "$work/build.log"; exit 1; }
 fi
 wheel=$(ls "$dist"/pencore-*.whl)
+start=$SECONDS
 python -m venv "$work/venv"
 "$work/venv/bin/python" -m pip install --quiet --disable-pip-version-check "$wheel"
+echo "wheel: installed with its dependencies in $((SECONDS - start)) s"
 mkdir "$work/empty"
 cd "$work/empty"
 # nothing of the repository on the path: the installed package, its data and its kernels
 env -u PYTHONPATH PATH="$work/venv/bin:$PATH" python -c \
     "import pencore, sys; print('wheel:', pencore.__file__); sys.exit('site-packages' not in pencore.__file__)"
 env -u PYTHONPATH PATH="$work/venv/bin:$PATH" python "$repo/.ci/wheel_examples.py" "$repo/README.md"
+echo "wheel: installed and checked in $((SECONDS - start)) s"
