@@ -25,7 +25,8 @@ def main(dist: Path) -> int:
         return 1
     src = REPO / "src"
     wanted = {p.relative_to(src).as_posix() for p in (src / "pencore").rglob("*.py")}
-    wanted |= {p.relative_to(src).as_posix() for p in (src / "pencore").rglob("data/*.yaml")}
+    for pattern in ("data/*.yaml", "data/*.csv"):
+        wanted |= {p.relative_to(src).as_posix() for p in (src / "pencore").rglob(pattern)}
     in_wheel = set(zipfile.ZipFile(wheels[0]).namelist())
     missing = sorted(wanted - in_wheel)
     compiled = "pencore/kernels/compiled/"

@@ -248,8 +248,8 @@ def attribution_table() -> str:
     )["paper_value"]
     header = {
         "setting": "setting",
-        "alpha_5": f"alpha 5 rad/s (paper {_fmt(alpha[5.0])} deg)",
-        "alpha_20": f"alpha 20 rad/s (paper {_fmt(alpha[20.0])} deg)",
+        "alpha_5": f"phi #2 5 rad/s (paper {_fmt(alpha[5.0])} deg)",
+        "alpha_20": f"phi #2 20 rad/s (paper {_fmt(alpha[20.0])} deg)",
         "back_25": "turns back at 25 rad/s (paper: yes)",
         "vcr": f"Vcr (paper {_fmt(lo)}-{_fmt(hi)} m/s)",
         "depth_280": f"depth 280 m/s (paper {depth_280} m)",
@@ -289,6 +289,28 @@ def dataset_attrs_table() -> str:
     return "\n".join(lines)
 
 
+def duration(seconds: float) -> str:
+    """A duration as a reader says it: ``46 s``, ``2.6 min``, ``1.5 h``."""
+    if seconds < 100:
+        return f"{seconds:.2g} s" if seconds < 10 else f"{seconds:.0f} s"
+    if seconds < 6000:
+        return f"{seconds / 60:.2g} min"
+    return f"{seconds / 3600:.2g} h"
+
+
+def timing_sentence() -> str:
+    """The README's line on how long its first command takes, from the benchmarks."""
+    speed = pd.read_csv(BENCH / "speed.csv").set_index("figure")
+    compile_ = pd.read_csv(BENCH / "compile.csv").set_index("case")
+    repro = speed.loc["reproduction_wall"]
+    return (
+        f"On {int(repro['cores'])} cores ({repro['cpu_model']}) the install compiles the kernels "
+        f"in about {duration(compile_.loc['warmup', 'cpu_s'])} of CPU and the reproduction takes "
+        f"about {duration(repro['value'])} (`benchmarks/results/compile.csv`, `speed.csv`; "
+        "downloading the dependencies comes on top)."
+    )
+
+
 def numbers() -> dict[str, str]:
     """Single numbers for the prose (MyST substitutions), each read from its file."""
     table = comparison()
@@ -321,6 +343,8 @@ def numbers() -> dict[str, str]:
     out["reproduction_wall_s"] = _fmt(speed["reproduction_wall"], 2)
     compile_ = pd.read_csv(BENCH / "compile.csv").set_index("case")["cpu_s"]
     out["warmup_s"] = _fmt(compile_["warmup"], 2)
+    out["reproduction_wall"] = duration(speed["reproduction_wall"])
+    out["warmup_cpu"] = duration(compile_["warmup"])
     out["comparison_counts"] = comparison_counts()
     from pencore.inputs import gate
     from pencore.inputs.numerics import DEFAULT_MAX_WALL
@@ -563,7 +587,59 @@ def config_reference_page() -> str:
 
 
 #: every generated page: file name in docs/_generated -> the function that writes it
+def _cff_names(authors: list[dict[str, str]]) -> list[str]:
+    return [
+        a.get("name") or f"{a.get('family-names', '')}, {a.get('given-names', '')}".strip(", ")
+        for a in authors
+    ]
+
+
+def cite_page(cff: Path = REPO / "CITATION.cff") -> str:
+    """The "How to cite" page from ``CITATION.cff``: its message, the software's and each
+    reference's citation, and BibTeX entries for both."""
+    import yaml
+
+    c = yaml.safe_load(cff.read_text())
+    url = c.get("repository-code") or c.get("url")
+    authors = " and ".join(_cff_names(c["authors"]))
+    lines = [
+        " ".join(c["message"].split()),
+        "",
+        f"- **The software**: {authors}, *{c['title']}*, version {c['version']}"
+        + (f", {url}" if url else "")
+        + f" (licence {c['license']}).",
+    ]
+    bib = [
+        "@software{pencore,",
+        f"  author = {{{{{authors}}}}},",
+        f"  title = {{{c['title'].replace('&', chr(92) + '&')}}},",
+        f"  version = {{{c['version']}}},",
+        *([f"  url = {{{url}}},"] if url else []),
+        "}",
+    ]
+    for r in c.get("references", []):
+        names = _cff_names(r["authors"])
+        lines.append(
+            f"- **The paper**: {', '.join(names)}, *{r['title']}*, {r['journal']} "
+            f"{r['volume']} ({r['year']}) {r['start']}-{r['end']}."
+        )
+        key = f"{r['authors'][0]['family-names'].lower().replace('-', '')}{r['year']}"
+        bib += [
+            f"@article{{{key},",
+            f"  author = {{{' and '.join(names)}}},",
+            f"  title = {{{r['title']}}},",
+            f"  journal = {{{r['journal']}}},",
+            f"  volume = {{{r['volume']}}},",
+            f"  pages = {{{r['start']}--{r['end']}}},",
+            f"  year = {{{r['year']}}},",
+            "}",
+        ]
+    lines += ["", "BibTeX:", "", "```bibtex", *bib, "```"]
+    return "\n".join(lines)
+
+
 PAGES: dict[str, Callable[[], str]] = {
+    "cite.md": cite_page,
     "headline.md": headline_table,
     "comparison.md": comparison_table,
     "limits.md": limits_table,
@@ -588,6 +664,7 @@ PAGES: dict[str, Callable[[], str]] = {
 README_BLOCKS: dict[str, Callable[[], str]] = {
     "headline": headline_table,
     "validation": validation_headline,
+    "timing": timing_sentence,
 }
 
 _BLOCK = re.compile(

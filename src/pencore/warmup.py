@@ -46,16 +46,22 @@ def warmup(verbose: bool = True) -> float:
     """Run one short oblique trajectory per kernel variant; returns the seconds taken.
 
     The runs are p2 into soil at 30 deg and 300 m/s (a few hundred steps each): every
-    kernel is compiled with the argument types the studies use, and cached.
+    kernel is compiled with the argument types the studies use, and cached. With
+    ``verbose``, each variant is announced before it runs (``kernel i of n``), and its
+    time said after it: the first one, which compiles the shared kernels, takes most of
+    a cold warm-up.
     """
     start = time.perf_counter()
-    from pencore.run.impact import simulate
+    from pencore.run import impact
 
-    for label, kw in VARIANTS:
+    n = len(VARIANTS)
+    for i, (label, kw) in enumerate(VARIANTS, 1):
+        if verbose:  # said before the variant: a compile is the long part
+            print(f"pencore warmup: kernel {i} of {n} ({label}) ...", flush=True)
         t = time.perf_counter()
-        simulate("p2", "soil", 300.0, obliquity=30.0, **kw)
+        impact.simulate("p2", "soil", 300.0, obliquity=30.0, **kw)
         if verbose:
-            print(f"pencore warmup: {label:28s} {time.perf_counter() - t:6.2f} s", flush=True)
+            print(f"pencore warmup: kernel {i} of {n} ready in {time.perf_counter() - t:.1f} s")
     return time.perf_counter() - start
 
 

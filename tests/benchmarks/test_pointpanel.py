@@ -180,7 +180,7 @@ def test_docs_quote_the_results_file(pp):
     for text in (
         f"Vcr at 45 deg within {g('vcr', 'difference')} m/s "
         f"(tolerance {g('vcr', 'tolerance')} m/s)",
-        f"alpha at 20 rad/s within {g('alpha_20', 'difference')} deg "
+        f"phi of #2 at 20 rad/s within {g('alpha_20', 'difference')} deg "
         f"(tolerance {g('alpha_20', 'tolerance')} deg)",
         f"tolerance ({g('alpha_5', 'tolerance')}, {g('phi_280', 'tolerance')} and "
         f"{g('phi_1000', 'tolerance')} deg)",

@@ -1,17 +1,21 @@
-"""The paper's claims as data (config/paper_claims.csv): the file is checked, every claim
-has a handler, and the comparison table's paper values are the file's."""
+"""The paper's claims as data (pencore/paper/data/paper_claims.csv, linked from
+config/): the file is checked, every claim has a handler, and the comparison table's paper
+values are the file's."""
 
 from __future__ import annotations
+
+from pathlib import Path
 
 import pandas as pd
 import pytest
 
 from pencore.errors import InputError
 from pencore.io.netcdf import read_netcdf
-from pencore.paper.claims import CLAIMS_FILE, at, disputed_values, load_claims, paper_values
+from pencore.paper.claims import at, disputed_values, load_claims, paper_values
 from pencore.studies.comparison import HANDLERS, paper_comparison
 
-ARCHIVE = CLAIMS_FILE.parents[1] / "results" / "archive"
+REPO = Path(__file__).resolve().parents[2]
+ARCHIVE = REPO / "results" / "archive"
 
 
 def test_every_claim_has_a_handler_and_a_place_in_the_paper():

@@ -1,5 +1,7 @@
 """The paper's claims as data: every number and trend of Li & Flores-Johnson (2011) that
-pencore computes, read from ``config/paper_claims.csv``.
+pencore computes, read from ``paper_claims.csv``, shipped with the package
+(``pencore/paper/data/``; the repository's ``config/paper_claims.csv`` is a link to it, so
+the workflow and an installed wheel read the one file).
 
 One row per claim: ``id, kind, value, value_hi, units, at, where, provenance, study,
 computed_by, note`` (the file's header explains each). The paper comparison table
@@ -22,6 +24,7 @@ import pandas as pd
 from pencore.errors import InputError
 
 __all__ = [
+    "DATA_DIR",
     "CLAIMS_FILE",
     "TABLE2_FILE",
     "KINDS",
@@ -32,12 +35,15 @@ __all__ = [
     "disputed_values",
 ]
 
-#: Default claims file: ``config/paper_claims.csv`` of the repository (environment
-#: variable ``PENCORE_PAPER_CLAIMS`` overrides it).
-CLAIMS_FILE = Path(__file__).resolve().parents[3] / "config" / "paper_claims.csv"
-#: The paper's Table 2 (``config/table2.csv``): the soil tests with the paper's predicted
-#: depths.
-TABLE2_FILE = Path(__file__).resolve().parents[3] / "config" / "table2.csv"
+#: The package's data: the paper's claims and tables (``config/`` of the repository links
+#: its files here).
+DATA_DIR = Path(__file__).resolve().parent / "data"
+#: Default claims file, shipped with the package (environment variable
+#: ``PENCORE_PAPER_CLAIMS`` overrides it).
+CLAIMS_FILE = DATA_DIR / "paper_claims.csv"
+#: The paper's Table 2 (shipped with the package; ``config/table2.csv`` of the repository):
+#: the soil tests with the paper's predicted depths.
+TABLE2_FILE = DATA_DIR / "table2.csv"
 KINDS = ("value", "bracket", "verdict", "trend")
 COLUMNS = (
     "id",

@@ -13,14 +13,14 @@ from pencore.plotting.style import _c, new_figure, styled
 __all__ = ["plot_attribution"]
 
 _PANELS = [
-    ("alpha_5", r"$\alpha$, #2, 5 rad/s (deg)", True),
-    ("alpha_20", r"$\alpha$, #2, 20 rad/s (deg)", True),
+    ("alpha_5", r"$\varphi$, #2, 5 rad/s (deg)", True),
+    ("alpha_20", r"$\varphi$, #2, 20 rad/s (deg)", True),
     ("turn_back_25", "#2 turns back at 25 rad/s", False),
     ("vcr", r"$V_{cr}$, #2, 45° (m/s)", False),
     ("depth_280", "Table 2 test 2 depth (m)", False),
     ("phi_p4_280", r"$\varphi$, #4, 280 m/s (deg)", True),
     ("phi_p4_1000", r"$\varphi$, #4, 1000 m/s (deg)", True),
-    ("fig12_falls", r"Fig. 12: $V_{cr}$ (#2, 30°) falls, yaw 0→2°", False),
+    ("fig12_falls", "Fig. 12: $V_{cr}$ (#2, 30°)\nfalls, yaw 0→2°", False),
 ]
 
 

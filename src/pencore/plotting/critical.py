@@ -31,10 +31,11 @@ def _search_errorbars(
     marker: str,
     label: str,
     jitter: float = 0.0,
-) -> None:
+) -> set[str]:
     """Converged values with their brackets; out-of-range searches as open triangles at
     the edge of the search range, shifted by ``jitter`` along x so that several
-    projectiles stay visible."""
+    projectiles stay visible. Returns the search outcomes drawn besides the converged
+    values (keys of :data:`_SEARCH_MARKS`), for :func:`_legend_search`."""
     status = sub["status"].values.astype(str)
     val = sub[name].values
     lo, hi = sub[f"{name}_lo"].values, sub[f"{name}_hi"].values
@@ -51,8 +52,9 @@ def _search_errorbars(
             capsize=2,
             label=label,
         )
-    else:
-        ax.plot([], [], marker=marker, color=colour, label=label)
+    else:  # no value converged: the legend keys the colour alone (its markers are open)
+        ax.plot([], [], color=colour, label=label)
+    drawn = {k for k in _SEARCH_MARKS if (status == k).any()}
     nm = status == "non_monotone"
     if nm.any():
         ax.plot(x[nm], val[nm], marker=marker, ms=10, mfc="none", color=colour, ls="none")
@@ -62,6 +64,7 @@ def _search_errorbars(
     below = status == "below_range"
     if below.any():
         ax.plot(x[below] + jitter, hi[below], marker="v", ms=7, mfc="none", color=colour, ls="none")
+    return drawn
 
 
 def _jitter(x: np.ndarray, k: int, n: int) -> float:
@@ -106,12 +109,42 @@ def _paper_omega_c() -> tuple[float, float, float]:
     return lo, hi, float(at(claim("omega_c_p2_1000")["at"])[0]["velocity"])
 
 
-_SEARCH_LABELS = ["above the search range", "verdict not monotone"]
+#: Search outcome -> (legend label, marker, marker size) of its open marker.
+_SEARCH_MARKS = {
+    "above_range": ("above the search range", "^", 7),
+    "below_range": ("below the search range", "v", 7),
+    "non_monotone": ("verdict not monotone", "o", 10),
+}
+_SEARCH_LABELS = [label for label, _, _ in _SEARCH_MARKS.values()]
 
 
-def _legend_search(ax) -> None:
-    ax.plot([], [], "^", mfc="none", color="0.3", label="above the search range")
-    ax.plot([], [], "o", ms=10, mfc="none", color="0.3", label="verdict not monotone")
+def _legend_search(ax, drawn: set[str]) -> None:
+    """Legend entries for the search outcomes drawn (only those: a legend lists no marker
+    the figure does not show)."""
+    for key, (label, marker, ms) in _SEARCH_MARKS.items():
+        if key in drawn:
+            ax.plot([], [], marker, ms=ms, mfc="none", color="0.3", ls="none", label=label)
+
+
+def _paper_star(ax, x: float, lo: float, hi: float, ds: xr.Dataset, label: str) -> None:
+    """The paper's bracket for projectile #2 as a star in #2's colour, named beside it:
+    it can sit on another projectile's curve, and must not read as that one's."""
+    names = [str(p) for p in ds["projectile"].values]
+    colour = _c(names.index("p2")) if "p2" in names else "k"
+    mid, half = 0.5 * (lo + hi), 0.5 * (hi - lo)
+    ax.errorbar(
+        [x], [mid], yerr=[[half], [half]], fmt="*", ms=13, color=colour, mec="k", mew=0.8,
+        ecolor=colour, label=label, zorder=5,
+    )  # fmt: skip
+    ax.annotate(
+        "paper, #2",
+        (x, mid),
+        xytext=(10, 14),
+        textcoords="offset points",
+        fontsize=8,
+        color=colour,
+        arrowprops={"arrowstyle": "-", "color": colour, "lw": 0.8},
+    )
 
 
 @styled
@@ -121,9 +154,10 @@ def plot_fig8(ds: xr.Dataset) -> Figure:
     ax = fig.add_subplot()
     obl = ds["obliquity"].values
     n = ds.sizes["projectile"]
+    drawn: set[str] = set()
     for k, p in enumerate(ds["projectile"].values):
         sub = ds.sel(projectile=p)
-        _search_errorbars(
+        drawn |= _search_errorbars(
             ax,
             obl,
             sub,
@@ -134,16 +168,10 @@ def plot_fig8(ds: xr.Dataset) -> Figure:
             _jitter(obl, k, n),
         )
     lo, hi, obliquity = _paper_vcr()
-    ax.errorbar(
-        [obliquity],
-        [0.5 * (lo + hi)],
-        yerr=[[0.5 * (hi - lo)], [0.5 * (hi - lo)]],
-        fmt="*",
-        ms=11,
-        color="k",
-        label=f"paper, #2 at {obliquity:g}° ({lo:g} < $V_{{cr}}$ ≤ {hi:g})",
+    _paper_star(
+        ax, obliquity, lo, hi, ds, f"paper, #2 at {obliquity:g}° ({lo:g} < $V_{{cr}}$ ≤ {hi:g})"
     )
-    _legend_search(ax)
+    _legend_search(ax, drawn)
     ax.set_xlabel(r"Angle of obliquity $\varphi_1$ (deg)")
     ax.set_ylabel(r"Critical reverse velocity $V_{cr}$ (m/s)")
     ax.grid(alpha=0.3)
@@ -166,9 +194,11 @@ def plot_fig12(ds: xr.Dataset) -> Figure:
     axes = fig.subplots(1, len(obls), squeeze=False)[0]
     yaw = ds["yaw"].values
     for ax, ob in zip(axes, obls, strict=True):
+        drawn: set[str] = set()
+        flipped = False
         for k, p in enumerate(ds["projectile"].values):
             sub = ds.sel(projectile=p, obliquity=ob)
-            _search_errorbars(
+            drawn |= _search_errorbars(
                 ax,
                 yaw,
                 sub,
@@ -183,8 +213,12 @@ def plot_fig12(ds: xr.Dataset) -> Figure:
                 m = nd == "-x"
                 if m.any():
                     ax.plot(yaw[m], sub["vcr"].values[m], "x", ms=10, mew=2, color=_c(k), ls="none")
-        ax.plot([], [], "x", ms=8, mew=2, color="0.3", label="nose ends pointing −x")
-        _legend_search(ax)
+                    flipped = True
+        if flipped:
+            ax.plot(
+                [], [], "x", ms=10, mew=2, color="0.3", ls="none", label="nose ends pointing −x"
+            )
+        _legend_search(ax, drawn)
         ax.set_xlabel(r"Yaw angle $\varphi_2$ (deg)")
         ax.set_ylabel(r"$V_{cr}$ (m/s)")
         ax.set_title(f"$\\varphi_1$ = {ob:g}°", fontsize=10)
@@ -202,11 +236,12 @@ def plot_fig15(ds: xr.Dataset, threshold: float | None = None) -> Figure:
     fig = new_figure(6.6, 4.8)
     ax = fig.add_subplot()
     lcl = ds["lc_over_l"].values
+    drawn: set[str] = set()
     for k, y in enumerate(ds["yaw"].values):
         for j, t in enumerate(ths):
             sub = ds.sel(yaw=y, threshold=t)
             if j == j0:
-                _search_errorbars(
+                drawn |= _search_errorbars(
                     ax,
                     lcl,
                     sub,
@@ -230,7 +265,7 @@ def plot_fig15(ds: xr.Dataset, threshold: float | None = None) -> Figure:
                 color="0.3",
                 label=f"threshold {t:g}°",
             )
-    _legend_search(ax)
+    _legend_search(ax, drawn)
     for p, x in zip(ds["projectile"].values, lcl, strict=True):
         ax.annotate(
             _pname(p),
@@ -260,11 +295,12 @@ def plot_fig18(ds: xr.Dataset) -> Figure:
     ax = fig.add_subplot()
     v = ds["velocity"].values
     order: list[str] = []
+    drawn: set[str] = set()
     for k, p in enumerate(ds["projectile"].values):
         sub = ds.sel(projectile=p)
         label = f"{_pname(p)}, $L_c/L$ = {float(sub['lc_over_l']):.3f}"
         order.append(label)
-        _search_errorbars(
+        drawn |= _search_errorbars(
             ax,
             v,
             sub,
@@ -276,17 +312,22 @@ def plot_fig18(ds: xr.Dataset) -> Figure:
         )
     lo, hi, velocity = _paper_omega_c()
     paper_label = rf"paper, #2 at {velocity:g} m/s (${lo:g} < \omega_c \leq {hi:g}$ rad/s)"
-    ax.errorbar(
-        [velocity],
-        [0.5 * (lo + hi)],
-        yerr=[[0.5 * (hi - lo)], [0.5 * (hi - lo)]],
-        fmt="*",
-        ms=11,
-        color="k",
-        label=paper_label,
-    )
+    _paper_star(ax, velocity, lo, hi, ds, paper_label)
+    names = [str(p) for p in ds["projectile"].values]
+    if "p2" in names and velocity in v:
+        # pencore's #2 at the paper's speed, named too: the star is compared with it
+        at2 = ds.sel(projectile="p2", velocity=velocity)
+        if str(at2["status"].values) == "above_range":
+            ax.annotate(
+                f"pencore, #2: > {float(at2['omega_c_lo']):g} rad/s",
+                (velocity, float(at2["omega_c_lo"])),
+                xytext=(10, -16),
+                textcoords="offset points",
+                fontsize=8,
+                color=_c(names.index("p2")),
+            )
     order += [paper_label, *_SEARCH_LABELS]
-    _legend_search(ax)
+    _legend_search(ax, drawn)
     ax.set_xlabel(_VI)
     ax.set_ylabel(r"Critical angular velocity $\omega_c$ (rad/s)")
     rng = ds.attrs.get("search_range_rad_s")

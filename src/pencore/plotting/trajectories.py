@@ -144,7 +144,7 @@ def plot_fig16(ds: xr.Dataset) -> Figure:
     for k, w in enumerate(ds["omega"].values):
         sub = ds.sel(omega=w)
         lab = (
-            f"ω = {w:g} rad/s: α = {float(sub['final_deviation']):.3g}°"
+            f"ω = {w:g} rad/s: $\\varphi$ = {float(sub['final_deviation']):.3g}°"
             + (", turns back" if int(sub["reversed"]) else "")
             + (f" (paper {paper[float(w)]})" if float(w) in paper else "")
         )
@@ -163,7 +163,7 @@ def plot_fig16(ds: xr.Dataset) -> Figure:
     )
     ax1.grid(alpha=0.3)
     ax1.legend(fontsize=7, frameon=False)
-    ax2.set_xlabel(r"deviation from the normal α (deg, signed)")
+    ax2.set_xlabel(r"deviation from the normal $\varphi$ (deg, signed)")
     ax2.set_ylabel("nose-tip y (m)")
     ax2.set_title("(b) deviation along the path", fontsize=10)
     ax2.grid(alpha=0.3)
@@ -199,7 +199,7 @@ def plot_start_height(ds: xr.Dataset) -> Figure:
     )
     ax.set_yscale("log")
     ax.set_xlabel("nose-tip height above the surface at the start (m)")
-    ax.set_ylabel("deviation α (deg)")
+    ax.set_ylabel(r"deviation $\varphi$ (deg)")
     ax.set_title(
         f"{_pname(ds.attrs.get('projectile'))}, $V_i$ = "
         f"{ds.attrs.get('velocity_m_s', 1000):g} m/s, normal impact with spin",
