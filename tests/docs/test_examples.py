@@ -168,7 +168,7 @@ def test_yaml_block_passes_its_gate(block, tmp_path):
 
     from pencore.inputs.gate import load_yaml_text
     from pencore.inputs.library import projectile_from_dict, target_from_dict
-    from pencore.studies.config_check import check_config, read_config, strict_schema_error
+    from pencore.workflowconfig.config_check import check_config, read_config, strict_schema_error
 
     data = load_yaml_text(block.text, str(block))
     first = block.text.splitlines()[0]

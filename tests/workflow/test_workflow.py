@@ -201,14 +201,6 @@ def test_fig5_draws_every_shipped_shot():
 # ----------------------------------------------------------------------------- end to end
 
 
-@pytest.fixture(scope="module")
-def e2e(tmp_path_factory) -> Path:
-    wd = copy_workflow(tmp_path_factory.mktemp("e2e"))
-    r = run_snakemake(wd, "--cores", "2", "--configfile", ".test/config.yaml")
-    assert r.returncode == 0, r.stderr[-4000:]
-    return wd
-
-
 def _check_cf(ds):
     for name, var in ds.data_vars.items():
         if var.dtype.kind == "f":
@@ -320,8 +312,8 @@ def test_e2e_rerun_is_targeted(e2e):
     assert "Nothing to be done" in r.stdout + r.stderr
     cfg = yaml.safe_load((e2e / ".test/config.yaml").read_text())
     cfg["validation"]["verification"]["velocities_m_s"]["n"] = 4
-    (e2e / "alt.yaml").write_text(yaml.safe_dump(cfg))
-    r = run_snakemake(e2e, "-n", "--cores", "1", "--configfile", "alt.yaml")
+    (e2e / "alt_verification.yaml").write_text(yaml.safe_dump(cfg))
+    r = run_snakemake(e2e, "-n", "--cores", "1", "--configfile", "alt_verification.yaml")
     out = r.stdout + r.stderr
     assert r.returncode == 0, out
     assert "rule verification:" in out and "params have changed" in out
