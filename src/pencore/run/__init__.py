@@ -2,3 +2,18 @@
 the initial state of an impact (:mod:`initial`), and the trajectory Dataset
 (:mod:`dataset`).
 """
+
+from pencore._lazy import attach
+
+__getattr__, __dir__, __all__ = attach(
+    __name__,
+    {
+        "simulate": "impact",
+        "prepare": "impact",
+        "run_impact": "impact",
+        "initial_state": "initial",
+        "trajectory_dataset": "dataset",
+        "final_slope": "dataset",
+    },
+)
+del attach

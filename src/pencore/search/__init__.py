@@ -8,3 +8,22 @@ module             contents
 ``perforation``    the ballistic limit of a finite target, the Recht-Ipson curve
 =================  ==============================================================
 """
+
+from pencore._lazy import attach
+
+__getattr__, __dir__, __all__ = attach(
+    __name__,
+    {
+        "vcr": "critical",
+        "vci": "critical",
+        "omega_c": "critical",
+        "find_threshold": "threshold",
+        "CriticalResult": "threshold",
+        "ballistic_limit": "perforation",
+        "residual_velocity": "perforation",
+        "perforates": "perforation",
+        "recht_ipson": "perforation",
+        "fit_recht_ipson": "perforation",
+    },
+)
+del attach
