@@ -102,6 +102,26 @@ class Numerics:
         ``"rosenbrock"`` (compiled, default) or scipy's ``"Radau"`` / ``"BDF"`` through
         :func:`scipy.integrate.solve_ivp` on the same right-hand side
         (:mod:`pencore.integrators.scipy_ivp`).
+
+    Raises
+    ------
+    InputError
+        A field out of its range or of the wrong type (the one-line message names it and
+        the range), an unknown ``method`` or ``jacobian``, or a ``v_stop`` below the
+        creep speed of the smoothed contact step.
+
+    Examples
+    --------
+    The defaults with a tighter tolerance; ``simulate(..., rtol=1e-8)`` does the same:
+
+    >>> import pencore
+    >>> num = pencore.Numerics(rtol=1e-8)
+    >>> print(num.rtol, num.n_nose, num.method)
+    1e-08 48 rosenbrock
+    >>> pencore.Numerics(rtol=-1.0)
+    Traceback (most recent call last):
+    ...
+    pencore.errors.InputError: numerics: rtol must be in [1e-12, 0.1], got -1.0
     """
 
     n_nose: int = 48

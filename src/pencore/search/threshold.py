@@ -86,6 +86,15 @@ class CriticalResult:
         Every evaluated value and its verdict, in evaluation order.
     tol : float
         The tolerance asked for.
+
+    Examples
+    --------
+    >>> from pencore import find_threshold
+    >>> r = find_threshold(lambda x: x >= 0.3, 0.0, 1.0, 0.01, scan=5)
+    >>> print(r.status, r.converged, r.monotone, r.n_evals, f"{r.value:.3f}")
+    ok True True 10 0.301
+    >>> r.history[:3]
+    ((0.0, False), (1.0, True), (0.25, False))
     """
 
     value: float
@@ -160,6 +169,23 @@ def find_threshold(
         False it is ``"above_range"`` (``value`` NaN, ``lo = hi``, ``hi`` NaN). Otherwise
         ``lo`` has verdict False, ``hi`` True, ``hi - lo <= tol`` (unless ``max_iter``),
         and ``value = (lo + hi) / 2``.
+
+    Raises
+    ------
+    InputError
+        ``lo >= hi``, a bound or ``tol`` that is not a finite number, ``tol <= 0``,
+        ``max_iter`` or ``scan`` not a whole number in its range (the message names it).
+
+    Examples
+    --------
+    Any yes/no question of one number: here where ``x**2`` exceeds 2.
+
+    >>> from pencore import find_threshold
+    >>> r = find_threshold(lambda x: x * x > 2.0, 0.0, 2.0, 1e-6)
+    >>> print(r.status, f"{r.value:.5f}", r.lo < 2**0.5 <= r.hi)
+    ok 1.41421 True
+    >>> find_threshold(lambda x: x > 5.0, 0.0, 2.0, 0.1).status
+    'above_range'
     """
     lo, hi, tol = float(lo), float(hi), float(tol)
     lo, hi, tol, max_iter, scan = check_search_args(lo, hi, tol, max_iter, scan)
