@@ -4,10 +4,11 @@ Built with ``python -m sphinx -W --keep-going -n -b html docs docs/_build/html``
 (``.ci/docs.sh`` does it in CI): every warning fails the build, and so does every
 cross-reference that does not resolve (``-n``). The build needs no network: the
 intersphinx inventories are files of ``docs/_inventories/`` and MathJax is served from the
-site itself (copied from the docs extra's ``django-static-mathjax``). Every table of numbers in the pages is generated at build
-time by ``docs/_ext/pencore_docs.py`` from the files that hold the numbers (the archive,
-``config/paper_claims.csv``, ``benchmarks/results/``, :data:`pencore.inputs.limits.LIMITS`,
-the workflow's schema), and the examples gallery runs every ``docs/examples/plot_*.py``.
+site itself (copied from the docs extra's ``django-static-mathjax``). Every table of
+numbers in the pages is generated at build time by ``docs/_ext/pencore_docs.py`` from the
+files that hold the numbers (the archive, ``config/paper_claims.csv``,
+``benchmarks/results/``, :data:`pencore.inputs.limits.LIMITS`, the workflow's schema), and
+the examples gallery runs every ``docs/examples/plot_*.py``.
 """
 
 from __future__ import annotations
