@@ -41,7 +41,7 @@ extensions = [
 ]
 
 source_suffix = {".md": "markdown", ".rst": "restructuredtext"}
-exclude_patterns = ["_build", "_generated", "_inventories", "examples/README.rst"]
+exclude_patterns = ["_build", "_generated", "_inventories", "_templates", "examples/README.rst"]
 templates_path = ["_templates"]
 myst_enable_extensions = ["colon_fence", "dollarmath", "substitution", "deflist"]
 myst_heading_anchors = 3

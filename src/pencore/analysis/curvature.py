@@ -445,10 +445,10 @@ def inflection_points_ds(
     Examples
     --------
     >>> import pencore
-    >>> ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0)
+    >>> ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0, start=(-1.0, 1.0, 0.0))
     >>> found = pencore.inflection_points_ds(ds)
     >>> print(len(found), [f"{1e3 * t:.2f} ms" for t in found.param])
-    {INFL}
+    3 ['1.56 ms', '1.70 ms', '2.32 ms']
     """
     end = _window_end(ds["speed"].values, _impact_speed(ds), speed_fraction)
     sl = slice(0, end + 1)

@@ -132,7 +132,7 @@ def final_deviation(
     >>> import pencore
     >>> ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0)
     >>> print(f"{pencore.final_deviation(ds):.0f} deg")
-    {FD45} deg
+    46 deg
     """
     return final_deviation_arrays(
         ds["vel_x"].values,
@@ -169,7 +169,7 @@ def nose_direction(data: xr.Dataset | Any) -> str:
     --------
     >>> import pencore
     >>> pencore.nose_direction(pencore.simulate("p2", "soil", 1000.0, obliquity=45.0))
-    '{NOSE}'
+    '+x'
     >>> pencore.nose_direction([0.5, 0.1, -0.2])
     '-x'
     """
@@ -203,9 +203,15 @@ def reversed_in_target(ds: xr.Dataset) -> bool:
 
     Examples
     --------
+    #2 at 45 deg obliquity turns back at 1800 m/s, not at 1000 m/s (the paper's Fig. 7):
+
     >>> import pencore
-    >>> pencore.reversed_in_target(pencore.simulate("p2", "soil", 1000.0, obliquity=45.0))
-    {REV45}
+    >>> start = (-1.0, 1.0, 0.0)  # the nose 1 m above the surface
+    >>> for v in (1000.0, 1800.0):
+    ...     ds = pencore.simulate("p2", "soil", v, obliquity=45.0, start=start)
+    ...     print(v, pencore.reversed_in_target(ds))
+    1000.0 False
+    1800.0 True
     """
     if "reversed" not in ds.attrs:
         raise KeyError("dataset has no 'reversed' attribute; was it made by pencore.simulate?")

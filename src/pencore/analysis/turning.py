@@ -52,9 +52,10 @@ class TurningAngle:
     Examples
     --------
     >>> import pencore
-    >>> ta = pencore.turning_angle(pencore.simulate("p2", "soil", 1000.0, obliquity=45.0))
+    >>> ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0, start=(-1.0, 1.0, 0.0))
+    >>> ta = pencore.turning_angle(ds)
     >>> print(ta.ok, ta.method, f"{float(ta):.1f} deg")
-    True bracket {TA} deg
+    True bracket 1.2 deg
     """
 
     delta_theta: float
@@ -260,13 +261,14 @@ def turning_angle(
 
     Examples
     --------
-    #2 at 45 deg obliquity and 1000 m/s (the paper's Fig. 9):
+    #2 at 45 deg obliquity and 1000 m/s, the nose starting 1 m above the surface (the
+    paper's Figs 7 and 9):
 
     >>> import pencore
-    >>> ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0)
+    >>> ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0, start=(-1.0, 1.0, 0.0))
     >>> ta = pencore.turning_angle(ds)
     >>> print(f"{ta.delta_theta:.1f} deg between t = {1e3 * ta.t_1:.2f} and {1e3 * ta.t_2:.2f} ms")
-    {TA} deg between t = {T1} and {T2} ms
+    1.2 deg between t = 1.42 and 2.33 ms
     """
     kw = dict(
         method=method, fraction=fraction, speed_fraction=speed_fraction, rel_threshold=rel_threshold

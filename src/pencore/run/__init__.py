@@ -1,6 +1,9 @@
 """The run API: :func:`impact.prepare`, :func:`impact.simulate`, :func:`impact.run_impact`,
 the initial state of an impact (:mod:`initial`), and the trajectory Dataset
 (:mod:`dataset`).
+
+``__all__`` lists the public names; each is imported from its module on first use, so
+``import pencore.run.dataset`` does not load the solver.
 """
 
 from pencore._lazy import attach

@@ -7,6 +7,8 @@ module             contents
 ``critical``       Vcr, Vci and omega_c of the paper (Sections 4.2-4.3)
 ``perforation``    the ballistic limit of a finite target, the Recht-Ipson curve
 =================  ==============================================================
+
+``__all__`` lists the public names (imported from their modules on first use).
 """
 
 from pencore._lazy import attach

@@ -139,7 +139,7 @@ def vcr(
     >>> print(r.status, r.lo < r.hi <= r.lo + 100.0)
     ok True
     >>> print(f"{r.lo:.0f} < Vcr <= {r.hi:.0f} m/s")
-    {VCR_LO} < Vcr <= {VCR_HI} m/s
+    1562 < Vcr <= 1656 m/s
     """
     check_search_args(lo, hi, tol, max_iter, scan, "velocity")
     numerics, overrides, sim = split_search_kwargs(dict(simulate_kwargs), FIXED_BY_SEARCH)
@@ -200,10 +200,12 @@ def omega_c(
 
     Examples
     --------
+    #2 at 1500 m/s, normal impact, bracketed to 25 rad/s:
+
     >>> import pencore
-    >>> r = pencore.omega_c("p2", "soil", 500.0, lo=0.0, hi=400.0, tol=50.0, scan=None)
+    >>> r = pencore.omega_c("p2", "soil", 1500.0, lo=0.0, hi=500.0, tol=25.0, scan=None)
     >>> print(r.status, f"{r.lo:.0f} < omega_c <= {r.hi:.0f} rad/s")
-    {OMC}
+    ok 156 < omega_c <= 172 rad/s
     """
     check_search_args(lo, hi, tol, max_iter, scan, "omega")
     number(velocity, "velocity", "omega_c")
@@ -293,7 +295,7 @@ def vci(
     >>> r = pencore.vci("p4", "soil", 0.1, lo=1000.0, hi=3000.0, threshold_deg=1.0,
     ...                 tol=200.0, scan=None)
     >>> print(r.status, f"{r.lo:.0f} < Vci <= {r.hi:.0f} m/s")
-    {VCI}
+    ok 2000 < Vci <= 2125 m/s
     """
     check_search_args(lo, hi, tol, max_iter, scan, "velocity")
     thr = as_float(threshold_deg, allow_str=False)
