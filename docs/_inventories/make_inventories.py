@@ -59,6 +59,7 @@ MODULES: dict[str, tuple[str, list[str]]] = {
     "matplotlib": (
         "https://matplotlib.org/stable/",
         [
+            "matplotlib",
             "matplotlib.figure",
             "matplotlib.axes",
             "matplotlib.pyplot",
@@ -80,6 +81,9 @@ MODULES: dict[str, tuple[str, list[str]]] = {
             "json",
             "argparse",
             "contextlib",
+            "signal",
+            "logging",
+            "math",
         ],
     ),
 }
@@ -106,6 +110,8 @@ def page(project: str, module: str, name: str) -> str:
         return f"reference/generated/{name}.html#{name}"
     if project == "xarray":
         return f"generated/{name}.html#{name}"
+    if module == "matplotlib":  # the top-level functions share one page
+        return f"api/matplotlib_configuration_api.html#{name}"
     return f"api/_as_gen/{name}.html#{name}"
 
 
@@ -118,6 +124,8 @@ def module_page(project: str, module: str) -> str:
         return f"reference/{module.split('.')[1]}.html#module-{module}"
     if project == "xarray":
         return f"api.html#module-{module}"
+    if module == "matplotlib":
+        return "api/matplotlib_configuration_api.html#module-matplotlib"
     return f"api/{module.split('.')[1]}_api.html#module-{module}"
 
 

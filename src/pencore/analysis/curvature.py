@@ -340,10 +340,12 @@ def inflection_points(
         Time (s), strictly increasing, possibly non-uniform; default chord length.
     rel_threshold : float
         Noise threshold relative to the peak abs(curvature) (default
-        :data:`DEFAULT_REL_THRESHOLD` = 1e-2): a sign change counts only when the
+        :data:`~pencore.analysis.curvature.DEFAULT_REL_THRESHOLD` = 1e-2): a sign change counts
+        only when the
         curvature exceeds ``rel_threshold * peak`` on both sides of it, so wiggles below
         that level (differencing noise, exit or stop transients) are ignored. A path whose
-        peak abs(curvature) times its chord length is below :data:`STRAIGHT_TOL` is straight
+        peak abs(curvature) times its chord length is below
+        :data:`~pencore.analysis.curvature.STRAIGHT_TOL` is straight
         and has none.
     vx, vy : (n,) array_like, optional
         Exact ``dx/dt``, ``dy/dt`` (m/s) if known; needs ``t``.

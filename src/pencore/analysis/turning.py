@@ -228,7 +228,7 @@ def turning_angle(
         or was cut while turning).
     ``method="sign_change"``
         The first and the last significant sign changes of the curvature
-        (:func:`inflection_points` with ``rel_threshold``). In solver runs these lie inside
+        (:func:`~pencore.inflection_points` with ``rel_threshold``). In solver runs these lie inside
         the nose-entry transient and miss the start of the turn; offered to show how much
         the choice matters. NaN when there are fewer than two.
 

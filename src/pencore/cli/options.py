@@ -59,7 +59,7 @@ def exit_at_once_on_interrupt() -> None:
 
 
 class CommandFailure(Exception):
-    """An error that :func:`pencore.cli.main.main` reports as one line and an exit status.
+    """An error that ``pencore.cli.main.main()`` reports as one line and an exit status.
 
     Parameters
     ----------

@@ -3,7 +3,7 @@
 =================  ==============================================================
 module             contents
 =================  ==============================================================
-``limits``         the valid range of every quantity (:data:`limits.LIMITS`), checks
+``limits``         the valid range of every quantity (:data:`~pencore.inputs.limits.LIMITS`), checks
 ``geometry``       projectile bodies of revolution, mass properties, surface rings
 ``target``         media (resistance and friction laws, depth windows), layers
 ``library``        the named projectiles and targets, YAML files, the Table-3 fit

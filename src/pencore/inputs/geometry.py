@@ -85,9 +85,11 @@ class OgiveNose:
         _check("density", self.density)
 
     def length(self, a: float) -> float:
+        """Nose length (m) for the body radius ``a`` (m)."""
         return a * math.sqrt(4.0 * self.crh - 1.0)
 
     def radius(self, s: np.ndarray, a: float) -> np.ndarray:
+        """Nose radius (m) at distance ``s`` (m) from the tip, body radius ``a`` (m)."""
         ro = 2.0 * self.crh * a
         ln = self.length(a)
         return np.sqrt(np.maximum(ro * ro - (ln - s) ** 2, 0.0)) - (ro - a)
@@ -114,6 +116,7 @@ class OgiveNose:
         return ln - ro * np.sin(beta), r
 
     def exact_area(self, a: float) -> float:
+        """Area of the nose surface (m^2) for the body radius ``a`` (m), in closed form."""
         ro = 2.0 * self.crh * a
         beta_tip = math.asin(min(self.length(a) / ro, 1.0))
         # integral of 2 pi r dl with r = ro cos b - (ro - a), dl = ro db
@@ -157,12 +160,15 @@ class ConeNose:
         _check("density", self.density)
 
     def length(self, a: float) -> float:
+        """Nose length (m) for the body radius ``a`` (m)."""
         return a / math.tan(self.half_angle)
 
     def radius(self, s: np.ndarray, a: float) -> np.ndarray:
+        """Nose radius (m) at distance ``s`` (m) from the tip, body radius ``a`` (m)."""
         return np.asarray(s) * math.tan(self.half_angle)
 
     def rings(self, a: float, n: int) -> tuple[np.ndarray, ...]:
+        """``n`` surface bands of the nose: ``s, r, na, nr, dl`` (m, m, -, -, m) each."""
         ln = self.length(a)
         edges = np.linspace(0.0, ln, n + 1)
         s = 0.5 * (edges[:-1] + edges[1:])
@@ -181,6 +187,7 @@ class ConeNose:
         return s, s * math.tan(self.half_angle)
 
     def exact_area(self, a: float) -> float:
+        """Area of the nose surface (m^2) for the body radius ``a`` (m), in closed form."""
         return math.pi * a * a / math.sin(self.half_angle)
 
 
@@ -206,12 +213,15 @@ class FlatNose:
         _check("density", self.density)
 
     def length(self, a: float) -> float:
+        """Nose length (m) for the body radius ``a`` (m)."""
         return 0.0
 
     def radius(self, s: np.ndarray, a: float) -> np.ndarray:
+        """Nose radius (m) at distance ``s`` (m) from the tip, body radius ``a`` (m)."""
         return np.zeros_like(np.asarray(s, dtype=float))
 
     def rings(self, a: float, n: int) -> tuple[np.ndarray, ...]:
+        """``n`` surface bands of the nose: ``s, r, na, nr, dl`` (m, m, -, -, m) each."""
         return _disc_rings(a, n, 0.0, +1.0)
 
     def nodes(self, a: float, n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -219,6 +229,7 @@ class FlatNose:
         return np.zeros(n + 1), np.linspace(0.0, a, n + 1)
 
     def exact_area(self, a: float) -> float:
+        """Area of the nose surface (m^2) for the body radius ``a`` (m), in closed form."""
         return math.pi * a * a
 
 
@@ -476,7 +487,7 @@ class Projectile:
         s, r : (k + 1,) float
             Nodes: axial distance from the tip and radius (m).
         part : (k,) int8
-            Per segment: 0 nose, 1 shank, 2 flat face (as :attr:`Rings.part`).
+            Per segment: 0 nose, 1 shank, 2 flat face (as ``Rings.part``).
         """
         if n_nose < 1 or n_shank < 1 or n_face < 1:
             raise GeometryError("ring counts must be >= 1")

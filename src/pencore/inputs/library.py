@@ -367,7 +367,8 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
     """Build a projectile from a mapping (the YAML format of the user guide's inputs page).
 
     Unknown keys, booleans or text where numbers belong, and values outside
-    :data:`pencore.inputs.limits.LIMITS` raise :class:`InputError` naming the key and value.
+    :data:`pencore.inputs.limits.LIMITS` raise :class:`~pencore.InputError` naming the key and
+    value.
     """
     if not isinstance(d, dict):
         raise InputError(f"projectile definition must be a mapping, got {type(d).__name__}")
@@ -459,7 +460,7 @@ def target_from_dict(d: dict[str, Any]) -> Target:
     A layer is ``{medium: ..., thickness: ...}`` (no ``thickness``: semi-infinite, last
     layer only) or an air gap ``{gap: thickness}`` between two layers of a medium. A
     finite last layer makes a plate that can be perforated. Unknown keys and values
-    outside :data:`pencore.inputs.limits.LIMITS` raise :class:`InputError`.
+    outside :data:`pencore.inputs.limits.LIMITS` raise :class:`~pencore.InputError`.
     """
     if not isinstance(d, dict):
         raise InputError(f"target definition must be a mapping, got {type(d).__name__}")

@@ -35,7 +35,7 @@ METHODS = ("rosenbrock", "Radau", "BDF")
 #: (:func:`pencore.kernels.jacobian.analytic_jacobian_applies`), or finite differences.
 JACOBIANS = ("analytic", "finite_difference")
 
-#: Default wall-time budget of one run (s); see :attr:`Numerics.max_wall`.
+#: Default wall-time budget of one run (s); see :attr:`~pencore.inputs.numerics.Numerics.max_wall`.
 DEFAULT_MAX_WALL = 600.0
 
 _INT_FIELDS = ("n_nose", "n_shank", "n_face", "max_steps", "n_gauss", "jacobian_age")
@@ -70,7 +70,8 @@ class Numerics:
     max_wall : float
         Wall-time budget (s) of one run; the run fails with ``wall_limit`` when it is
         used up (looked at on a time basis, not between chunks of steps). Default
-        :data:`DEFAULT_MAX_WALL` = 600 s, so that no accepted input runs for hours
+        :data:`~pencore.inputs.numerics.DEFAULT_MAX_WALL` = 600 s, so that no accepted input runs
+        for hours
         unannounced: the limits allow numerics (``n_nose = n_shank = 10 000``,
         ``n_gauss = 64``, long friction tables) whose steps cost a second each, times
         ``max_steps`` = 400 000. 600 s is over 300 times the slowest single run

@@ -1,8 +1,9 @@
-"""Files: netCDF with provenance (:mod:`netcdf`), atomic, durable writes (:mod:`atomic`),
-and the check of result files (:mod:`results`).
+"""Files: netCDF with provenance (:mod:`~pencore.io.netcdf`), atomic, durable writes
+(:mod:`~pencore.io.atomic`),
+and the check of result files (:mod:`~pencore.io.results`).
 
 ``__all__`` lists the public names; each is imported from its module on first use, so the
-command line's use of :mod:`atomic` does not load xarray.
+command line's use of :mod:`~pencore.io.atomic` does not load xarray.
 """
 
 from pencore._lazy import attach

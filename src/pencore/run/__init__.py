@@ -1,6 +1,7 @@
-"""The run API: :func:`impact.prepare`, :func:`impact.simulate`, :func:`impact.run_impact`,
-the initial state of an impact (:mod:`initial`), and the trajectory Dataset
-(:mod:`dataset`).
+"""The run API: :func:`~pencore.prepare`, :func:`~pencore.simulate`,
+:func:`~pencore.run.impact.run_impact`,
+the initial state of an impact (:mod:`~pencore.run.initial`), and the trajectory Dataset
+(:mod:`~pencore.run.dataset`).
 
 ``__all__`` lists the public names; each is imported from its module on first use, so
 ``import pencore.run.dataset`` does not load the solver.

@@ -11,10 +11,11 @@ verdict switches from False to True:
   final deviation (:func:`pencore.analysis.deviation.final_deviation`) exceeds a chosen threshold
   or the projectile turns back. The paper does not state its threshold; the caller must.
   Nor does it say which of the velocity or the axis is normal in a "normal impact with
-  yaw": :func:`normal_impact_angles` maps the two readings (:data:`YAW_CONVENTIONS`)
+  yaw": :func:`~pencore.inputs.conventions.normal_impact_angles` maps the two readings
+  (:data:`~pencore.inputs.conventions.YAW_CONVENTIONS`)
   onto ``simulate``'s obliquity and yaw.
 
-:func:`find_threshold` does the search on any verdict: it checks both ends of the
+:func:`~pencore.find_threshold` does the search on any verdict: it checks both ends of the
 bracket, optionally scans it coarsely to detect a non-monotone verdict, and bisects to a
 caller-given tolerance. Every verdict evaluated is returned, so a workflow can archive
 the evidence behind each number. The ballistic limit of a finite target

@@ -9,7 +9,7 @@ velocity (``attrs['residual_velocity']``, m/s) and the exit attitude
 
 The ballistic limit ``v_bl`` (m/s) is the lowest impact speed that perforates:
 :func:`ballistic_limit` searches it with :func:`pencore.search.threshold.find_threshold`, the
-search behind Vcr, Vci and omega_c, and returns the same :class:`CriticalResult`
+search behind Vcr, Vci and omega_c, and returns the same :class:`~pencore.CriticalResult`
 (bracket, every evaluation, monotonicity flag).
 
 Recht-Ipson curve (Recht & Ipson, J. Appl. Mech. 30 (1963) 384-390, energy and momentum

@@ -47,10 +47,11 @@ __all__ = [
 VELOCITY_TOL = 5.0
 #: Default (and widest recommended) bracket width for critical angular velocities (rad/s).
 OMEGA_TOL = 0.5
-#: Scan points used by :func:`vcr`, :func:`omega_c` and :func:`vci` before bisecting.
+#: Scan points used by :func:`~pencore.vcr`, :func:`~pencore.omega_c` and :func:`~pencore.vci`
+#: before bisecting.
 DEFAULT_SCAN = 5
 
-#: Possible values of :attr:`CriticalResult.status`.
+#: Possible values of ``CriticalResult.status`` (:class:`~pencore.CriticalResult`).
 STATUSES = ("ok", "non_monotone", "below_range", "above_range", "max_iter")
 
 
@@ -147,7 +148,8 @@ def find_threshold(
         Search range, ``lo < hi`` (units of the searched quantity).
     tol : float
         Required width of the final bracket (same units), > 0. No default on purpose:
-        use :data:`VELOCITY_TOL` or :data:`OMEGA_TOL` or tighter.
+        use :data:`~pencore.search.threshold.VELOCITY_TOL` or
+        :data:`~pencore.search.threshold.OMEGA_TOL` or tighter.
     max_iter : int
         Largest number of bisection steps.
     scan : int, optional

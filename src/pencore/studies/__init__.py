@@ -22,10 +22,13 @@ module                     contents
 ``trends``                 trend verdicts within search brackets
 ``comparison_rows``        row helpers of the comparison table
 ``comparison_spin``        its rows for the spin claims (Figs 16-18)
-``comparison``             :func:`paper_comparison`: the paper's numbers beside pencore's
+``comparison``             :func:`~pencore.studies.comparison.paper_comparison`: the paper's
+                           numbers beside pencore's
 ``config_check``           checks of the workflow configuration a schema cannot express
 ``parts``                  which studies exist and their job parts (light: the Snakefile's)
-``config``                 workflow config -> study parts, :func:`from_config`, :func:`gather`
+``config``                 workflow config -> study parts,
+                           :func:`~pencore.studies.config.from_config`,
+                           :func:`~pencore.studies.config.gather`
 ``perforation``            beyond the paper: ballistic limit map, residual velocity curve
 ``disputed``               the paper's disputed quantities for one setting (a reading)
 ``attribution``            which reading moves each disputed number (settings joined)

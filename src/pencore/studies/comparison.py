@@ -3,7 +3,7 @@
 Each claim names, in its ``computed_by`` column, an entry of :data:`HANDLERS`: a function
 of the claim and the study datasets that returns the claim's table rows (none when its
 study was not given). The paper's values come from the claim, never from code; verdicts
-on the paper's trends are computed from the datasets with :func:`trend`.
+on the paper's trends are computed from the datasets with :func:`~pencore.studies.trends.trend`.
 """
 
 from __future__ import annotations

@@ -235,7 +235,7 @@ def from_config(
     Parameters
     ----------
     study : str
-        One of :data:`STUDIES` (each run by its entry of :data:`REGISTRY`).
+        One of :data:`~pencore.studies.config.STUDIES` (each run by its entry of :data:`REGISTRY`).
     cfg : mapping
         The study's entry of the ``section4`` configuration block (keys as in
         ``config/config.yaml``; units in the key names).
@@ -246,7 +246,7 @@ def from_config(
     numerics : Numerics or mapping, optional
         Overrides of pencore's numerical defaults.
     projectile, obliquity
-        The part of a split study (:data:`SPLIT_STUDIES`) to run.
+        The part of a split study (:data:`~pencore.studies.config.SPLIT_STUDIES`) to run.
     """
     if study not in STUDIES:
         raise InputError(f"unknown Section 4 study {study!r}; known: {', '.join(STUDIES)}")
@@ -271,7 +271,8 @@ def from_config(
 
 
 def gather(study: str, parts: Sequence[xr.Dataset]) -> xr.Dataset:
-    """Join the parts of a split study (:data:`SPLIT_STUDIES`) into one dataset.
+    """Join the parts of a split study (:data:`~pencore.studies.config.SPLIT_STUDIES`) into one
+    dataset.
 
     Parts may come in any order; projectiles keep their first-seen order, obliquities are
     sorted.

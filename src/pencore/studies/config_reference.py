@@ -4,8 +4,9 @@ Every key of ``config/config.yaml`` with its type, its default (the value in
 ``config/config.yaml``; the schema's default for keys that file leaves out), its valid
 range and its description. Nothing is typed here: the types, descriptions and schema
 bounds come from ``workflow/schemas/config.schema.yaml``, the ranges the workflow checks
-beyond the schema from :mod:`pencore.studies.config_check` (:data:`~pencore.studies.
-config_check.KEY_RULES`, :data:`~pencore.studies.config_check.GRID_POINTS`,
+beyond the schema from :mod:`pencore.studies.config_check`
+(:data:`~pencore.studies.config_check.KEY_RULES`,
+:data:`~pencore.studies.config_check.GRID_POINTS`,
 :data:`~pencore.studies.config_check.GRID_STEP`), the very objects the check enforces.
 
 Command line (from the repository root; the documentation build includes its output)::

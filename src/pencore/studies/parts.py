@@ -20,7 +20,8 @@ from pencore.errors import InputError
 __all__ = ["STUDIES", "SPLIT_STUDIES", "grid", "values", "parts_of", "remade_target"]
 
 #: Studies that :func:`pencore.studies.config.from_config` runs; those in
-#: :data:`SPLIT_STUDIES` run per job part (a projectile, or a projectile and an
+#: :data:`~pencore.studies.parts.SPLIT_STUDIES` run per job part (a projectile, or a projectile and
+#: an
 #: obliquity) and are joined by :func:`pencore.studies.config.gather`.
 STUDIES = (
     "fig7",
