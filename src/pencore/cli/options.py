@@ -85,6 +85,7 @@ class Parser(argparse.ArgumentParser):
     """
 
     def error(self, message: str) -> NoReturn:
+        """Exit with status 2 and one line naming the error and ``--help``."""
         self.exit(2, f"{PROG}: error: {one_line(message)} (see '{self.prog} --help')\n")
 
     def _print_message(self, message: str, file: Any = None) -> None:

@@ -145,6 +145,7 @@ try:
     from yaml.cyaml import CParser as _CParser
 except ImportError:  # pragma: no cover - PyYAML built without libyaml
     _CParser = None
+#: True when PyYAML has libyaml's C parser, which then scans the text.
 FAST_YAML: bool = bool(getattr(yaml, "__with_libyaml__", False)) and _CParser is not None
 
 if FAST_YAML:

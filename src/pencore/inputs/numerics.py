@@ -35,7 +35,7 @@ METHODS = ("rosenbrock", "Radau", "BDF")
 #: (:func:`pencore.kernels.jacobian.analytic_jacobian_applies`), or finite differences.
 JACOBIANS = ("analytic", "finite_difference")
 
-#: Default wall-time budget of one run (s); see :attr:`~pencore.inputs.numerics.Numerics.max_wall`.
+#: Default wall-time budget of one run (s); see ``Numerics.max_wall``.
 DEFAULT_MAX_WALL = 600.0
 
 _INT_FIELDS = ("n_nose", "n_shank", "n_face", "max_steps", "n_gauss", "jacobian_age")

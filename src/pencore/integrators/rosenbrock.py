@@ -30,7 +30,7 @@ default age is chosen by ``benchmarks/bench_jacobian.py``.
 
 Structure (as scipy's ``_ivp`` separates them): ``_jacobian`` builds the Jacobian,
 ``_attempt`` takes one Rosenbrock step and returns its error norm,
-``_next_step`` is the step-size controller, :func:`~pencore.integrators.rosenbrock.stop_code` holds
+``_next_step`` is the step-size controller, :func:`~pencore.kernels.state.stop_code` holds
 the stopping
 events, and :func:`integrate_chunk` records accepted steps. ``integrate_chunk`` returns
 to Python every ``n_max`` steps with its state in two small arrays, so that a run can be
@@ -413,7 +413,7 @@ def integrate(
     ``problem`` carries the arrays and the numerics
     (:class:`~pencore.integrators.problem.Problem`); ``velocity``
     (m/s) is the impact speed, which sets the absolute tolerances
-    (:meth:`~pencore.integrators.rosenbrock.Problem.atol`). ``numerics.jacobian_age`` is the most
+    (:meth:`~pencore.integrators.problem.Problem.atol`). ``numerics.jacobian_age`` is the most
     accepted steps a
     Jacobian is held for (see :func:`integrate_chunk` and the module notes on the
     W-method property); ``numerics.jacobian`` is ``"analytic"`` (closed-form velocity
@@ -423,7 +423,7 @@ def integrate(
     Returns
     -------
     RunResult
-        ``outcome`` is one of :data:`~pencore.integrators.rosenbrock.OUTCOMES` (never ``running``)
+        ``outcome`` is one of :data:`~pencore.kernels.state.OUTCOMES` (never ``running``)
         or ``wall_limit``.
     """
     with RunGuard(problem.numerics.max_wall) as guard:

@@ -1,5 +1,6 @@
 """From the workflow configuration to studies: which studies exist, how they split into
-job parts, running one part (:func:`from_config`) and joining parts (:func:`gather`).
+job parts, running one part (:func:`~pencore.studies.config.from_config`) and joining parts
+(:func:`~pencore.studies.config.gather`).
 """
 
 from __future__ import annotations
@@ -235,7 +236,7 @@ def from_config(
     Parameters
     ----------
     study : str
-        One of :data:`~pencore.studies.config.STUDIES` (each run by its entry of :data:`REGISTRY`).
+        One of :data:`~pencore.studies.parts.STUDIES` (each run by its entry of :data:`REGISTRY`).
     cfg : mapping
         The study's entry of the ``section4`` configuration block (keys as in
         ``config/config.yaml``; units in the key names).
@@ -246,7 +247,7 @@ def from_config(
     numerics : Numerics or mapping, optional
         Overrides of pencore's numerical defaults.
     projectile, obliquity
-        The part of a split study (:data:`~pencore.studies.config.SPLIT_STUDIES`) to run.
+        The part of a split study (:data:`~pencore.studies.parts.SPLIT_STUDIES`) to run.
     """
     if study not in STUDIES:
         raise InputError(f"unknown Section 4 study {study!r}; known: {', '.join(STUDIES)}")
@@ -271,7 +272,7 @@ def from_config(
 
 
 def gather(study: str, parts: Sequence[xr.Dataset]) -> xr.Dataset:
-    """Join the parts of a split study (:data:`~pencore.studies.config.SPLIT_STUDIES`) into one
+    """Join the parts of a split study (:data:`~pencore.studies.parts.SPLIT_STUDIES`) into one
     dataset.
 
     Parts may come in any order; projectiles keep their first-seen order, obliquities are

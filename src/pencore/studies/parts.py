@@ -1,6 +1,6 @@
 """Which Section 4 studies the workflow runs and how a split study's configuration
-becomes job parts (:func:`parts_of`), with the ``{min, max, step}`` grids of the
-configuration (:func:`grid`).
+becomes job parts (:func:`~pencore.studies.parts.parts_of`), with the ``{min, max, step}``
+grids of the configuration (:func:`~pencore.studies.parts.grid`).
 
 Apart from :mod:`pencore.studies.config` (numpy and :mod:`pencore.inputs.limits` only): the
 workflow asks for the parts at every Snakemake start, before any study runs.
@@ -36,6 +36,7 @@ STUDIES = (
     "fig18",
 )
 
+#: The studies run per job part, and what their parts are made of.
 SPLIT_STUDIES = {
     "fig8": ("projectile",),
     "fig12": ("projectile", "obliquity"),

@@ -33,6 +33,7 @@ DEPTH_MEASURES: dict[str, tuple[str, str]] = {
     ),
 }
 
+#: The columns of a Table 2 input row.
 TABLE2_INPUT_COLUMNS = (
     "test",
     "velocity_m_s",

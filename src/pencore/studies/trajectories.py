@@ -56,7 +56,7 @@ def stack_trajectories(
     Returns
     -------
     xarray.Dataset
-        :data:`~pencore.studies.trajectories.TRAJECTORY_VARIABLES` on ``(*dims, time)`` and per-run
+        :data:`~pencore.studies.common.TRAJECTORY_VARIABLES` on ``(*dims, time)`` and per-run
         scalars on ``dims``:
         ``outcome``, ``reversed``, ``penetration_depth``, ``path_length``,
         ``final_deviation`` (and ``final_deviation_signed``), ``final_theta``,
