@@ -116,7 +116,7 @@ def other_hosts(urls: list[str], base: str) -> list[str]:
 
 #: JavaScript (async): wait for MathJax's typesetting, then count the math the page has,
 #: the formulas MathJax rendered, and raw TeX left in the visible text.
-MATH_STATE = """
+MATH_STATE = r"""
 const done = arguments[arguments.length - 1];
 const count = () => {
     const text = document.body.innerText;
