@@ -1,17 +1,19 @@
-"""Open the built docs site and the workflow report in a real headless browser.
+r"""Open the built docs site and the workflow report in a real headless browser.
 
 Serves each directory over HTTP on localhost, opens every page of the site (the API
-reference's per-module pages excepted: one of them is opened as a sample) and the report in
+reference's generated pages excepted: two of them are opened as samples) and the report in
 Debian's chromium through chromedriver (selenium); in the report it walks every category
 and opens every result's preview. It fails if a page or a preview has
 
 * an image that did not load (``naturalWidth == 0`` once the page is complete), or
 * a script error, or a request to the site itself that failed, in the browser's console
-  (level SEVERE).
+  (level SEVERE), or
+* (a docs page) any request to another host, whether it succeeded or not: the site must
+  read the same with no network (the browser's network log lists every request), or
+* (a docs page with math) math that MathJax did not typeset: a formula left as raw TeX
+  (``\(``, ``$$``) in the page's text, or fewer rendered formulas than the page has.
 
-A request to another host that failed (MathJax from its CDN, for example) is listed but is
-not a failure: CI has no network beyond the package registries, and a reader's browser
-fetches it.
+In the workflow's report a failed request to another host is listed but is not a failure.
 
 Keeps a screenshot of the site's front page and of the report (``--screenshots DIR``).
 
@@ -25,10 +27,12 @@ from __future__ import annotations
 import argparse
 import functools
 import http.server
+import json
 import threading
 import time
 from contextlib import contextmanager
 from pathlib import Path
+from urllib.parse import urlsplit
 
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
@@ -69,7 +73,8 @@ def browser() -> webdriver.Chrome:
     options.binary_location = CHROMIUM
     for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,1000"):
         options.add_argument(arg)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    # the performance log holds the DevTools network events: every request a page makes
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL", "performance": "ALL"})
     return webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
 
 
@@ -91,8 +96,65 @@ def console_problems(driver: webdriver.Chrome, url: str, base: str) -> list[str]
     return problems
 
 
-def check_page(driver: webdriver.Chrome, url: str, base: str) -> list[str]:
-    """Problems of one page: broken images and console errors."""
+def requested_urls(driver: webdriver.Chrome) -> list[str]:
+    """Every URL the browser requested since the last call (its network log)."""
+    urls = []
+    for entry in driver.get_log("performance"):
+        message = json.loads(entry["message"])["message"]
+        if message.get("method") == "Network.requestWillBeSent":
+            urls.append(message["params"]["request"]["url"])
+    return urls
+
+
+def other_hosts(urls: list[str], base: str) -> list[str]:
+    """The URLs of ``urls`` that go to a host other than ``base``'s (``data:`` and
+    ``blob:`` URLs are the page's own content)."""
+    here = urlsplit(base).netloc
+    return [u for u in urls if urlsplit(u).scheme in ("http", "https", "ws", "wss", "ftp")
+            and urlsplit(u).netloc != here]  # fmt: skip
+
+
+#: JavaScript (async): wait for MathJax's typesetting, then count the math the page has,
+#: the formulas MathJax rendered, and raw TeX left in the visible text.
+MATH_STATE = r"""
+const done = arguments[arguments.length - 1];
+const count = () => {
+    const text = document.body.innerText;
+    done({
+        math: document.querySelectorAll("span.math, div.math").length,
+        rendered: document.querySelectorAll("mjx-container").length,
+        raw: ["\\(", "\\[", "$$"].filter(s => text.includes(s)),
+        mathjax: typeof window.MathJax !== "undefined" && !!window.MathJax.startup,
+    });
+};
+if (window.MathJax && MathJax.startup && MathJax.startup.promise) {
+    MathJax.startup.promise.then(count, count);
+} else {
+    count();
+}
+"""
+
+
+def math_problems(driver: webdriver.Chrome, url: str) -> list[str]:
+    """Math left as raw TeX on the page (MathJax did not load or did not typeset)."""
+    driver.set_script_timeout(30)
+    state = driver.execute_async_script(MATH_STATE)
+    if not state["math"]:
+        return []
+    problems = []
+    if not state["mathjax"]:
+        problems.append(f"{url}: has {state['math']} formulas but MathJax did not load")
+    elif state["rendered"] < state["math"]:
+        problems.append(f"{url}: MathJax rendered {state['rendered']} of {state['math']} formulas")
+    if state["raw"]:
+        problems.append(f"{url}: raw TeX visible ({', '.join(state['raw'])})")
+    return problems
+
+
+def check_page(driver: webdriver.Chrome, url: str, base: str, offline: bool = False) -> list[str]:
+    """Problems of one page: broken images and console errors; with ``offline`` also any
+    request to another host, and math that was not typeset."""
+    requested_urls(driver)  # drop the log of the pages before
     driver.get(url)
     deadline = time.monotonic() + 20
     while driver.execute_script("return document.readyState") != "complete":
@@ -100,6 +162,12 @@ def check_page(driver: webdriver.Chrome, url: str, base: str) -> list[str]:
             return [f"{url}: did not finish loading in 20 s"]
         time.sleep(0.05)
     problems = [f"{url}: image did not load: {src}" for src in driver.execute_script(BROKEN_IMAGES)]
+    if offline:
+        problems += math_problems(driver, url)
+        problems += [
+            f"{url}: request to another host: {u}"
+            for u in other_hosts(requested_urls(driver), base)
+        ]
     return problems + console_problems(driver, url, base)
 
 
@@ -176,8 +244,10 @@ def check_report(driver: webdriver.Chrome, url: str, base: str) -> tuple[list[st
 def site_pages(site: Path) -> list[str]:
     pages = sorted(p.relative_to(site).as_posix() for p in site.rglob("*.html"))
     api = [p for p in pages if p.startswith("api/generated/")]
-    # every page, but of the per-module API pages only the first (they share one template)
-    return [p for p in pages if not p.startswith(("api/generated/", "_"))] + api[:1]
+    # every page, but of the generated API pages (they share two templates) only the first
+    # and the page of pencore.simulate
+    sample = {*api[:1], *(p for p in api if p.endswith("/pencore.simulate.html"))}
+    return [p for p in pages if not p.startswith(("api/generated/", "_"))] + sorted(sample)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -192,11 +262,19 @@ def main(argv: list[str] | None = None) -> int:
     try:
         with serve(args.site) as base:
             pages = site_pages(args.site)
+            math_pages = 0
             for page in pages:
-                problems += check_page(driver, f"{base}/{page}", base)
+                problems += check_page(driver, f"{base}/{page}", base, offline=True)
+                html = (args.site / page).read_text(errors="replace")
+                math_pages += 'class="math notranslate' in html
             driver.get(f"{base}/index.html")
             driver.save_screenshot(str(args.screenshots / "docs-front-page.png"))
-            print(f"browser check: {len(pages)} pages of {args.site}")
+            print(
+                f"browser check: {len(pages)} pages of {args.site} ({math_pages} with math), "
+                "no request to another host allowed"
+            )
+            if not math_pages:
+                problems.append(f"{args.site}: no page with math was checked")
         if args.report:
             with serve(args.report.parent) as base:
                 url = f"{base}/{args.report.name}"

@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # The documentation, built strictly and opened in a real browser:
-#  1. Sphinx builds docs/ with warnings as errors (broken internal links, undefined
-#     substitutions, docstrings that do not render) and runs every example of the gallery
-#     (an example that raises fails the build);
+#  1. Sphinx builds docs/ with warnings as errors and nitpicky (-n -W: broken internal
+#     links, cross-references that do not resolve, undefined substitutions, docstrings that
+#     do not render) and runs every example of the gallery (an example that raises fails
+#     the build); it needs no network (intersphinx inventories in docs/_inventories/,
+#     MathJax from the docs extra, served by the site);
 #  2. the small configuration .test/config.yaml runs in a scratch clone and Snakemake
 #     writes its HTML report;
 #  3. headless chromium opens every page of the site and the report, and fails on an image
-#     that did not load or a script error (.ci/browser_check.py); screenshots of the front
-#     page and the report are kept in ci-artifacts/.
+#     that did not load, a script error, a docs page's request to another host, or math
+#     left as raw TeX (.ci/browser_check.py); screenshots of the front page and the report
+#     are kept in ci-artifacts/.
 # Needs the docs extra (python -m pip install -e '.[docs]') and Debian's chromium and
 # chromium-driver, which this script installs with apt-get when they are missing.
 set -euo pipefail
@@ -20,7 +23,7 @@ if [[ ! -x /usr/bin/chromium || ! -x /usr/bin/chromedriver ]]; then
 fi
 
 rm -rf docs/_build docs/auto_examples docs/api/generated
-python -m sphinx -W --keep-going -q -b html docs docs/_build/html
+python -m sphinx -n -W --keep-going -q -b html docs docs/_build/html
 echo "docs: built docs/_build/html"
 
 WORK=$(mktemp -d)

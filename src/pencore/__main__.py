@@ -1,8 +1,8 @@
-"""The ``pencore`` command and ``python -m pencore``: :func:`pencore.cli.main.main`, with
+"""The ``pencore`` command and ``python -m pencore``: ``pencore.cli.main.main()``, with
 Ctrl-C answered the same at every moment the process is ours.
 
 The command line ends a run interrupted by Ctrl-C with one line and exit status 130
-(:func:`pencore.cli.main.main`). This entry point extends that to the moments around it:
+(``pencore.cli.main.main()``). This entry point extends that to the moments around it:
 while the command line's modules load (the first tenth of a second) it says the same and
 exits 130, and once the command has returned, a late Ctrl-C no longer turns the finished
 command into a traceback during the interpreter's shutdown: the exit status is the

@@ -33,6 +33,7 @@ import math
 
 import numpy as np
 
+from pencore.errors import InputError
 from pencore.inputs.geometry import Projectile
 from pencore.inputs.target import Medium
 
@@ -50,27 +51,47 @@ __all__ = [
 def _coeffs3(medium: Medium) -> tuple[float, float, float]:
     c = list(medium.coefficients) + [0.0, 0.0, 0.0]
     if any(x != 0.0 for x in c[3:]):
-        raise ValueError("closed forms need sigma_n = a0 + a1 Vn + a2 Vn^2 (no higher terms)")
+        raise InputError("closed forms need sigma_n = a0 + a1 Vn + a2 Vn^2 (no higher terms)")
     if not medium.frictionless:
-        raise ValueError("closed forms are frictionless")
+        raise InputError("closed forms are frictionless")
     return c[0], c[1], c[2]
 
 
 def _coeffs(medium: Medium) -> tuple[float, float]:
     a0, a1, a2 = _coeffs3(medium)
     if a1 != 0.0:
-        raise ValueError("this closed form needs sigma_n = a0 + a2 Vn^2 (a1 = 0)")
+        raise InputError("this closed form needs sigma_n = a0 + a2 Vn^2 (a1 = 0)")
     return a0, a2
 
 
 def linear_nose_factor(projectile: Projectile, n: int = 4000) -> float:
-    """Linear nose factor ``N1`` (dimensionless): the axial force of the term ``a1 Vn`` on
-    the fully embedded nose at zero yaw is ``pi a^2 a1 N1 V``.
+    """Linear nose factor ``N1`` (dimensionless) of a projectile's nose.
 
-    ``N1 = int 2 pi r na^2 dl / (pi a^2)`` over the nose (``na`` the axial component of the
-    unit normal), by the same band quadrature as the entry profile (``n`` bands; for a
-    tangent ogive of CRH 3 the value converges to 1e-7 by ``n = 4000``). A flat nose has
-    ``N1 = 1``, a hemisphere ``2/3``.
+    The axial force of the term ``a1 Vn`` on the fully embedded nose at zero yaw is
+    ``pi a^2 a1 N1 V``. ``N1 = int 2 pi r na^2 dl / (pi a^2)`` over the nose (``na`` the
+    axial component of the unit normal), by the same band quadrature as the entry profile
+    (``n`` bands; for a tangent ogive of CRH 3 the value converges to 1e-7 by
+    ``n = 4000``). A flat nose has ``N1 = 1``, a hemisphere ``2/3``.
+
+    Parameters
+    ----------
+    projectile : Projectile
+        The body.
+    n : int, default 4000
+        Bands of the quadrature.
+
+    Returns
+    -------
+    float
+        ``N1`` (dimensionless).
+
+    Examples
+    --------
+    >>> import pencore
+    >>> from pencore import closedform
+    >>> hemi = pencore.Projectile("hemi", 0.03, pencore.OgiveNose(0.5, 7850.0))
+    >>> print(f"{closedform.linear_nose_factor(hemi):.4f}")
+    0.6667
     """
     _, _, b1, _ = _entry_profile(projectile, n)
     a = projectile.radius
@@ -78,8 +99,32 @@ def linear_nose_factor(projectile: Projectile, n: int = 4000) -> float:
 
 
 def axial_force(projectile: Projectile, medium: Medium, velocity: float) -> float:
-    """Axial resistance (N) on the fully embedded nose at speed ``velocity`` (m/s):
-    ``pi a^2 (a0 + a1 N1 V + a2 N* V^2)``."""
+    """Axial resistance on the fully embedded nose: ``pi a^2 (a0 + a1 N1 V + a2 N* V^2)``.
+
+    Parameters
+    ----------
+    projectile : Projectile
+        The body (:class:`~pencore.Projectile`; a library projectile:
+        ``pencore.get_projectile("p2")``).
+    medium : Medium
+        The target material (``pencore.get_target("soil").medium``); its resistance law
+        ``a0 + a1 Vn + a2 Vn^2`` (Pa).
+    velocity : float
+        Speed along the axis (m/s).
+
+    Returns
+    -------
+    float
+        The force (N).
+
+    Examples
+    --------
+    >>> import pencore
+    >>> from pencore import closedform
+    >>> p2, soil = pencore.get_projectile("p2"), pencore.get_target("soil").medium
+    >>> print(f"{closedform.axial_force(p2, soil, 280.0) / 1e3:.1f} kN")
+    365.3 kN
+    """
     a0, a1, a2 = _coeffs3(medium)
     a = projectile.radius
     lin = a1 * linear_nose_factor(projectile) * velocity if a1 != 0.0 else 0.0
@@ -96,13 +141,42 @@ def tunnel_depth(projectile: Projectile, medium: Medium, v1: float) -> float:
                        - b / (k sqrt(D)) (atan((2 k V1 + b) / sqrt(D)) - atan(b / sqrt(D))) ]
 
     (``int V dV / (k V^2 + b V + a0)``); ``D <= 0`` or ``k = 0`` by quadrature.
+
+    Parameters
+    ----------
+    projectile : Projectile
+        The body (:class:`~pencore.Projectile`; a library projectile:
+        ``pencore.get_projectile("p2")``).
+    medium : Medium
+        The target material (``pencore.get_target("soil").medium``); its resistance law
+        ``a0 + a1 Vn + a2 Vn^2`` (Pa).
+    v1 : float
+        Speed at full nose embedment (m/s).
+
+    Returns
+    -------
+    float
+        Distance travelled (m).
+
+    Raises
+    ------
+    InputError
+        ``a0 = 0`` (the projectile never stops).
+
+    Examples
+    --------
+    >>> import pencore
+    >>> from pencore import closedform
+    >>> p2, soil = pencore.get_projectile("p2"), pencore.get_target("soil").medium
+    >>> print(f"{closedform.tunnel_depth(p2, soil, 270.0):.3f} m")
+    3.918 m
     """
     a0, a1, a2 = _coeffs3(medium)
     a = projectile.radius
     m = projectile.mass_properties().mass
     ns = projectile.nose_factor()
     if a0 == 0.0:
-        raise ValueError("a0 = 0: the projectile never stops")
+        raise InputError("a0 = 0: the projectile never stops")
     if a1 == 0.0:
         return m / (2.0 * math.pi * a * a * ns * a2) * math.log1p(ns * a2 * v1 * v1 / a0)
     k, b = ns * a2, linear_nose_factor(projectile) * a1
@@ -140,12 +214,37 @@ def _entry_profile(projectile: Projectile, n: int = 4000) -> tuple[np.ndarray, .
 def nose_entry_speed(
     projectile: Projectile, medium: Medium, velocity: float
 ) -> tuple[float, float]:
-    """Speed (m/s) when the nose is fully embedded, and the tip depth (m) reached.
+    """Speed when the nose is fully embedded, and the tip depth reached.
 
     Solves ``m d(V^2)/dz = -2 (a0 A(z) + a1 B1(z) V + a2 B2(z) V^2)`` over the nose
     length: exactly per band piece when ``a1 = 0`` (linear in ``V^2``), else numerically
-    (:func:`_entry_three_term`). If the projectile stops before full embedment, returns
-    ``(0, z_stop)``.
+    (scipy's ``solve_ivp``).
+
+    Parameters
+    ----------
+    projectile : Projectile
+        The body (:class:`~pencore.Projectile`; a library projectile:
+        ``pencore.get_projectile("p2")``).
+    medium : Medium
+        The target material (``pencore.get_target("soil").medium``); its resistance law
+        ``a0 + a1 Vn + a2 Vn^2`` (Pa).
+    velocity : float
+        Impact speed (m/s).
+
+    Returns
+    -------
+    tuple of float
+        The speed (m/s) and the tip depth (m, the nose length); ``(0, z_stop)`` if the
+        projectile stops before full embedment.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> from pencore import closedform
+    >>> p2, soil = pencore.get_projectile("p2"), pencore.get_target("soil").medium
+    >>> v1, z = closedform.nose_entry_speed(p2, soil, 280.0)
+    >>> print(f"{v1:.1f} m/s at {z:.4f} m")
+    274.3 m/s at 0.1575 m
     """
     a0, a1, a2 = _coeffs3(medium)
     m = projectile.mass_properties().mass
@@ -219,12 +318,46 @@ def _advance(v2, a, b, a0, a2, m, dz):
 
 
 def depth(projectile: Projectile, medium: Medium, velocity: float) -> float:
-    """Tip depth (m) at rest for normal, zero-yaw, frictionless impact: exact nose-entry
-    phase (:func:`nose_entry_speed`) plus the tunnel-phase closed form; with a crater region
-    (``medium.crater_depth`` calibers) Forrestal's form (:func:`forrestal_crater_depth`),
-    which is pencore's crater (:mod:`pencore.kernels.crater`) in this limit."""
+    """Tip depth at rest for a normal, zero-yaw, frictionless impact on a half-space.
+
+    The exact nose-entry phase (:func:`~pencore.closedform.nose_entry_speed`) plus the
+    tunnel-phase closed form (:func:`~pencore.closedform.tunnel_depth`); with a crater
+    region (``medium.crater_depth`` calibers) Forrestal's form
+    (:func:`~pencore.closedform.forrestal_crater_depth`), which is pencore's crater
+    (:mod:`pencore.kernels.crater`) in this limit. :func:`~pencore.simulate` gives the
+    same depth for such an impact (``tests/test_closedform.py``).
+
+    Parameters
+    ----------
+    projectile : Projectile
+        The body (:class:`~pencore.Projectile`; a library projectile:
+        ``pencore.get_projectile("p2")``).
+    medium : Medium
+        The target material (``pencore.get_target("soil").medium``); its resistance law
+        ``a0 + a1 Vn + a2 Vn^2`` (Pa).
+    velocity : float
+        Impact speed (m/s).
+
+    Returns
+    -------
+    float
+        Tip depth at rest (m).
+
+    Raises
+    ------
+    InputError
+        A medium with a free-surface reduction (no closed form).
+
+    Examples
+    --------
+    >>> import pencore
+    >>> from pencore import closedform
+    >>> p2, soil = pencore.get_projectile("p2"), pencore.get_target("soil").medium
+    >>> print(f"{closedform.depth(p2, soil, 280.0):.3f} m")
+    4.152 m
+    """
     if medium.free_surface_depth > 0.0:
-        raise ValueError("closed forms have no free-surface reduction")
+        raise InputError("closed forms have no free-surface reduction")
     if medium.crater_depth > 0.0:
         return forrestal_crater_depth(projectile, medium, velocity, medium.crater_depth)
     v1, z = nose_entry_speed(projectile, medium, velocity)
@@ -234,14 +367,47 @@ def depth(projectile: Projectile, medium: Medium, velocity: float) -> float:
 
 
 def speed_at_depth(projectile: Projectile, medium: Medium, velocity: float, z: float) -> float:
-    """Speed (m/s) at tip depth ``z`` (m) >= the nose length, normal frictionless impact on
-    a half-space: the nose-entry speed (:func:`nose_entry_speed`) followed by the
+    """Speed at a tip depth past the nose, normal frictionless impact on a half-space.
+
+    The nose-entry speed (:func:`~pencore.closedform.nose_entry_speed`) followed by the
     tunnel-phase solution ``V^2 = (V1^2 + a0/(N* a2)) exp(-2 pi a^2 N* a2 (z - L_n)/m)
-    - a0/(N* a2)``; 0 once the body has stopped."""
+    - a0/(N* a2)`` (two-term law).
+
+    Parameters
+    ----------
+    projectile : Projectile
+        The body (:class:`~pencore.Projectile`; a library projectile:
+        ``pencore.get_projectile("p2")``).
+    medium : Medium
+        The target material (``pencore.get_target("soil").medium``); its resistance law
+        ``a0 + a1 Vn + a2 Vn^2`` (Pa).
+    velocity : float
+        Impact speed (m/s).
+    z : float
+        Tip depth (m), at least the nose length.
+
+    Returns
+    -------
+    float
+        Speed (m/s); 0 once the body has stopped.
+
+    Raises
+    ------
+    InputError
+        ``z`` inside the nose-entry phase.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> from pencore import closedform
+    >>> p2, soil = pencore.get_projectile("p2"), pencore.get_target("soil").medium
+    >>> print(f"{closedform.speed_at_depth(p2, soil, 280.0, 1.0):.1f} m/s")
+    228.2 m/s
+    """
     a0, a2 = _coeffs(medium)
     v1, zn = nose_entry_speed(projectile, medium, velocity)
     if z < zn:
-        raise ValueError(f"z = {z!r} m is inside the nose-entry phase (nose length {zn!r} m)")
+        raise InputError(f"z = {z!r} m is inside the nose-entry phase (nose length {zn!r} m)")
     if v1 == 0.0:
         return 0.0
     a = projectile.radius
@@ -255,7 +421,9 @@ def speed_at_depth(projectile: Projectile, medium: Medium, velocity: float, z: f
 def forrestal_crater_depth(
     projectile: Projectile, medium: Medium, velocity: float, k: float = 2.0
 ) -> float:
-    """Depth (m) with the crater region as a total force linear in tip depth, ``F = c z``
+    """Tip depth at rest with Forrestal's crater region, normal frictionless impact.
+
+    The crater region is a total force linear in tip depth, ``F = c z``
     for ``z < k d`` (Forrestal et al., IJIE 15 (1994) 395-405; k = 2 there), and
     ``F = pi a^2 (a0 + N* a2 V^2)`` below. ``c`` follows from continuity at ``z = k d``,
     ``c k d = pi a^2 (a0 + N* a2 V1^2)``, and the work ``c (k d)^2 / 2`` of the crater
@@ -269,12 +437,48 @@ def forrestal_crater_depth(
     (:mod:`pencore.kernels.crater`), ``c k d (1 + beta) = pi a^2 (a0 + N* a2 V0^2)`` with
     ``beta = k d pi a^2 N* a2 / m``, gives ``z = sqrt(m V0^2 / c)`` (continuous with the
     ``V1 = 0`` case; it is Li & Chen's shallow-penetration formula, IJIE 28 (2003) 93-116,
-    Eq. 15a, in dimensional form). Assumes the nose is embedded at ``z = k d`` (``k d >= L_n``)."""
+    Eq. 15a, in dimensional form). Assumes the nose is embedded at ``z = k d``
+    (``k d >= L_n``).
+
+    Parameters
+    ----------
+    projectile : Projectile
+        The body (:class:`~pencore.Projectile`; a library projectile:
+        ``pencore.get_projectile("p2")``).
+    medium : Medium
+        The target material (``pencore.get_target("soil").medium``); its resistance law
+        ``a0 + a1 Vn + a2 Vn^2`` (Pa).
+    velocity : float
+        Impact speed (m/s).
+    k : float, default 2
+        Depth of the crater region in calibers.
+
+    Returns
+    -------
+    float
+        Tip depth at rest (m).
+
+    Raises
+    ------
+    InputError
+        ``k d`` shorter than the nose.
+
+    Examples
+    --------
+    #2 into the paper's concrete at 500 m/s, with and without the crater region:
+
+    >>> import pencore
+    >>> from pencore import closedform
+    >>> p2, concrete = pencore.get_projectile("p2"), pencore.get_target("concrete").medium
+    >>> crater = closedform.forrestal_crater_depth(p2, concrete, 500.0)
+    >>> print(f"{crater:.3f} m, {closedform.depth(p2, concrete, 500.0):.3f} m")
+    1.419 m, 1.391 m
+    """
     a0, a2 = _coeffs(medium)
     a = projectile.radius
     kd = k * projectile.diameter
     if kd < projectile.nose_length * (1.0 - 1e-12):
-        raise ValueError(f"k d = {kd!r} m is shorter than the nose ({projectile.nose_length!r} m)")
+        raise InputError(f"k d = {kd!r} m is shorter than the nose ({projectile.nose_length!r} m)")
     m = projectile.mass_properties().mass
     ns = projectile.nose_factor()
     area = math.pi * a * a * kd

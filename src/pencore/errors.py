@@ -35,28 +35,117 @@ INTERRUPTED = "interrupted (Ctrl-C); nothing was written"
 
 
 class InputError(ValueError):
-    """Bad user input (name, file or value); the message names the value and what is allowed."""
+    """Bad user input: a name, file or value that pencore cannot use.
+
+    Raised by every public function before any work is done (nothing is written): an
+    unknown projectile or target name, a YAML file that cannot be read or holds an unknown
+    key, a number out of its range (:data:`pencore.inputs.limits.LIMITS`) or of the wrong
+    type (text or a boolean where a number belongs), a bad search bracket. The message is
+    one line naming the offending value and what is allowed; the command line prints it
+    as ``pencore: error: ...`` and exits with status 2. A subclass of :class:`ValueError`.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> try:
+    ...     pencore.simulate("p2", "soil", -5.0)
+    ... except pencore.InputError as exc:
+    ...     print(exc)
+    velocity must be in (0, 10000] m/s, got -5.0
+    """
 
 
 class GeometryError(InputError):
-    """A projectile definition that does not describe a valid body."""
+    """A projectile definition that does not describe a valid body.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> pencore.OgiveNose(crh=0.2, density=7850.0)
+    Traceback (most recent call last):
+    ...
+    pencore.errors.GeometryError: ogive CRH must be in [0.5, 100], got 0.2
+    """
 
 
 class TargetError(InputError):
-    """A target definition that cannot be used."""
+    """A target definition that cannot be used.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> pencore.Layer(pencore.get_target("soil").medium, "1 m")
+    Traceback (most recent call last):
+    ...
+    pencore.errors.TargetError: layer thickness must be a number of m, got '1 m' (str)
+    """
 
 
 class ConfigError(ValueError):
-    """A workflow configuration that cannot be run; the message is one line naming the
-    key path and the value."""
+    """A workflow configuration that cannot be run.
+
+    Raised by the workflow's configuration check before any job starts; the message is
+    one line naming the key path and the value (exit status 2). It is not an
+    :class:`InputError`: catch both to catch every refused input.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> issubclass(pencore.ConfigError, ValueError)
+    True
+    >>> issubclass(pencore.ConfigError, pencore.InputError)
+    False
+    """
 
 
 class SolverError(RuntimeError):
-    """The integration could not finish; the message names the cause and the state."""
+    """The integration of a trajectory could not finish.
+
+    Causes: the step size fell below ``numerics.h_min`` (a stiff or chattering contact:
+    ``step_underflow``), the step budget ``max_steps`` or the wall-time budget
+    ``max_wall`` ran out. The message names the cause, the state reached and the
+    numerics to change; the command line exits with status 1.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> try:
+    ...     pencore.simulate("p2", "soil", 280.0, max_steps=10)
+    ... except pencore.SolverError as exc:
+    ...     print(str(exc).split(";")[0])
+    step budget of 10 steps used up (raise numerics max_steps, or loosen rtol)
+    """
 
 
 class WriteError(OSError):
-    """A file could not be written; nothing was left behind. The message is one line."""
+    """A file could not be written; nothing was left behind.
+
+    Raised by :func:`~pencore.write_netcdf` and the workflow's writers: the destination
+    is a directory or a protected input, no permission, the disk is full. The message is
+    one line naming the path and the cause; ``errno`` is the operating system's error
+    number when there is one. The command line exits with status 1.
+
+    Parameters
+    ----------
+    message : str
+        The one-line message.
+    code : int, optional
+        The operating system's error number.
+
+    Examples
+    --------
+    A directory is never replaced by a file:
+
+    >>> import tempfile
+    >>> import xarray as xr
+    >>> import pencore
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     try:
+    ...         pencore.write_netcdf(xr.Dataset(), tmp, config_slice={}, study="example")
+    ...     except pencore.WriteError as exc:
+    ...         print(str(exc).split(": ", 1)[1])
+    it is a directory, not a regular file; only a regular file is replaced
+    """
 
     def __init__(self, message: str, code: int | None = None) -> None:
         super().__init__(message)
@@ -64,5 +153,22 @@ class WriteError(OSError):
 
 
 class ResultError(RuntimeError):
-    """A result file that cannot be read (corrupt or truncated); the message is one line
-    naming the file and how to make it again."""
+    """A result file that cannot be read (corrupt or truncated).
+
+    Raised by :func:`~pencore.read_netcdf`; the message is one line naming the file and
+    how to make it again.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> import pencore
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     bad = Path(tmp) / "bad.nc"
+    ...     _ = bad.write_bytes(b"not a netCDF file")
+    ...     try:
+    ...         pencore.read_netcdf(bad)
+    ...     except pencore.ResultError as exc:
+    ...         print("cannot be read" in str(exc))
+    True
+    """

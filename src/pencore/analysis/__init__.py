@@ -24,7 +24,7 @@ code names the quantity correctly.
 
 Definitions chosen here where the paper leaves a choice open:
 
-* **Points 1 and 2 of Eq. 12** (:func:`turning_angle`, default ``method="bracket"``):
+* **Points 1 and 2 of Eq. 12** (:func:`~pencore.turning_angle`, default ``method="bracket"``):
   the points where the trajectory curvature rises through, and finally falls back
   through, ``fraction`` (default 5 %) of its peak magnitude. The paper places them where
   ``d2y/dx2 = 0`` on the slope plot of Fig. 7(b): the trajectory is straight before entry
@@ -35,7 +35,7 @@ Definitions chosen here where the paper leaves a choice open:
   fraction of the peak finds the edges of the curved part; ``theta`` hardly changes
   where the curvature is small, so the result barely depends on the fraction (for
   projectile #2 at 45 deg and 1000 m/s, fractions 0.01 to 0.1 change it by less than 0.1 %).
-* **Final deviation** (:func:`final_deviation`): the velocity angle from the normal at
+* **Final deviation** (:func:`~pencore.final_deviation`): the velocity angle from the normal at
   the last saved state whose speed is still at least ``fraction`` (default 0.1) of the
   impact speed. Very near the stop the lateral part of the constant resistance term
   turns the slow projectile quickly, so the direction at the stop itself is not the

@@ -15,6 +15,8 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from pencore.errors import InputError
+
 #: Default noise threshold of :func:`inflection_points`, relative to the peak abs(curvature).
 #: A sign change counts only when the curvature reaches this fraction of its peak on both
 #: sides. Saved solver states are accurate to about ``rtol`` (1e-6); differencing them
@@ -40,7 +42,7 @@ STRAIGHT_TOL = 1e-9
 def _as_1d(name: str, a: Any) -> np.ndarray:
     arr = np.asarray(a, dtype=float)
     if arr.ndim != 1:
-        raise ValueError(f"{name} must be a 1-D array, got shape {arr.shape}")
+        raise InputError(f"{name} must be a 1-D array, got shape {arr.shape}")
     return arr
 
 
@@ -48,7 +50,7 @@ def _check_same(**arrays: np.ndarray) -> int:
     sizes = {k: v.size for k, v in arrays.items()}
     n = next(iter(sizes.values()))
     if any(s != n for s in sizes.values()):
-        raise ValueError(f"arrays must have the same length, got {sizes}")
+        raise InputError(f"arrays must have the same length, got {sizes}")
     return n
 
 
@@ -57,11 +59,11 @@ def _parameter(x: np.ndarray, y: np.ndarray, t: np.ndarray | None) -> np.ndarray
     if t is not None:
         d = np.diff(t)
         if np.any(~(d > 0.0)):
-            raise ValueError("t must be strictly increasing (no repeated or NaN times)")
+            raise InputError("t must be strictly increasing (no repeated or NaN times)")
         return t
     s = np.concatenate(([0.0], np.cumsum(np.hypot(np.diff(x), np.diff(y)))))
     if np.any(~(np.diff(s) > 0.0)):
-        raise ValueError(
+        raise InputError(
             "consecutive points coincide, so the chord-length parameter does not increase; "
             "pass the time array t or remove the repeated points"
         )
@@ -76,7 +78,7 @@ def _first_derivs(
     x: np.ndarray, y: np.ndarray, p: np.ndarray, vx: Any, vy: Any
 ) -> tuple[np.ndarray, np.ndarray]:
     if (vx is None) != (vy is None):
-        raise ValueError("give both vx and vy, or neither")
+        raise InputError("give both vx and vy, or neither")
     if vx is None:
         return _grad(x, p), _grad(y, p)
     xd, yd = _as_1d("vx", vx), _as_1d("vy", vy)
@@ -86,7 +88,7 @@ def _first_derivs(
 
 def _point_arrays(ds: xr.Dataset, point: str) -> tuple[np.ndarray, np.ndarray]:
     if point not in ("cm", "tip"):
-        raise ValueError(f"point must be 'cm' or 'tip', got {point!r}")
+        raise InputError(f"point must be 'cm' or 'tip', got {point!r}")
     return ds[f"{point}_x"].values.astype(float), ds[f"{point}_y"].values.astype(float)
 
 
@@ -116,21 +118,65 @@ def slope(x: Any, y: Any, t: Any = None) -> np.ndarray:
     -------
     (n,) ndarray
         ``dy/dx`` (dimensionless); ``+-inf`` or NaN where ``dx/dt = 0`` (vertical path).
-        For solver output :func:`slope_ds` uses the saved velocities, which are exact.
+        For solver output :func:`~pencore.slope_ds` uses the saved velocities, which are
+        exact.
+
+    Raises
+    ------
+    InputError
+        Arrays that are not 1-D or of different lengths, fewer than 2 points, or a time
+        that does not increase.
+
+    Examples
+    --------
+    The parabola ``y = x^2`` has slope ``2 x``:
+
+    >>> import numpy as np
+    >>> from pencore import slope
+    >>> x = np.linspace(0.0, 1.0, 5)
+    >>> slope(x, x**2, t=x).round(3)
+    array([0. , 0.5, 1. , 1.5, 2. ])
     """
     x, y = _as_1d("x", x), _as_1d("y", y)
     tt = None if t is None else _as_1d("t", t)
     n = _check_same(x=x, y=y) if tt is None else _check_same(x=x, y=y, t=tt)
     if n < 2:
-        raise ValueError(f"need at least 2 points, got {n}")
+        raise InputError(f"need at least 2 points, got {n}")
     p = _parameter(x, y, tt)
     with np.errstate(divide="ignore", invalid="ignore"):
         return _grad(y, p) / _grad(x, p)
 
 
 def slope_ds(ds: xr.Dataset, point: str = "cm") -> np.ndarray:
-    """Slope ``dy/dx`` of the centre-of-mass (``point="cm"``, from the saved velocity,
-    exact) or nose-tip (``point="tip"``, from :func:`slope` in time) path of a run."""
+    """Slope ``dy/dx`` of the path of a run.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A run of :func:`~pencore.simulate`.
+    point : {"cm", "tip"}, default "cm"
+        The centre-of-mass path (from the saved velocity, exact) or the nose-tip path
+        (:func:`~pencore.slope` in time).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``dy/dx`` (dimensionless) at each saved time; ``+-inf`` or NaN on a vertical path.
+
+    Raises
+    ------
+    InputError
+        ``point`` is neither ``"cm"`` nor ``"tip"``.
+
+    Examples
+    --------
+    At 45 deg obliquity the path starts at slope -1 (the paper's Fig. 7b):
+
+    >>> import pencore
+    >>> ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0)
+    >>> print(f"{pencore.slope_ds(ds)[0]:.3f}")
+    -1.000
+    """
     if point == "cm":
         with np.errstate(divide="ignore", invalid="ignore"):
             return ds["vel_y"].values / ds["vel_x"].values
@@ -160,14 +206,31 @@ def signed_curvature(
         ``+x`` (``dx/dt > 0``) its sign is that of ``d2y/dx2``: positive when the slope
         grows, i.e. when a downward path turns back towards the surface. NaN where the
         speed is zero.
+
+    Raises
+    ------
+    InputError
+        Arrays that are not 1-D or of different lengths, fewer than 3 points, a time that
+        does not increase, or ``vx``, ``vy`` without ``t`` (or one without the other).
+
+    Examples
+    --------
+    A circle of radius 2 m run counter-clockwise has curvature 1/2 1/m:
+
+    >>> import numpy as np
+    >>> from pencore import signed_curvature
+    >>> a = np.linspace(0.0, np.pi, 400)
+    >>> k = signed_curvature(2.0 * np.cos(a), 2.0 * np.sin(a), a)
+    >>> print(f"{k[1:-1].min():.4f} {k[1:-1].max():.4f}")
+    0.5000 0.5000
     """
     x, y = _as_1d("x", x), _as_1d("y", y)
     tt = None if t is None else _as_1d("t", t)
     n = _check_same(x=x, y=y) if tt is None else _check_same(x=x, y=y, t=tt)
     if n < 3:
-        raise ValueError(f"need at least 3 points, got {n}")
+        raise InputError(f"need at least 3 points, got {n}")
     if tt is None and vx is not None:
-        raise ValueError("vx, vy are time derivatives: give t as well")
+        raise InputError("vx, vy are time derivatives: give t as well")
     p = _parameter(x, y, tt)
     xd, yd = _first_derivs(x, y, p, vx, vy)
     xdd, ydd = _grad(xd, p), _grad(yd, p)
@@ -210,6 +273,15 @@ class Inflections:
         Peak abs(curvature) (1/m) over the samples considered.
     threshold : float
         abs(curvature) (1/m) that a lobe had to exceed to count.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pencore import inflection_points
+    >>> x = np.linspace(-1.0, 1.0, 201)
+    >>> found = inflection_points(x, x**3)
+    >>> len(found), found.direction.tolist(), f"{found.x[0]:.3f}"
+    (1, [1], '0.000')
     """
 
     index: np.ndarray
@@ -221,6 +293,7 @@ class Inflections:
     threshold: float
 
     def __len__(self) -> int:
+        """The number of inflection points."""
         return int(self.index.size)
 
 
@@ -267,10 +340,12 @@ def inflection_points(
         Time (s), strictly increasing, possibly non-uniform; default chord length.
     rel_threshold : float
         Noise threshold relative to the peak abs(curvature) (default
-        :data:`DEFAULT_REL_THRESHOLD` = 1e-2): a sign change counts only when the
+        :data:`~pencore.analysis.curvature.DEFAULT_REL_THRESHOLD` = 1e-2): a sign change counts
+        only when the
         curvature exceeds ``rel_threshold * peak`` on both sides of it, so wiggles below
         that level (differencing noise, exit or stop transients) are ignored. A path whose
-        peak abs(curvature) times its chord length is below :data:`STRAIGHT_TOL` is straight
+        peak abs(curvature) times its chord length is below
+        :data:`~pencore.analysis.curvature.STRAIGHT_TOL` is straight
         and has none.
     vx, vy : (n,) array_like, optional
         Exact ``dx/dt``, ``dy/dt`` (m/s) if known; needs ``t``.
@@ -279,9 +354,26 @@ def inflection_points(
     -------
     Inflections
         Possibly empty.
+
+    Raises
+    ------
+    InputError
+        ``rel_threshold`` outside [0, 1), arrays that are not 1-D or of different
+        lengths, fewer than 3 points, or a time that does not increase.
+
+    Examples
+    --------
+    ``y = sin(x)`` on ``[0.5, 6]`` changes its curvature's sign at ``x = pi``:
+
+    >>> import numpy as np
+    >>> from pencore import inflection_points
+    >>> x = np.linspace(0.5, 6.0, 500)
+    >>> found = inflection_points(x, np.sin(x))
+    >>> print(len(found), f"{found.x[0]:.3f}", found.direction[0])
+    1 3.142 1
     """
     if not (0.0 <= rel_threshold < 1.0):
-        raise ValueError(f"rel_threshold must be in [0, 1), got {rel_threshold!r}")
+        raise InputError(f"rel_threshold must be in [0, 1), got {rel_threshold!r}")
     x, y = _as_1d("x", x), _as_1d("y", y)
     tt = None if t is None else _as_1d("t", t)
     kappa = signed_curvature(x, y, tt, vx=vx, vy=vy)
@@ -310,7 +402,7 @@ def inflection_points(
 def _window_end(speed: np.ndarray, impact_speed: float, speed_fraction: float) -> int:
     """Index of the last sample whose speed is >= speed_fraction * impact_speed."""
     if not (0.0 <= speed_fraction < 1.0):
-        raise ValueError(f"speed_fraction must be in [0, 1), got {speed_fraction!r}")
+        raise InputError(f"speed_fraction must be in [0, 1), got {speed_fraction!r}")
     ok = np.flatnonzero(speed >= speed_fraction * impact_speed)
     return int(ok[-1]) if ok.size else -1
 
@@ -322,9 +414,44 @@ def inflection_points_ds(
     rel_threshold: float = DEFAULT_REL_THRESHOLD,
     speed_fraction: float = DEFAULT_SPEED_FRACTION,
 ) -> Inflections:
-    """:func:`inflection_points` of a run's centre-of-mass (exact velocities) or tip path,
-    over the samples up to the last one with speed >= ``speed_fraction`` x impact speed
-    (the curvature of a nearly stopped projectile is not part of the trajectory)."""
+    """Inflection points of a run's path (``d2y/dx2 = 0``).
+
+    :func:`~pencore.inflection_points` of the centre-of-mass path (with the exact saved
+    velocities) or of the nose-tip path, over the samples up to the last one with speed
+    >= ``speed_fraction`` x impact speed (the curvature of a nearly stopped projectile is
+    not part of the trajectory).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A run of :func:`~pencore.simulate`.
+    point : {"cm", "tip"}, default "cm"
+        Which path.
+    rel_threshold : float, default 0.01
+        Noise threshold relative to the peak abs(curvature), in [0, 1)
+        (:func:`~pencore.inflection_points`).
+    speed_fraction : float, default 0.1
+        Part of the run analysed, as a fraction of the impact speed, in [0, 1).
+
+    Returns
+    -------
+    Inflections
+        Times (``param``, s) and positions (``x``, ``y``, m) of the sign changes.
+
+    Raises
+    ------
+    InputError
+        ``point`` other than ``"cm"`` or ``"tip"``, ``rel_threshold`` or
+        ``speed_fraction`` out of range.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0, start=(-1.0, 1.0, 0.0))
+    >>> found = pencore.inflection_points_ds(ds)
+    >>> print(len(found), [f"{1e3 * t:.2f} ms" for t in found.param])
+    3 ['1.56 ms', '1.70 ms', '2.32 ms']
+    """
     end = _window_end(ds["speed"].values, _impact_speed(ds), speed_fraction)
     sl = slice(0, end + 1)
     t = ds["time"].values[sl]

@@ -19,6 +19,7 @@ from pencore.analysis.curvature import (
     _impact_speed,
     _window_end,
 )
+from pencore.errors import InputError
 
 _NAN = float("nan")
 
@@ -47,6 +48,14 @@ def deviation_from_normal(vx: Any, vy: Any, vz: Any = 0.0, *, signed: bool = Fal
     -------
     float or ndarray
         Degrees; a float for scalar input.
+
+    Examples
+    --------
+    >>> from pencore import deviation_from_normal
+    >>> deviation_from_normal(0.0, -100.0), deviation_from_normal(100.0, -100.0)
+    (0.0, 45.0)
+    >>> deviation_from_normal([-100.0, 100.0], [-100.0, 100.0], signed=True)
+    array([-45., 135.])
     """
     vx, vy, vz = np.asarray(vx, float), np.asarray(vy, float), np.asarray(vz, float)
     if signed:
@@ -107,8 +116,23 @@ def final_deviation(
         Output of :func:`pencore.simulate`.
     fraction : float
         Speed fraction in [0, 1).
-    signed : bool
+    signed : bool, default False
         Signed in-plane angle (positive towards +x) instead of the unsigned one.
+
+    Returns
+    -------
+    float
+        The deviation (deg), in [0, 180] (signed: in (-180, 180]); NaN when no saved
+        state is fast enough.
+
+    Examples
+    --------
+    The path of #2 at 45 deg obliquity and 1000 m/s curves away from the normal:
+
+    >>> import pencore
+    >>> ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0)
+    >>> print(f"{pencore.final_deviation(ds):.0f} deg")
+    46 deg
     """
     return final_deviation_arrays(
         ds["vel_x"].values,
@@ -121,25 +145,73 @@ def final_deviation(
 
 
 def nose_direction(data: xr.Dataset | Any) -> str:
-    """``'+x'`` or ``'-x'``: the side the nose points to at the end of the run.
+    """The side the nose points to at the end of the run: ``'+x'`` or ``'-x'``.
 
     The sign of the axis component ``axis_x`` at the last saved state (Figs 11-12);
-    ``axis_x == 0`` (a nose pointing straight down) counts as ``'+x'``. ``data`` is a
-    :func:`pencore.simulate` dataset or an ``axis_x`` history.
+    ``axis_x == 0`` (a nose pointing straight down) counts as ``'+x'``.
+
+    Parameters
+    ----------
+    data : xarray.Dataset or array_like
+        A :func:`~pencore.simulate` dataset or an ``axis_x`` history.
+
+    Returns
+    -------
+    str
+        ``'+x'`` or ``'-x'``.
+
+    Raises
+    ------
+    InputError
+        ``axis_x`` at the end is NaN.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> pencore.nose_direction(pencore.simulate("p2", "soil", 1000.0, obliquity=45.0))
+    '+x'
+    >>> pencore.nose_direction([0.5, 0.1, -0.2])
+    '-x'
     """
     ax = data["axis_x"].values if isinstance(data, xr.Dataset) else np.asarray(data, float)
     last = float(np.ravel(ax)[-1])
     if math.isnan(last):
-        raise ValueError("axis_x at the end is NaN")
+        raise InputError("axis_x at the end is NaN")
     return "+x" if last >= 0.0 else "-x"
 
 
 def reversed_in_target(ds: xr.Dataset) -> bool:
-    """True if the run turned back towards the surface while in the target.
+    """Whether the run turned back towards the surface while in the target.
 
-    Reads the ``reversed`` attribute written by :func:`pencore.simulate` (set when the
+    Reads the ``reversed`` attribute written by :func:`~pencore.simulate` (set when the
     centre-of-mass velocity gets ``vel_y >= 0`` while part of the body is below the
-    surface and the speed is >= ``v_stop``).
+    surface and the speed is >= ``v_stop``): the verdict of :func:`~pencore.vcr`.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A run of :func:`~pencore.simulate`.
+
+    Returns
+    -------
+    bool
+
+    Raises
+    ------
+    KeyError
+        ``ds`` has no ``reversed`` attribute (it was not made by ``simulate``).
+
+    Examples
+    --------
+    #2 at 45 deg obliquity turns back at 1800 m/s, not at 1000 m/s (the paper's Fig. 7):
+
+    >>> import pencore
+    >>> start = (-1.0, 1.0, 0.0)  # the nose 1 m above the surface
+    >>> for v in (1000.0, 1800.0):
+    ...     ds = pencore.simulate("p2", "soil", v, obliquity=45.0, start=start)
+    ...     print(v, pencore.reversed_in_target(ds))
+    1000.0 False
+    1800.0 True
     """
     if "reversed" not in ds.attrs:
         raise KeyError("dataset has no 'reversed' attribute; was it made by pencore.simulate?")

@@ -27,6 +27,7 @@ from pencore.analysis.curvature import (
     inflection_points,
     signed_curvature,
 )
+from pencore.errors import InputError
 
 
 @dataclass(frozen=True)
@@ -47,6 +48,14 @@ class TurningAngle:
         ``"bracket"`` or ``"sign_change"`` (see :func:`turning_angle`).
     reason : str
         Empty when the value is defined, otherwise why it is NaN.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0, start=(-1.0, 1.0, 0.0))
+    >>> ta = pencore.turning_angle(ds)
+    >>> print(ta.ok, ta.method, f"{float(ta):.1f} deg")
+    True bracket 1.2 deg
     """
 
     delta_theta: float
@@ -63,6 +72,7 @@ class TurningAngle:
 
     @property
     def ok(self) -> bool:
+        """True when ``delta_theta`` is defined (``reason`` is empty)."""
         return not self.reason
 
     def __float__(self) -> float:
@@ -104,9 +114,9 @@ def turning_angle_arrays(
         As in :func:`turning_angle`.
     """
     if method not in ("bracket", "sign_change"):
-        raise ValueError(f"method must be 'bracket' or 'sign_change', got {method!r}")
+        raise InputError(f"method must be 'bracket' or 'sign_change', got {method!r}")
     if not (0.0 < fraction < 1.0):
-        raise ValueError(f"fraction must be in (0, 1), got {fraction!r}")
+        raise InputError(f"fraction must be in (0, 1), got {fraction!r}")
     tt, x, y, th = (_as_1d(k, a) for k, a in (("t", t), ("x", x), ("y", y), ("theta", theta)))
     _check_same(t=tt, x=x, y=y, theta=th)
     p = _parameter(x, y, tt)
@@ -218,7 +228,7 @@ def turning_angle(
         or was cut while turning).
     ``method="sign_change"``
         The first and the last significant sign changes of the curvature
-        (:func:`inflection_points` with ``rel_threshold``). In solver runs these lie inside
+        (:func:`~pencore.inflection_points` with ``rel_threshold``). In solver runs these lie inside
         the nose-entry transient and miss the start of the turn; offered to show how much
         the choice matters. NaN when there are fewer than two.
 
@@ -241,6 +251,24 @@ def turning_angle(
     -------
     TurningAngle
         ``delta_theta`` (degree) with the two points, or NaN and ``reason``.
+
+    Raises
+    ------
+    InputError
+        An unknown ``method``, a ``fraction`` outside (0, 1), a ``speed_fraction`` outside
+        [0, 1), a mapping without the keys ``t``, ``x``, ``y``, ``theta``, or arrays of
+        different lengths or a time that does not increase.
+
+    Examples
+    --------
+    #2 at 45 deg obliquity and 1000 m/s, the nose starting 1 m above the surface (the
+    paper's Figs 7 and 9):
+
+    >>> import pencore
+    >>> ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0, start=(-1.0, 1.0, 0.0))
+    >>> ta = pencore.turning_angle(ds)
+    >>> print(f"{ta.delta_theta:.1f} deg between t = {1e3 * ta.t_1:.2f} and {1e3 * ta.t_2:.2f} ms")
+    1.2 deg between t = 1.42 and 2.33 ms
     """
     kw = dict(
         method=method, fraction=fraction, speed_fraction=speed_fraction, rel_threshold=rel_threshold
@@ -258,7 +286,7 @@ def turning_angle(
         )
     missing = {"t", "x", "y", "theta"} - set(data)
     if missing:
-        raise ValueError(f"mapping needs keys t, x, y, theta; missing {sorted(missing)}")
+        raise InputError(f"mapping needs keys t, x, y, theta; missing {sorted(missing)}")
     return turning_angle_arrays(
         data["t"],
         data["x"],

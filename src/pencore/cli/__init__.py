@@ -1,4 +1,4 @@
-"""The ``pencore`` command line (:func:`main.main`)."""
+"""The ``pencore`` command line (``pencore.cli.main.main()``)."""
 
 from pencore.cli.main import build_parser, main
 

@@ -22,7 +22,7 @@ __all__ = ["add_parser", "run"]
 
 
 def add_parser(sub: argparse._SubParsersAction) -> None:
-    """Register ``ballistic-limit`` on the subparsers of :func:`pencore.cli.main.build_parser`."""
+    """Register ``ballistic-limit`` on the subparsers of ``pencore.cli.main.build_parser()``."""
     p = sub.add_parser(
         "ballistic-limit",
         help="search the ballistic limit (m/s) of a finite target",

@@ -12,7 +12,7 @@ __all__ = ["add_parsers", "list_library", "fit_table3"]
 
 def add_parsers(sub: argparse._SubParsersAction) -> None:
     """Register ``fit-table3`` and ``list`` on the subparsers of
-    :func:`pencore.cli.main.build_parser`."""
+    ``pencore.cli.main.build_parser()``."""
     fit3 = sub.add_parser(
         "fit-table3",
         help="fit the p1..p4 geometry (diameter and shank length in m) to the paper's "

@@ -59,7 +59,7 @@ def exit_at_once_on_interrupt() -> None:
 
 
 class CommandFailure(Exception):
-    """An error that :func:`pencore.cli.main.main` reports as one line and an exit status.
+    """An error that ``pencore.cli.main.main()`` reports as one line and an exit status.
 
     Parameters
     ----------
@@ -85,6 +85,7 @@ class Parser(argparse.ArgumentParser):
     """
 
     def error(self, message: str) -> NoReturn:
+        """Exit with status 2 and one line naming the error and ``--help``."""
         self.exit(2, f"{PROG}: error: {one_line(message)} (see '{self.prog} --help')\n")
 
     def _print_message(self, message: str, file: Any = None) -> None:

@@ -47,7 +47,7 @@ and targets.
 
 
 def add_parser(sub: argparse._SubParsersAction) -> None:
-    """Register ``simulate`` on the subparsers of :func:`pencore.cli.main.build_parser`."""
+    """Register ``simulate`` on the subparsers of ``pencore.cli.main.build_parser()``."""
     sim = sub.add_parser(
         "simulate",
         help="simulate one impact and print a summary (m, m/s, deg, rad/s)",
@@ -146,7 +146,7 @@ def _fmt_slope(s: float) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Run one impact and print its summary; errors propagate to :func:`pencore.cli.main.main`."""
+    """Run one impact and print its summary; errors propagate to ``pencore.cli.main.main()``."""
     from pencore.errors import WriteError
     from pencore.inputs.library import get_projectile, get_target
     from pencore.io.netcdf import write_netcdf

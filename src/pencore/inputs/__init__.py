@@ -3,7 +3,7 @@
 =================  ==============================================================
 module             contents
 =================  ==============================================================
-``limits``         the valid range of every quantity (:data:`limits.LIMITS`), checks
+``limits``         the valid range of every quantity (:data:`~pencore.inputs.limits.LIMITS`), checks
 ``geometry``       projectile bodies of revolution, mass properties, surface rings
 ``target``         media (resistance and friction laws, depth windows), layers
 ``library``        the named projectiles and targets, YAML files, the Table-3 fit
@@ -14,3 +14,35 @@ module             contents
 
 Nothing here runs the solver or imports numba.
 """
+
+from pencore._lazy import attach
+
+__getattr__, __dir__, __all__ = attach(
+    __name__,
+    {
+        "Projectile": "geometry",
+        "OgiveNose": "geometry",
+        "ConeNose": "geometry",
+        "FlatNose": "geometry",
+        "Cylinder": "geometry",
+        "MassProperties": "geometry",
+        "Medium": "target",
+        "Layer": "target",
+        "Target": "target",
+        "Numerics": "numerics",
+        "ShankModel": "models",
+        "Emulation": "models",
+        "get_projectile": "library",
+        "get_target": "library",
+        "projectile_names": "library",
+        "target_names": "library",
+        "projectile_from_dict": "library",
+        "target_from_dict": "library",
+        "table3_fit": "library",
+        "Table3Fit": "library",
+        "LIMITS": "limits",
+        "Limit": "limits",
+        "normal_impact_angles": "conventions",
+    },
+)
+del attach

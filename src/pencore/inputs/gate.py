@@ -23,7 +23,8 @@ before it can hang or exhaust the process:
 * when it is not YAML: a control character (BEL, ESC, NUL), bad syntax, a tag pencore
   does not construct; the message gives the line and column.
 
-The text is scanned by libyaml's C parser when PyYAML has it (:data:`FAST_YAML`), by
+The text is scanned by libyaml's C parser when PyYAML has it
+(:data:`~pencore.inputs.gate.FAST_YAML`), by
 PyYAML's Python one otherwise; ``benchmarks/bench_parse.py`` measures the worst inputs
 within these bounds.
 
@@ -144,6 +145,7 @@ try:
     from yaml.cyaml import CParser as _CParser
 except ImportError:  # pragma: no cover - PyYAML built without libyaml
     _CParser = None
+#: True when PyYAML has libyaml's C parser, which then scans the text.
 FAST_YAML: bool = bool(getattr(yaml, "__with_libyaml__", False)) and _CParser is not None
 
 if FAST_YAML:

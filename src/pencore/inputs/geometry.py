@@ -54,7 +54,27 @@ def _check(key: str, value: float) -> float:
 class OgiveNose:
     """Tangent-ogive nose of calibre-radius-head ``crh`` (CRH = ogive radius / diameter).
 
-    ``crh = 0.5`` is the hemisphere. Nose length is ``a sqrt(4 crh - 1)``.
+    ``crh = 0.5`` is the hemisphere. Nose length is ``a sqrt(4 crh - 1)`` for the body
+    radius ``a``.
+
+    Parameters
+    ----------
+    crh : float
+        Ogive radius over the body diameter (dimensionless), >= 0.5.
+    density : float
+        Mass density of the nose (kg/m^3).
+
+    Raises
+    ------
+    GeometryError
+        A value that is not a finite number in its range (:data:`pencore.inputs.limits.LIMITS`).
+
+    Examples
+    --------
+    >>> import pencore
+    >>> nose = pencore.OgiveNose(crh=3.0, density=7850.0)
+    >>> print(f"{nose.length(0.015):.4f} m")
+    0.0497 m
     """
 
     crh: float
@@ -65,9 +85,11 @@ class OgiveNose:
         _check("density", self.density)
 
     def length(self, a: float) -> float:
+        """Nose length (m) for the body radius ``a`` (m)."""
         return a * math.sqrt(4.0 * self.crh - 1.0)
 
     def radius(self, s: np.ndarray, a: float) -> np.ndarray:
+        """Nose radius (m) at distance ``s`` (m) from the tip, body radius ``a`` (m)."""
         ro = 2.0 * self.crh * a
         ln = self.length(a)
         return np.sqrt(np.maximum(ro * ro - (ln - s) ** 2, 0.0)) - (ro - a)
@@ -94,6 +116,7 @@ class OgiveNose:
         return ln - ro * np.sin(beta), r
 
     def exact_area(self, a: float) -> float:
+        """Area of the nose surface (m^2) for the body radius ``a`` (m), in closed form."""
         ro = 2.0 * self.crh * a
         beta_tip = math.asin(min(self.length(a) / ro, 1.0))
         # integral of 2 pi r dl with r = ro cos b - (ro - a), dl = ro db
@@ -102,7 +125,28 @@ class OgiveNose:
 
 @dataclass(frozen=True)
 class ConeNose:
-    """Conical nose with half-angle ``half_angle`` (rad)."""
+    """Conical nose.
+
+    Parameters
+    ----------
+    half_angle : float
+        Half-angle of the cone (rad), in (0, pi/2).
+    density : float
+        Mass density of the nose (kg/m^3).
+
+    Raises
+    ------
+    GeometryError
+        A value that is not a finite number in its range.
+
+    Examples
+    --------
+    >>> import math
+    >>> import pencore
+    >>> nose = pencore.ConeNose(math.radians(20.0), 7850.0)
+    >>> print(f"{nose.length(0.015):.4f} m")
+    0.0412 m
+    """
 
     half_angle: float
     density: float
@@ -116,12 +160,15 @@ class ConeNose:
         _check("density", self.density)
 
     def length(self, a: float) -> float:
+        """Nose length (m) for the body radius ``a`` (m)."""
         return a / math.tan(self.half_angle)
 
     def radius(self, s: np.ndarray, a: float) -> np.ndarray:
+        """Nose radius (m) at distance ``s`` (m) from the tip, body radius ``a`` (m)."""
         return np.asarray(s) * math.tan(self.half_angle)
 
     def rings(self, a: float, n: int) -> tuple[np.ndarray, ...]:
+        """``n`` surface bands of the nose: ``s, r, na, nr, dl`` (m, m, -, -, m) each."""
         ln = self.length(a)
         edges = np.linspace(0.0, ln, n + 1)
         s = 0.5 * (edges[:-1] + edges[1:])
@@ -140,12 +187,25 @@ class ConeNose:
         return s, s * math.tan(self.half_angle)
 
     def exact_area(self, a: float) -> float:
+        """Area of the nose surface (m^2) for the body radius ``a`` (m), in closed form."""
         return math.pi * a * a / math.sin(self.half_angle)
 
 
 @dataclass(frozen=True)
 class FlatNose:
-    """Blunt nose: a flat circular face at the tip (zero length)."""
+    """Blunt nose: a flat circular face at the tip (zero length).
+
+    Parameters
+    ----------
+    density : float, default 7850
+        Mass density (kg/m^3); the face has no volume, so it only labels the nose.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> pencore.FlatNose().length(0.015)
+    0.0
+    """
 
     density: float = 7850.0
 
@@ -153,12 +213,15 @@ class FlatNose:
         _check("density", self.density)
 
     def length(self, a: float) -> float:
+        """Nose length (m) for the body radius ``a`` (m)."""
         return 0.0
 
     def radius(self, s: np.ndarray, a: float) -> np.ndarray:
+        """Nose radius (m) at distance ``s`` (m) from the tip, body radius ``a`` (m)."""
         return np.zeros_like(np.asarray(s, dtype=float))
 
     def rings(self, a: float, n: int) -> tuple[np.ndarray, ...]:
+        """``n`` surface bands of the nose: ``s, r, na, nr, dl`` (m, m, -, -, m) each."""
         return _disc_rings(a, n, 0.0, +1.0)
 
     def nodes(self, a: float, n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -166,6 +229,7 @@ class FlatNose:
         return np.zeros(n + 1), np.linspace(0.0, a, n + 1)
 
     def exact_area(self, a: float) -> float:
+        """Area of the nose surface (m^2) for the body radius ``a`` (m), in closed form."""
         return math.pi * a * a
 
 
@@ -177,7 +241,26 @@ def _disc_rings(a: float, n: int, s0: float, sign: float) -> tuple[np.ndarray, .
 
 @dataclass(frozen=True)
 class Cylinder:
-    """Cylindrical (shank) segment of given length (m) and density (kg/m^3)."""
+    """Cylindrical (shank) segment of a projectile, of the body's diameter.
+
+    Parameters
+    ----------
+    length : float
+        Segment length (m), > 0.
+    density : float
+        Mass density (kg/m^3), > 0.
+
+    Raises
+    ------
+    GeometryError
+        A value that is not a finite number in its range.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> pencore.Cylinder(0.2, 7850.0)
+    Cylinder(length=0.2, density=7850.0)
+    """
 
     length: float
     density: float
@@ -249,6 +332,29 @@ class Projectile:
         Cylindrical segments from front to back.
     source : str
         Provenance of the numbers (``paper``, ``derived: ...``, ``assumed: ...``).
+
+    Raises
+    ------
+    GeometryError
+        A value out of its range, a nose or segment of the wrong type, a name that is not
+        text (the one-line message names it).
+
+    Examples
+    --------
+    A 30 mm steel projectile with a 3-CRH ogive nose and a 0.2 m shank:
+
+    >>> import pencore
+    >>> p = pencore.Projectile(
+    ...     "ogive", 0.03, pencore.OgiveNose(crh=3.0, density=7850.0),
+    ...     (pencore.Cylinder(0.2, 7850.0),),
+    ... )
+    >>> mp = p.mass_properties()
+    >>> print(f"{mp.mass:.3f} kg, length {p.length:.4f} m, Lc {mp.lc:.4f} m")
+    1.261 kg, length 0.2497 m, Lc 0.1359 m
+    >>> pencore.Projectile("bad", -0.03, pencore.OgiveNose(3.0, 7850.0))
+    Traceback (most recent call last):
+    ...
+    pencore.errors.GeometryError: diameter must be in [0.0001, 10] m, got -0.03
     """
 
     name: str
@@ -381,7 +487,7 @@ class Projectile:
         s, r : (k + 1,) float
             Nodes: axial distance from the tip and radius (m).
         part : (k,) int8
-            Per segment: 0 nose, 1 shank, 2 flat face (as :attr:`Rings.part`).
+            Per segment: 0 nose, 1 shank, 2 flat face (as ``Rings.part``).
         """
         if n_nose < 1 or n_shank < 1 or n_face < 1:
             raise GeometryError("ring counts must be >= 1")

@@ -110,6 +110,7 @@ class Table3Fit:
         return max(max(abs(dm) / 0.05, abs(dl) / 0.0005) for dm, dl in self.residuals.values())
 
     def report(self) -> str:
+        """The fit and its residuals as text, one line per projectile."""
         lines = [
             f"Table 3 fit: diameter = {self.diameter * 1e3:.2f} mm, "
             f"shank length = {self.shank_length * 1e3:.1f} mm, "
@@ -166,8 +167,21 @@ def table3_fit() -> Table3Fit:
 
     Minimax fit of the residuals scaled by the table's rounding (0.05 kg, 0.0005 in Lc/L):
     the geometry whose worst number is closest to its stated value. Started from the
-    least-squares solution. See :func:`table3_mass_bound` for why no geometry reaches
-    the rounding exactly.
+    least-squares solution. See :func:`pencore.inputs.library.table3_mass_bound` for why
+    no geometry reaches the rounding exactly. The library's ``p1``..``p4`` use the shipped
+    result of this fit.
+
+    Returns
+    -------
+    pencore.inputs.library.Table3Fit
+        ``diameter`` and ``shank_length`` (m) and the residuals of each projectile.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> fit = pencore.table3_fit()
+    >>> print(f"d = {fit.diameter * 1e3:.2f} mm, shank {fit.shank_length * 1e3:.1f} mm")
+    d = 94.97 mm, shank 503.5 mm
     """
     from scipy.optimize import least_squares, minimize
 
@@ -290,10 +304,36 @@ def _named_projectiles() -> dict[str, Projectile]:
 
 
 def projectile_names() -> list[str]:
+    """The names of the library's projectiles (``pencore list`` shows their provenance).
+
+    Returns
+    -------
+    list of str
+        Sorted: the paper's ``p1``..``p4`` (Table 3) and the validation projectiles.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> [name for name in pencore.projectile_names() if name.startswith("p")]
+    ['p1', 'p2', 'p3', 'p4']
+    """
     return sorted(_named_projectiles())
 
 
 def target_names() -> list[str]:
+    """The names of the library's targets (semi-infinite, one medium each).
+
+    Returns
+    -------
+    list of str
+        Sorted; the paper's Table 1 media and the validation targets.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> pencore.target_names()
+    ['aluminium', 'aluminium_3term', 'concrete', 'soil']
+    """
     return sorted(MEDIA)
 
 
@@ -327,7 +367,8 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
     """Build a projectile from a mapping (the YAML format of the user guide's inputs page).
 
     Unknown keys, booleans or text where numbers belong, and values outside
-    :data:`pencore.inputs.limits.LIMITS` raise :class:`InputError` naming the key and value.
+    :data:`pencore.inputs.limits.LIMITS` raise :class:`~pencore.InputError` naming the key and
+    value.
     """
     if not isinstance(d, dict):
         raise InputError(f"projectile definition must be a mapping, got {type(d).__name__}")
@@ -419,7 +460,7 @@ def target_from_dict(d: dict[str, Any]) -> Target:
     A layer is ``{medium: ..., thickness: ...}`` (no ``thickness``: semi-infinite, last
     layer only) or an air gap ``{gap: thickness}`` between two layers of a medium. A
     finite last layer makes a plate that can be perforated. Unknown keys and values
-    outside :data:`pencore.inputs.limits.LIMITS` raise :class:`InputError`.
+    outside :data:`pencore.inputs.limits.LIMITS` raise :class:`~pencore.InputError`.
     """
     if not isinstance(d, dict):
         raise InputError(f"target definition must be a mapping, got {type(d).__name__}")
@@ -481,8 +522,45 @@ def _looks_like_path(s: str) -> bool:
 
 
 def get_projectile(spec: str | Projectile | dict[str, Any]) -> Projectile:
-    """A projectile by name (``p1``..``p4``, validation projectiles), YAML path, mapping,
-    or object."""
+    """A projectile by name, YAML file, mapping or object.
+
+    Parameters
+    ----------
+    spec : str, dict or Projectile
+        A library name (:func:`~pencore.projectile_names`: ``p1``..``p4`` of the paper's
+        Table 3, the validation projectiles), the path of a YAML file, a mapping in that
+        file's format (the user guide's Inputs page), or a :class:`~pencore.Projectile`
+        (returned as it is).
+
+    Returns
+    -------
+    Projectile
+
+    Raises
+    ------
+    InputError
+        An unknown name (the message lists the names), a file that cannot be read or
+        parsed, an unknown key, or a value of the wrong type or out of its range (the
+        one-line message names it).
+
+    Examples
+    --------
+    >>> import pencore
+    >>> p2 = pencore.get_projectile("p2")
+    >>> print(f"{p2.diameter * 1e3:.2f} mm, {p2.mass_properties().mass:.2f} kg")
+    94.97 mm, 23.16 kg
+    >>> mine = pencore.get_projectile({
+    ...     "name": "mine", "diameter": 0.03,
+    ...     "nose": {"kind": "ogive", "crh": 3.0, "density": 7850.0},
+    ...     "shank": [{"length": 0.2, "density": 7850.0}],
+    ... })
+    >>> mine.nose
+    OgiveNose(crh=3.0, density=7850.0)
+    >>> pencore.get_projectile("p9")
+    Traceback (most recent call last):
+    ...
+    pencore.errors.InputError: unknown projectile 'p9'; use one of ... or a YAML file
+    """
     if isinstance(spec, Projectile):
         return spec
     if isinstance(spec, dict):
@@ -502,8 +580,37 @@ def get_projectile(spec: str | Projectile | dict[str, Any]) -> Projectile:
 
 
 def get_target(spec: str | Target | Medium | dict[str, Any]) -> Target:
-    """A target by name (``soil``, ``concrete``, ``aluminium``), YAML path, mapping, or
-    object."""
+    """A target by name, YAML file, mapping or object.
+
+    Parameters
+    ----------
+    spec : str, dict, Target or Medium
+        A library name (:func:`~pencore.target_names`: ``soil``, ``concrete``,
+        ``aluminium``...), the path of a YAML file, a mapping in that file's format (the
+        user guide's Inputs page), a :class:`~pencore.Target` (returned as it is) or a
+        :class:`~pencore.Medium` (the half-space of it).
+
+    Returns
+    -------
+    Target
+
+    Raises
+    ------
+    InputError
+        An unknown name (the message lists the names), a file that cannot be read or
+        parsed, an unknown key, or a value of the wrong type or out of its range.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> soil = pencore.get_target("soil")
+    >>> print(soil.medium.coefficients, soil.finite)
+    (17180000.0, 0.0, 4119.9) False
+    >>> pencore.get_target("mud")
+    Traceback (most recent call last):
+    ...
+    pencore.errors.InputError: unknown target 'mud'; use one of soil, concrete, ... or a YAML file
+    """
     if isinstance(spec, Target):
         return spec
     if isinstance(spec, Medium):

@@ -7,10 +7,10 @@ notation (:data:`pencore.inputs.gate.DECIMAL`); the ranges then judge the value 
 other (only a range that reaches infinity, such as ``max_wall``'s, admits ``inf``).
 
 Every user-facing entry point (the API, YAML files, the CLI) checks its inputs here, so
-a bad value stops with one :class:`InputError` whose message names the value, its unit
+a bad value stops with one :class:`~pencore.InputError` whose message names the value, its unit
 and what is allowed, before any computation.
 
-Each range in :data:`LIMITS` is of one of two kinds:
+Each range in :data:`~pencore.inputs.limits.LIMITS` is of one of two kinds:
 
 ``physical``
     the model means nothing outside it (a negative diameter, CRH < 0.5, an obliquity of
@@ -20,7 +20,7 @@ Each range in :data:`LIMITS` is of one of two kinds:
     (a 10 km/s impact, a 100-m diameter, a 1000-s run); the bound is generous and says so.
 
 The docs' table of valid ranges (user guide, "Projectiles, targets and numerics") is
-generated from :data:`LIMITS` by :func:`limits_markdown` at every build.
+generated from :data:`~pencore.inputs.limits.LIMITS` by :func:`limits_markdown` at every build.
 """
 
 from __future__ import annotations
@@ -101,6 +101,7 @@ _INF = math.inf
 #: Densest element at room conditions: osmium, 22 590 kg/m^3.
 _RHO_MAX = 23_000.0
 
+#: The valid range of every quantity a user can give, by key: a :class:`Limit` each.
 LIMITS: dict[str, Limit] = {
     # impact
     "velocity": Limit(
@@ -393,7 +394,7 @@ def _type_name(value: Any) -> str:
 def number(
     value: Any, key: str, what: str = "", *, allow_str: bool = False, label: str = ""
 ) -> float:
-    """``value`` as a float within ``LIMITS[key]``, else :class:`InputError`.
+    """``value`` as a float within ``LIMITS[key]``, else :class:`~pencore.InputError`.
 
     Booleans are not numbers. Strings are refused unless ``allow_str`` (YAML reads
     ``1e6`` without a decimal point as a string, and a quoted ``"0.5"`` is a string too;
@@ -405,7 +406,7 @@ def number(
     value : Any
         The value given.
     key : str
-        Key into :data:`LIMITS`.
+        Key into :data:`~pencore.inputs.limits.LIMITS`.
     what : str
         Prefix naming where the value came from (``"projectile 'x'"``).
     allow_str : bool
@@ -489,7 +490,7 @@ def integer(value: Any, key: str, what: str = "") -> int:
 
 def count(items: Any, key: str, what: str = "") -> int:
     """The length of ``items`` when it is within ``LIMITS[key]`` (a count: layers, rows),
-    else :class:`InputError` naming the count and the limit. Checked before any item is
+    else :class:`~pencore.InputError` naming the count and the limit. Checked before any item is
     read, so a huge input is refused at once."""
     lim = LIMITS[key]
     where = f"{what}: " if what else ""
@@ -512,7 +513,8 @@ def check_keys(mapping: Mapping[str, Any], allowed: Iterable[str], what: str) ->
 
 
 def limits_markdown(group: str = "core") -> str:
-    """A Markdown table of valid ranges, one row per entry of :data:`LIMITS` in ``group``
+    """A Markdown table of valid ranges, one row per entry of :data:`~pencore.inputs.limits.LIMITS`
+    in ``group``
     (``"core"``: the main table; ``"models"``: the shank models and emulation numerics)."""
     rows = ["| input | valid range | kind | why |", "|---|---|---|---|"]
     for key, lim in LIMITS.items():

@@ -129,6 +129,22 @@ class ShankModel:
         ``"cavity"`` on rings: midpoint-rule points around each shank ring.
     axis : {"tip", "shoulder"}
         ``"cavity"``: the axis point whose path is the cavity's axis.
+
+    Raises
+    ------
+    InputError
+        An unknown ``kind`` or ``axis``, a value out of its range.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> pencore.ShankModel(kind="cavity").describe()
+    'cavity(delta_ref=0.005 m)'
+    >>> pencore.ShankModel(kind="factor", factor=0.5).describe()
+    'factor(f=0.5)'
+
+    ``simulate(..., shank="cavity")`` and ``shank={"kind": "factor", "factor": 0.5}`` build
+    the same objects.
     """
 
     kind: str = "dafl"
@@ -146,6 +162,7 @@ class ShankModel:
 
     @property
     def code(self) -> int:
+        """The model's number in the compiled kernels (its index in ``SHANK_MODELS``)."""
         return SHANK_MODELS.index(self.kind)
 
     @property
@@ -179,6 +196,19 @@ class Emulation:
         ``"explicit"``: fixed-step central difference with step ``dt``.
     dt : float
         Fixed time step (s) of the explicit integrator.
+
+    Raises
+    ------
+    InputError
+        An unknown ``surface`` or ``integrator``, a value out of its range.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> pencore.Emulation().describe()
+    'rings, adaptive'
+    >>> pencore.Emulation(surface="panels", integrator="explicit", dt=2e-6).describe()
+    'panels x36, explicit dt=2e-06 s'
     """
 
     surface: str = "rings"
@@ -198,9 +228,11 @@ class Emulation:
 
     @property
     def is_default(self) -> bool:
+        """True for pencore's own numerics (rings, adaptive integrator)."""
         return self.surface == "rings" and self.integrator == "adaptive"
 
     def describe(self) -> str:
+        """A short label, e.g. ``panels x36, explicit dt=1e-06 s``."""
         parts = []
         if self.surface == "panels":
             parts.append(f"panels x{self.n_circumferential}")

@@ -35,7 +35,7 @@ METHODS = ("rosenbrock", "Radau", "BDF")
 #: (:func:`pencore.kernels.jacobian.analytic_jacobian_applies`), or finite differences.
 JACOBIANS = ("analytic", "finite_difference")
 
-#: Default wall-time budget of one run (s); see :attr:`Numerics.max_wall`.
+#: Default wall-time budget of one run (s); see ``Numerics.max_wall``.
 DEFAULT_MAX_WALL = 600.0
 
 _INT_FIELDS = ("n_nose", "n_shank", "n_face", "max_steps", "n_gauss", "jacobian_age")
@@ -70,7 +70,8 @@ class Numerics:
     max_wall : float
         Wall-time budget (s) of one run; the run fails with ``wall_limit`` when it is
         used up (looked at on a time basis, not between chunks of steps). Default
-        :data:`DEFAULT_MAX_WALL` = 600 s, so that no accepted input runs for hours
+        :data:`~pencore.inputs.numerics.DEFAULT_MAX_WALL` = 600 s, so that no accepted input runs
+        for hours
         unannounced: the limits allow numerics (``n_nose = n_shank = 10 000``,
         ``n_gauss = 64``, long friction tables) whose steps cost a second each, times
         ``max_steps`` = 400 000. 600 s is over 300 times the slowest single run
@@ -102,6 +103,26 @@ class Numerics:
         ``"rosenbrock"`` (compiled, default) or scipy's ``"Radau"`` / ``"BDF"`` through
         :func:`scipy.integrate.solve_ivp` on the same right-hand side
         (:mod:`pencore.integrators.scipy_ivp`).
+
+    Raises
+    ------
+    InputError
+        A field out of its range or of the wrong type (the one-line message names it and
+        the range), an unknown ``method`` or ``jacobian``, or a ``v_stop`` below the
+        creep speed of the smoothed contact step.
+
+    Examples
+    --------
+    The defaults with a tighter tolerance; ``simulate(..., rtol=1e-8)`` does the same:
+
+    >>> import pencore
+    >>> num = pencore.Numerics(rtol=1e-8)
+    >>> print(num.rtol, num.n_nose, num.method)
+    1e-08 48 rosenbrock
+    >>> pencore.Numerics(rtol=-1.0)
+    Traceback (most recent call last):
+    ...
+    pencore.errors.InputError: numerics: rtol must be in [1e-12, 0.1], got -1.0
     """
 
     n_nose: int = 48

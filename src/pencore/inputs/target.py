@@ -121,6 +121,22 @@ class Medium:
         Free-surface reduction from the spherical cavity in a finite sphere (Hill 1950):
         the plastic-zone radius over the cavity radius, ``c/a`` of the half-space law
         (0: off; otherwise > 1); see the module docstring.
+
+    Raises
+    ------
+    TargetError
+        A coefficient, friction table or option out of its range (the message names it).
+
+    Examples
+    --------
+    The paper's soil (Table 1): ``sigma_n = A tau0 + B rho Vn^2``:
+
+    >>> import pencore
+    >>> soil = pencore.Medium("soil", (1.718 * 10e6, 0.0, 2.215 * 1860.0), density=1860.0)
+    >>> soil.coefficients
+    (17180000.0, 0.0, 4119.9)
+    >>> soil.coefficients == pencore.get_target("soil").medium.coefficients
+    True
     """
 
     name: str
@@ -210,9 +226,29 @@ class Medium:
 
 @dataclass(frozen=True)
 class Layer:
-    """A medium and its thickness (m); ``inf`` for a semi-infinite last layer.
+    """A medium and its thickness; ``inf`` for a semi-infinite last layer.
 
     ``medium=None`` is an air gap (no load): see :meth:`gap`.
+
+    Parameters
+    ----------
+    medium : Medium or None
+        The layer's material; None for an air gap.
+    thickness : float, default inf
+        Thickness (m), > 0; ``inf`` only for the last layer.
+
+    Raises
+    ------
+    TargetError
+        A thickness that is not a positive number of m.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> concrete = pencore.get_target("concrete").medium
+    >>> plate = pencore.Layer(concrete, 0.3)
+    >>> print(plate.thickness, pencore.Layer.gap(0.5).is_gap)
+    0.3 True
     """
 
     medium: Medium | None
@@ -237,6 +273,7 @@ class Layer:
 
     @property
     def is_gap(self) -> bool:
+        """True for an air gap (no medium)."""
         return self.medium is None
 
 
@@ -255,7 +292,40 @@ def _not_a_medium(k: int, medium: object) -> str:
 
 @dataclass(frozen=True)
 class Target:
-    """A layered half-space, or a stack of plates, below ``y = 0``."""
+    """A layered half-space, or a stack of plates, below ``y = 0``.
+
+    The first layer starts at the surface ``y = 0``; a target whose last layer has a
+    thickness is finite (plates, perforation: :func:`~pencore.ballistic_limit`).
+
+    Parameters
+    ----------
+    name : str
+        Label used in results.
+    layers : sequence of Layer
+        From the surface down; a gap only between two layers of a medium, ``inf`` only
+        for the last layer.
+
+    Raises
+    ------
+    TargetError
+        No layers, a layer that is not a :class:`~pencore.Layer`, a gap first or last, an
+        infinite layer that is not the last.
+
+    Examples
+    --------
+    Two 0.3 m concrete plates 1 m apart:
+
+    >>> import pencore
+    >>> concrete = pencore.get_target("concrete").medium
+    >>> t = pencore.Target("two-plates", (pencore.Layer(concrete, 0.3),
+    ...                                   pencore.Layer.gap(1.0), pencore.Layer(concrete, 0.3)))
+    >>> print(t.finite, [layer.thickness for layer in t.layers])
+    True [0.3, 1.0, 0.3]
+    >>> pencore.Target("empty", ())
+    Traceback (most recent call last):
+    ...
+    pencore.errors.TargetError: target 'empty' has no layers
+    """
 
     name: str
     layers: tuple[Layer, ...] = field(default_factory=tuple)
@@ -293,6 +363,7 @@ class Target:
 
     @classmethod
     def half_space(cls, medium: Medium) -> Target:
+        """The semi-infinite target of one medium, named after it."""
         return cls(medium.name, (Layer(medium),))
 
     @property

@@ -14,4 +14,15 @@ Each integrator is ``integrate(problem, y0, velocity, *, stop_at_reversal)`` and
 returns a :class:`driver.RunResult`.
 """
 
+from pencore._lazy import attach
+
+__getattr__, __dir__, __all__ = attach(
+    __name__,
+    {
+        "Problem": "problem",
+        "RunResult": "driver",
+    },
+)
+del attach
+
 import pencore.kernels  # noqa: E402,F401  (numba set up before the compiled modules)

@@ -8,11 +8,11 @@ shank model (:func:`start_path`, :func:`reserve_path`, :func:`path_of`).
 :class:`RunResult` is what every integrator returns.
 
 Ctrl-C and the wall budget act on a time basis, not between chunks. From the first run
-on, SIGINT has a handler (:func:`_on_sigint`) that during a run (:class:`RunGuard`, in
+on, SIGINT has a handler (``_on_sigint``) that during a run (:class:`RunGuard`, in
 the main thread) only records it (a ``KeyboardInterrupt`` raised while numba code runs
 surfaces as a ``SystemError`` instead) and outside runs raises ``KeyboardInterrupt`` as
 Python's own does; during a run its arrival is also written to a pipe
-(:func:`signal.set_wakeup_fd`) that a watcher thread (:func:`_watch`, one per process)
+(:func:`signal.set_wakeup_fd`) that a watcher thread (``_watch``, one per process)
 waits on; the compiled calls release the GIL (``nogil``), so the watcher raises the
 run's stop flag at once, and the compiled integrators read that flag before every step
 (and every retried step). The watcher also raises the flag when the run's wall budget
@@ -62,7 +62,8 @@ STOP_NONE, STOP_INTERRUPT, STOP_WALL = 0, 1, 2
 
 @dataclass
 class RunResult:
-    """What :func:`integrate` returns: the accepted states and how the run ended."""
+    """What :func:`~pencore.integrators.rosenbrock.integrate` returns: the accepted states and how
+    the run ended."""
 
     ts: np.ndarray
     ys: np.ndarray
@@ -82,7 +83,7 @@ class RunGuard:
     """The stop flag and wall budget of one run, watched on a time basis.
 
     Use as a context manager around a whole run; the compiled integrators take
-    :attr:`stop` and end their chunk before the next step when ``stop[0]`` is not 0.
+    ``stop`` and end their chunk before the next step when ``stop[0]`` is not 0.
     After each compiled call, :meth:`check_interrupt` raises ``KeyboardInterrupt`` if
     Ctrl-C came; leaving the guard does too, for a Ctrl-C that came after the last call.
 
@@ -163,7 +164,7 @@ def exit_on_interrupt(line: str | None, status: int = 130) -> None:
     """Make Ctrl-C during a run end the process at once (for the command line).
 
     The watcher thread writes ``line`` and a newline to stderr and ends the process with
-    ``status`` (:func:`os._exit`, without unwinding: call this only where nothing is
+    ``status`` (``os._exit``, without unwinding: call this only where nothing is
     being written while a run is integrated). A Ctrl-C outside a run is an ordinary
     ``KeyboardInterrupt``. ``line=None`` restores the default (``KeyboardInterrupt``
     after the step in progress).

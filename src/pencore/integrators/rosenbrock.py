@@ -28,9 +28,10 @@ in practice is that a rejected step rebuilds a held Jacobian before it is retrie
 the body entering or leaving the target rebuilds it (:func:`integrate_chunk`); the
 default age is chosen by ``benchmarks/bench_jacobian.py``.
 
-Structure (as scipy's ``_ivp`` separates them): :func:`_jacobian` builds the Jacobian,
-:func:`_attempt` takes one Rosenbrock step and returns its error norm,
-:func:`_next_step` is the step-size controller, :func:`stop_code` holds the stopping
+Structure (as scipy's ``_ivp`` separates them): ``_jacobian`` builds the Jacobian,
+``_attempt`` takes one Rosenbrock step and returns its error norm,
+``_next_step`` is the step-size controller, :func:`~pencore.kernels.state.stop_code` holds
+the stopping
 events, and :func:`integrate_chunk` records accepted steps. ``integrate_chunk`` returns
 to Python every ``n_max`` steps with its state in two small arrays, so that a run can be
 interrupted (Ctrl-C), bounded in wall time, and its results grown as needed instead of
@@ -270,7 +271,7 @@ def integrate_chunk(
     step) and rebuilt at the start of the chunk, whenever the body enters or leaves the
     target (the free-flight Jacobian has no force rows), and before retrying a rejected
     step with a held one; ``analytic`` selects the closed-form velocity Jacobian
-    (see :func:`_jacobian`).
+    (see ``_jacobian``).
 
     ``stop`` (int64 array of one, or None) is read before every step and every retried
     step: when ``stop[0]`` is not 0 (Ctrl-C or the wall budget, set by another thread,
@@ -409,9 +410,11 @@ def integrate(
     steps of ~1e-8 s). A run slowing to a stop changes its speed by far more than 1 %
     over 500 steps, so it is not mistaken for one.
 
-    ``problem`` carries the arrays and the numerics (:class:`Problem`); ``velocity``
+    ``problem`` carries the arrays and the numerics
+    (:class:`~pencore.integrators.problem.Problem`); ``velocity``
     (m/s) is the impact speed, which sets the absolute tolerances
-    (:meth:`Problem.atol`). ``numerics.jacobian_age`` is the most accepted steps a
+    (:meth:`~pencore.integrators.problem.Problem.atol`). ``numerics.jacobian_age`` is the most
+    accepted steps a
     Jacobian is held for (see :func:`integrate_chunk` and the module notes on the
     W-method property); ``numerics.jacobian`` is ``"analytic"`` (closed-form velocity
     derivatives, used where :func:`pencore.kernels.jacobian.analytic_jacobian_applies`)
@@ -420,7 +423,8 @@ def integrate(
     Returns
     -------
     RunResult
-        ``outcome`` is one of :data:`OUTCOMES` (never ``running``) or ``wall_limit``.
+        ``outcome`` is one of :data:`~pencore.kernels.state.OUTCOMES` (never ``running``)
+        or ``wall_limit``.
     """
     with RunGuard(problem.numerics.max_wall) as guard:
         return _integrate(problem, y0, velocity, stop_at_reversal, guard)

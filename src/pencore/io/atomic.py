@@ -5,12 +5,12 @@
 onto the destination (``os.replace``, atomic on POSIX file systems), and the directory
 entry is flushed too. When the block fails, for whatever reason (disk full, quota or
 file-size limit, permission, the netCDF library's own ``RuntimeError``, Ctrl-C, SIGTERM),
-the temporary file is removed and the failure is raised as one :class:`WriteError` whose
+the temporary file is removed and the failure is raised as one :class:`~pencore.WriteError` whose
 message names the path and the cause in words.
 
 Only a regular file (or nothing) is replaced: a destination that is a directory, a
 device, a FIFO or a socket, or that is one of the run's own inputs (``protect``), is
-refused with a :class:`WriteError` before anything is written.
+refused with a :class:`~pencore.WriteError` before anything is written.
 
 Temporary files are named ``.<name>.pencore-tmp-<pid>-<random>`` (``<name>`` cut to
 :data:`TEMP_NAME_CHARS` characters, so that a long file name still leaves room). A run killed with

@@ -170,11 +170,36 @@ def write_netcdf(
         ``config_sha256``.
     study : str
         Name of the study (for example ``'validation/table2'``).
+    protect : sequence of path-like, optional
+        Files that must never be replaced (the run's own inputs).
 
     Returns
     -------
     pathlib.Path
         The written path.
+
+    Raises
+    ------
+    TypeError
+        ``ds`` is not an :class:`xarray.Dataset`.
+    WriteError
+        The file could not be written (the path is a directory or one of ``protect``, no
+        permission, disk full...); nothing is left behind, and the one-line message names
+        the path and the cause.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> import pencore
+    >>> ds = pencore.simulate("p2", "soil", 280.0)
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     path = pencore.write_netcdf(
+    ...         ds, Path(tmp) / "p2.nc", config_slice={"velocity": 280.0}, study="example"
+    ...     )
+    ...     back = pencore.read_netcdf(path)
+    >>> print(path.name, back.attrs["study"], back.attrs["config_json"])
+    p2.nc example {"velocity":280.0}
 
     Notes
     -----
@@ -275,9 +300,21 @@ def cf_encoding(ds: xr.Dataset) -> tuple[xr.Dataset, dict[str, dict[str, Any]]]:
 def read_netcdf(path: str | os.PathLike[str]) -> xr.Dataset:
     """Read a netCDF file fully into memory (the file is closed on return).
 
-    The elapsed-time dimension, :data:`ELAPSED_TIME` on disk, is named ``time`` again
-    (without the ``comment`` :func:`cf_encoding` added), so a written Dataset reads back
-    with the names it had; files written before the rename read unchanged.
+    The elapsed-time dimension, ``elapsed_time`` on disk
+    (:data:`pencore.io.netcdf.ELAPSED_TIME`), is named ``time`` again (without the
+    ``comment`` :func:`pencore.io.netcdf.cf_encoding` added), so a written Dataset reads
+    back with the names it had; files written before the rename read unchanged.
+
+    Parameters
+    ----------
+    path : str or path-like
+        The file: a trajectory of :func:`~pencore.write_netcdf` or ``pencore simulate
+        --out``, a study's result, or a file of the archive (``results/archive/``).
+
+    Returns
+    -------
+    xarray.Dataset
+        The file's variables and attributes, loaded.
 
     Raises
     ------
@@ -286,6 +323,26 @@ def read_netcdf(path: str | os.PathLike[str]) -> xr.Dataset:
     pencore.errors.ResultError
         The file cannot be read (corrupt or truncated): one line naming it and how to
         make it again.
+
+    Examples
+    --------
+    A trajectory written and read back has the names, values and units it had:
+
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> import pencore
+    >>> ds = pencore.simulate("p2", "soil", 280.0)
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     path = pencore.write_netcdf(ds, Path(tmp) / "p2.nc", config_slice={}, study="example")
+    ...     back = pencore.read_netcdf(path)
+    >>> list(back.tip_y.dims), back.penetration_depth.units
+    (['time'], 'm')
+    >>> bool(back.penetration_depth == ds.penetration_depth)
+    True
+    >>> pencore.read_netcdf("no-such-file.nc")
+    Traceback (most recent call last):
+    ...
+    FileNotFoundError: no netCDF file at 'no-such-file.nc'
     """
     path = Path(path)
     if not path.is_file():

@@ -25,6 +25,9 @@ compiles the callee once more for a literal's own type; the first use compiles e
 function once (``benchmarks/bench_compile.py`` lists any that compile twice).
 """
 
+#: Internal: nothing here is public API (the user's entry points are :mod:`pencore`'s names).
+__all__: list[str] = []
+
 from pencore.kernels.cache import _register_locator, import_numba, invalidate_stale_caches
 
 import_numba()  # a NUMBA_* setting numba refuses is one line (InputError), not a traceback

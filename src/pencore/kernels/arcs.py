@@ -4,13 +4,13 @@ A ring of the body surface (:mod:`pencore.inputs.geometry`) is parametrised by i
 ``phi``; every quantity the contact law needs on it, the height of its points and
 their normal velocity, has the form ``c0 + ck cos(phi - phik)``. The loaded part of a
 ring is therefore a union of arcs whose ends are where such a function crosses a level
-(:func:`_level_arc`), and the integrals of a polynomial in one of them times ``1``,
-``cos`` and ``sin`` (the loads, :func:`_poly_arc_integrals`) or times their six
-products (the velocity Jacobian and the band ramps, :func:`_poly_arc_moments`) are
+(``_level_arc``), and the integrals of a polynomial in one of them times ``1``,
+``cos`` and ``sin`` (the loads, ``_poly_arc_integrals``) or times their six
+products (the velocity Jacobian and the band ramps, ``_poly_arc_moments``) are
 closed form: Taylor-shift the polynomial to powers of ``cos(phi - phik)`` and use the
 recursions for the integrals of ``cos^j`` and ``cos^j sin``. Where the region is the
 whole ring, the loaded arc is centred on ``phik`` and its ends need no trigonometry
-(:func:`_poly_centred_arc_integrals`, :func:`_poly_centred_arc_moments`).
+(``_poly_centred_arc_integrals``, ``_poly_centred_arc_moments``).
 """
 
 from __future__ import annotations
@@ -232,7 +232,7 @@ def _centred_cos_powers(a, k, level, nc, cj):
 
 @nb.njit(cache=True, inline="always")
 def _poly_centred_arc_integrals(poly, deg, a, k, cph, sph, level, e, cj):
-    """:func:`_poly_arc_integrals` over the whole-ring arc where ``V >= level``, with
+    """``_poly_arc_integrals`` over the whole-ring arc where ``V >= level``, with
     ``V = a + k cos(phi - phi0)`` and ``cph, sph = cos(phi0), sin(phi0)``.
 
     That arc is ``|phi - phi0| <= h`` with ``cos h = (level - a) / k``: symmetric about
@@ -256,11 +256,11 @@ def _poly_centred_arc_integrals(poly, deg, a, k, cph, sph, level, e, cj):
 
 @nb.njit(cache=True)
 def _poly_centred_arc_moments(poly, deg, a, k, cph, sph, level, e, cj, out):
-    """:func:`_poly_arc_moments` over the whole-ring arc where ``V >= level``, with
+    """``_poly_arc_moments`` over the whole-ring arc where ``V >= level``, with
     ``V = a + k cos(phi - phi0)`` and ``cph, sph = cos(phi0), sin(phi0)``: adds the six
     moments to ``out[0:6]``.
 
-    As in :func:`_poly_centred_arc_integrals`, the arc ``|phi - phi0| <= h`` is
+    As in ``_poly_centred_arc_integrals``, the arc ``|phi - phi0| <= h`` is
     symmetric about ``phi0``, so the moments with an odd power of ``sin(phi - phi0)``
     vanish and only ``acos`` is needed, not the trigonometry of arc ends and of
     ``phi0``. ``e, cj`` are scratch of length >= deg + 3."""
@@ -346,7 +346,7 @@ def _poly_arc_cubic_moments(poly, deg, a, k, phi0, cph, sph, lo, hi, n, e, cj, d
     """Add to ``out[0:10]`` the integrals of ``P(V)`` times ``1, c, s, c^2, c s, s^2,
     c^3, c^2 s, c s^2, s^3`` (``c, s = cos(phi), sin(phi)``) over the intervals, with
     ``V = a + k cos(phi - phi0)``, ``P(V) = sum poly[i] V^i`` (i <= deg) and ``cph, sph
-    = cos(phi0), sin(phi0)``: :func:`_poly_arc_moments` one power further, for the band
+    = cos(phi0), sin(phi0)``: ``_poly_arc_moments`` one power further, for the band
     ramps of the velocity Jacobian (:mod:`pencore.kernels.jacobian`), whose share ``chi`` adds
     one factor of ``cos(phi - phiy)``. ``e, cj, dj`` are scratch of length >= deg + 4.
 

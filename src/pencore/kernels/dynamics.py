@@ -49,7 +49,7 @@ around the ring). That share is exact for a shank band at any attitude and for a
 impact; elsewhere (a nose band at an angle, whose extent varies around the ring) the
 ramp is somewhat wider than the band. The ramp is affine in ``cos(phi - phiy)``, so the
 ramped arcs are integrated in closed form as well (:func:`pencore.kernels.arcs.band_regions`,
-:func:`pencore.kernels.arcs._poly_arc_moments`); the ramp vanishes with the ring spacing and the
+``pencore.kernels.arcs._poly_arc_moments``); the ramp vanishes with the ring spacing and the
 mesh convergence becomes second order (``benchmarks/convergence.py``).
 
 Shank band step width: on a cylindrical band the normal velocity at a given angle varies

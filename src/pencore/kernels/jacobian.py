@@ -27,9 +27,9 @@ are closed form like the loads' (:mod:`pencore.kernels.arcs`).
 
 With the band immersion ramp (:mod:`pencore.kernels.dynamics`) ``G`` carries the band's share
 ``chi(phi)``, which depends on the position only; the ramps of tilted rings take one
-more power of ``cos, sin`` (:func:`_ramp_moments`), closed form as well, and a whole
+more power of ``cos, sin`` (``_ramp_moments``), closed form as well, and a whole
 ring's core needs no trigonometry of arc ends
-(:func:`pencore.kernels.arcs._poly_centred_arc_moments`).
+(``pencore.kernels.arcs._poly_centred_arc_moments``).
 
 The shank bands' step half-width depends on the lateral spin
 (:func:`pencore.kernels.bands.band_eps`), which adds ``-w B^T t (d epsr / d(w2, w3))`` to the
@@ -46,7 +46,7 @@ Only the velocity derivatives are formed, as in the finite-difference form: the
 position and attitude derivatives are not stiff, and the error control absorbs their
 omission. Friction (Gauss quadrature of a ``mu(v_t)`` table) and the sharp law
 (``eps = 0``: a jump at the arc ends) are left to finite differences
-(:func:`pencore.integrators.rosenbrock._jacobian`).
+(``pencore.integrators.rosenbrock._jacobian``).
 """
 
 from __future__ import annotations
@@ -325,7 +325,7 @@ def _region_moments(p, deg, av, kv, phi0, cph, sph, alpha, beta, cy, sy, lo, hi,
     ``cph, sph`` and ``cy, sy`` the cosines and sines of ``phi0`` and ``phiy``). With
     ``beta = 0`` (a core, or a level band) ``chi = alpha`` is folded into ``p`` (which
     is scaled in place) and the moments are closed form, so a full ring's odd moments
-    stay exactly 0; a ramp goes to :func:`_ramp_moments`."""
+    stay exactly 0; a ramp goes to ``_ramp_moments``."""
     if beta == 0.0:
         for c in range(deg + 1):
             p[c] *= alpha
@@ -419,7 +419,7 @@ def velocity_jacobian(jac, y, f0, mass, inertia, gravity, rings, bounds, coef, f
     """Fill rows 7-13, columns 7-12 of the state Jacobian ``jac`` in closed form.
 
     The same entries as the finite-difference form of
-    :func:`pencore.integrators.rosenbrock._jacobian`
+    ``pencore.integrators.rosenbrock._jacobian``
     (Newton's and Euler's equations and the power of the contact stresses, against the
     fixed-frame velocity ``y[7:10]`` and the body-frame angular velocity ``y[10:13]``),
     from :func:`load_jacobian` and the chain rule: ``v_body = R^T v``, ``dv/dt = R F / m

@@ -3,7 +3,7 @@
 A ring wholly inside one layer, clear of its levels, is loaded on the arc
 ``|phi - phi0| <= h`` where its normal velocity ``V = av + kv cos(phi - phi0)`` is
 above each side's level of the smoothed step (:func:`pencore.kernels.arcs.side_poly`);
-:func:`pencore.kernels.arcs._poly_centred_arc_integrals` integrates one ring and side. This
+``pencore.kernels.arcs._poly_centred_arc_integrals`` integrates one ring and side. This
 module does the same operations for many rings with the rings as the innermost loop,
 which the compiler turns into vector instructions: the branches and the ``acos`` of the
 arc's half-angle stay in a scalar pass, the Taylor shift, the ``cos^j`` recursion and
@@ -149,7 +149,7 @@ def whole_ring_integrals(tab, nf, coef, nside, out):
 
 @nb.njit(cache=True)
 def whole_ring_moments(tab, nf, polys, levels, deg, out):
-    """:func:`pencore.kernels.arcs._poly_centred_arc_moments` of ``nf`` whole rings at once,
+    """``pencore.kernels.arcs._poly_centred_arc_moments`` of ``nf`` whole rings at once,
     both sides of the step, rings innermost (the Jacobian's counterpart of
     :func:`whole_ring_integrals`; same operations per ring).
 

@@ -3,7 +3,9 @@
 =================  =====================================================================
 module             figures
 =================  =====================================================================
-``style``          :data:`STYLE` (rcParams), :func:`new_figure`, :func:`save_figure`
+``style``          :data:`~pencore.plotting.style.STYLE` (rcParams),
+                   :func:`~pencore.plotting.style.new_figure`,
+                   :func:`~pencore.plotting.style.save_figure`
 ``depth``          Section 3: Table 2 bars, Fig. 5, verification runs
 ``trajectories``   Figs 7, 11, 13-14, 16-17 and the start-height study
 ``critical``       Figs 8, 12 (Vcr), 15 (Vci), 18 (omega_c)

@@ -1,4 +1,4 @@
-"""Shared figure style: one rcParams dict (:data:`STYLE`, applied with
+"""Shared figure style: one rcParams dict (:data:`~pencore.plotting.style.STYLE`, applied with
 :func:`matplotlib.rc_context`), colours, markers, axis labels, and the Agg figure/save helpers.
 
 Figures are built with the object-oriented API on an Agg canvas, never through pyplot, so

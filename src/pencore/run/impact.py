@@ -62,10 +62,57 @@ def prepare(
     emulation: Emulation | Mapping[str, Any] | None = None,
     **overrides: Any,
 ) -> Problem:
-    """Resolve names and build the kernel arrays (reusable across many trajectories).
+    """Resolve a projectile and a target into a problem many trajectories can share.
 
-    ``shank`` and ``emulation`` select the shank contact model and the paper-emulation
-    numerics (:mod:`pencore.inputs.models`; default: the DAFL on pencore's rings, adaptive).
+    Builds what every run of one projectile in one target needs (the surface rings, the
+    target's layer arrays, mass properties, the shank model and emulation), once. Pass the
+    result as ``simulate(..., prepared=pr)`` in loops over speeds or angles; the searches
+    (:func:`~pencore.vcr`, :func:`~pencore.ballistic_limit`...) do so.
+
+    Parameters
+    ----------
+    projectile : str, Projectile or dict
+        A library name (:func:`~pencore.projectile_names`), a YAML file path, a
+        :class:`~pencore.Projectile`, or a mapping as in a YAML file
+        (:func:`~pencore.get_projectile`).
+    target : str, Target, Medium or dict
+        A library name (:func:`~pencore.target_names`), a YAML file path or an object
+        (:func:`~pencore.get_target`).
+    numerics : Numerics, optional
+        Numerical parameters (default :class:`~pencore.Numerics` ()); ``**overrides`` apply on top.
+    shank : ShankModel, mapping or str, optional
+        Shank contact model (:class:`~pencore.ShankModel`): ``"dafl"`` (default), ``"cavity"`` or
+        ``"factor"``.
+    emulation : Emulation or mapping, optional
+        Paper-emulation numerics (:class:`~pencore.Emulation`): panel surface, explicit integrator.
+        Default: pencore's rings and the adaptive Rosenbrock integrator.
+    **overrides
+        Fields of :class:`~pencore.Numerics` by name (``rtol=1e-8``, ``n_nose=64``...).
+
+    Returns
+    -------
+    pencore.integrators.problem.Problem
+        The resolved inputs (``.projectile``, ``.target``, ``.numerics``) and the arrays
+        the compiled kernels take.
+
+    Raises
+    ------
+    InputError
+        An unknown name or field, a value out of its range (the message names it and the
+        allowed range), a file that cannot be read, or a numerics ``method`` other than
+        ``"rosenbrock"`` combined with the explicit integrator or the cavity model.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> pr = pencore.prepare("p2", "soil")
+    >>> print(pr.projectile.name, pr.target.name, f"{pr.mass:.3f} kg")
+    p2 soil 23.160 kg
+    >>> for v in (200.0, 300.0):
+    ...     ds = pencore.simulate("p2", "soil", v, prepared=pr)
+    ...     print(f"{v:.0f} m/s: {ds.penetration_depth.item():.2f} m")
+    200 m/s: 2.68 m
+    300 m/s: 4.50 m
     """
     num = resolve_numerics(numerics, overrides)
     sm = shank_model(shank)
@@ -112,46 +159,90 @@ def simulate(
     spin_about: str = "cm",
     **overrides: Any,
 ) -> xr.Dataset:
-    """Simulate one impact.
+    """Simulate one impact: the trajectory of a rigid projectile in a target.
+
+    The projectile's nose tip starts at the surface (or at ``start``) with the impact
+    velocity; the run ends when the projectile stops, turns back out of the target, leaves
+    it (a ricochet, ``exited``) or perforates its last layer. Conventions (the module's
+    text above): the target is ``y <= 0``, the projectile moves towards ``+x`` and ``-y``.
 
     Parameters
     ----------
-    projectile : str or Projectile
-        Name (``p1``..``p4``, validation projectiles), YAML path, or object.
-    target : str or Target
-        Name (``soil``, ``concrete``, ``aluminium``), YAML path, or object.
+    projectile : str, Projectile or dict
+        A library name (``"p1"``..``"p4"`` of the paper, the validation projectiles:
+        :func:`~pencore.projectile_names`), a YAML file path, or an object
+        (:func:`~pencore.get_projectile`).
+    target : str, Target, Medium or dict
+        A library name (``"soil"``, ``"concrete"``, ``"aluminium"``...:
+        :func:`~pencore.target_names`), a YAML file path, or an object
+        (:func:`~pencore.get_target`).
     velocity : float
         Impact speed (m/s), > 0.
-    obliquity : float
-        Axis angle from the target normal (deg).
-    yaw : float
-        Velocity angle minus axis angle (deg).
-    omega : float
-        Initial angular velocity about the centre of mass, about +z (rad/s).
+    obliquity : float, default 0
+        Angle of the projectile axis from the target normal ``-y``, towards ``+x`` (deg).
+    yaw : float, default 0
+        Velocity angle minus axis angle (deg): the velocity makes ``obliquity + yaw``
+        with the normal.
+    omega : float, default 0
+        Initial angular velocity about ``+z`` (rad/s); positive turns the nose towards
+        ``+x``.
     start : (3,) float, optional
-        Initial nose-tip position (m). Default: just touching the surface at x = 0.
-    azimuth : float
-        Rotation of the whole impact about the target normal (deg).
-    stop_at_reversal : bool
-        End the run at the first reversal (outcome ``reversed``).
+        Initial nose-tip position (m). Default: ``x = z = 0``, the body lowered until its
+        lowest surface point touches ``y = 0``.
+    azimuth : float, default 0
+        Rotation of the whole impact about the target normal ``+y`` (deg).
+    stop_at_reversal : bool, default False
+        End the run at the first reversal (outcome ``reversed``), as the Vcr search does.
     numerics : Numerics, optional
-        Numerical parameters; keyword overrides (``eps=...``, ``rtol=...``) apply on top.
-    prepared : optional
-        Output of :func:`prepare`, to skip re-resolving in loops (it carries the shank
-        model and emulation: do not pass those as well).
+        Numerical parameters; keyword ``**overrides`` (``rtol=...``, ``eps=...``) apply
+        on top.
+    prepared : pencore.integrators.problem.Problem, optional
+        Output of :func:`~pencore.prepare` for this projectile and target, to skip re-resolving in
+        loops (it carries the numerics, shank model and emulation: do not pass those too).
     shank : ShankModel, mapping or str, optional
-        Shank contact model (:mod:`pencore.inputs.models`): ``"dafl"`` (default), ``"cavity"``,
+        Shank contact model (:class:`~pencore.ShankModel`): ``"dafl"`` (default), ``"cavity"``,
         ``"factor"``.
     emulation : Emulation or mapping, optional
-        Paper-emulation numerics (:mod:`pencore.inputs.models`): panels, explicit integrator.
-    spin_about : {"cm", "tip"}
+        Paper-emulation numerics (:class:`~pencore.Emulation`): panels, explicit integrator.
+    spin_about : {"cm", "tip"}, default "cm"
         The point ``omega`` turns the body about at t = 0.
+    **overrides
+        Fields of :class:`~pencore.Numerics` by name.
 
     Returns
     -------
     xarray.Dataset
-        Time histories on dimension ``time`` (s) and scalar results; the user guide's
-        Dataset page lists every variable.
+        Time histories on dimension ``time`` (s), scalar results (``penetration_depth``,
+        m...) and attributes (``outcome``, ``reversed``, the inputs); every variable has
+        ``units`` and ``long_name``. The user guide's Dataset page lists them.
+
+    Raises
+    ------
+    InputError
+        An unknown name, a value out of its range or of the wrong type (the one-line
+        message names the value and what is allowed), a start position from which the
+        body cannot reach the target, or ``prepared`` given with ``numerics``, ``shank``
+        or ``emulation``.
+    SolverError
+        The integration could not finish (step size underflow, step budget or wall-time
+        limit); the message names the cause and the state reached.
+
+    Examples
+    --------
+    Projectile #2 of the paper into soil at 280 m/s, normal impact:
+
+    >>> import pencore
+    >>> ds = pencore.simulate("p2", "soil", 280.0)
+    >>> ds.attrs["outcome"]
+    'stopped'
+    >>> print(f"{ds.penetration_depth.item():.2f} {ds.penetration_depth.units}")
+    4.15 m
+
+    At 45 deg obliquity the path curves (the paper's Fig. 7):
+
+    >>> ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0)
+    >>> print(ds.attrs["outcome"], f"{pencore.final_deviation(ds):.0f} deg")
+    stopped 46 deg
     """
     pr, run, wall, (velocity, obliquity, yaw, omega, azimuth, start) = _impact(locals())
     ds = trajectory_dataset(

@@ -11,10 +11,11 @@ verdict switches from False to True:
   final deviation (:func:`pencore.analysis.deviation.final_deviation`) exceeds a chosen threshold
   or the projectile turns back. The paper does not state its threshold; the caller must.
   Nor does it say which of the velocity or the axis is normal in a "normal impact with
-  yaw": :func:`normal_impact_angles` maps the two readings (:data:`YAW_CONVENTIONS`)
+  yaw": :func:`~pencore.inputs.conventions.normal_impact_angles` maps the two readings
+  (:data:`~pencore.inputs.conventions.YAW_CONVENTIONS`)
   onto ``simulate``'s obliquity and yaw.
 
-:func:`find_threshold` does the search on any verdict: it checks both ends of the
+:func:`~pencore.find_threshold` does the search on any verdict: it checks both ends of the
 bracket, optionally scans it coarsely to detect a non-monotone verdict, and bisects to a
 caller-given tolerance. Every verdict evaluated is returned, so a workflow can archive
 the evidence behind each number. The ballistic limit of a finite target
@@ -85,32 +86,61 @@ def vcr(
     max_iter: int = 60,
     **simulate_kwargs: Any,
 ) -> CriticalResult:
-    """Critical reverse velocity Vcr (m/s): lowest impact speed that turns back.
+    """Critical reverse velocity Vcr (m/s): the lowest impact speed that turns back.
 
     Verdict at speed ``v``: ``simulate(projectile, target, v, obliquity, yaw, omega,
     stop_at_reversal=True)`` has ``attrs['reversed'] == 1`` (the centre-of-mass velocity
-    turned towards the surface while in the target).
+    turned towards the surface while in the target). The paper's Section 4.2, Figs 8 and 12.
 
     Parameters
     ----------
     projectile, target
-        As for :func:`pencore.simulate` (names, YAML paths or objects).
-    obliquity, yaw : float
-        Degrees.
-    lo, hi : float
-        Speed range searched (m/s). Low speeds at grazing obliquity can ricochet
-        (reverse) too; the default scan flags that as ``non_monotone``.
-    tol : float
-        Final bracket width (m/s).
-    omega : float
+        As for :func:`~pencore.simulate` (names, YAML paths or objects).
+    obliquity : float
+        Axis angle from the target normal (deg).
+    yaw : float, default 0
+        Velocity angle minus axis angle (deg).
+    lo, hi : float, default 100, 4000
+        Speed range searched (m/s), ``0 < lo < hi``. Low speeds at grazing obliquity can
+        ricochet (reverse) too; the default scan flags that as ``non_monotone``.
+    tol : float, default 5
+        Final bracket width (m/s), > 0.
+    omega : float, default 0
         Initial angular velocity (rad/s).
-    scan, max_iter
-        See :func:`find_threshold`; by default a 5-point scan guards against a
-        non-monotone verdict.
+    scan : int or None, default 5
+        Points of a coarse scan of ``[lo, hi]`` before bisecting, that detects a
+        non-monotone verdict; None: no scan (:func:`~pencore.find_threshold`).
+    max_iter : int, default 60
+        Most bisections.
     **simulate_kwargs
         ``numerics=``, numerics overrides (``rtol=``, ``eps=``, ...), ``start=``, and the
-        shank contact model and paper-emulation numerics (``shank=``, ``emulation=``;
-        :mod:`pencore.inputs.models`).
+        shank contact model and paper-emulation numerics (``shank=``, ``emulation=``).
+
+    Returns
+    -------
+    CriticalResult
+        ``lo`` (m/s) did not turn back, ``hi`` did; ``value`` is their midpoint and
+        ``status`` says whether the search converged (``"ok"``), the verdict was already
+        True at ``lo`` (``"below_range"``) or still False at ``hi`` (``"above_range"``).
+
+    Raises
+    ------
+    InputError
+        A bad search argument (``lo >= hi``, ``tol <= 0``, a scan of fewer than 2 points)
+        or a bad input of :func:`~pencore.simulate`; the message names it.
+
+    Examples
+    --------
+    The speed above which #2 turns back at 45 deg obliquity, bracketed to 100 m/s (the
+    paper's Fig. 7 starts the nose 1 m above the surface):
+
+    >>> import pencore
+    >>> r = pencore.vcr("p2", "soil", 45.0, lo=1000.0, hi=2500.0, tol=100.0, scan=None,
+    ...                 start=(-1.0, 1.0, 0.0))
+    >>> print(r.status, r.lo < r.hi <= r.lo + 100.0)
+    ok True
+    >>> print(f"{r.lo:.0f} < Vcr <= {r.hi:.0f} m/s")
+    1562 < Vcr <= 1656 m/s
     """
     check_search_args(lo, hi, tol, max_iter, scan, "velocity")
     numerics, overrides, sim = split_search_kwargs(dict(simulate_kwargs), FIXED_BY_SEARCH)
@@ -136,12 +166,47 @@ def omega_c(
     max_iter: int = 60,
     **simulate_kwargs: Any,
 ) -> CriticalResult:
-    """Critical angular velocity omega_c (rad/s): lowest initial omega that turns back.
+    """Critical angular velocity omega_c (rad/s): the lowest initial spin that turns back.
 
     Verdict at ``w``: ``simulate(projectile, target, velocity, obliquity, yaw, omega=w,
-    stop_at_reversal=True)`` has ``attrs['reversed'] == 1``. Normal impact by default
-    (paper Figs 16-18). ``lo``, ``hi`` and ``tol`` in rad/s; other arguments as
-    :func:`vcr`.
+    stop_at_reversal=True)`` has ``attrs['reversed'] == 1``. Normal impact by default (the
+    paper's Figs 16-18).
+
+    Parameters
+    ----------
+    projectile, target
+        As for :func:`~pencore.simulate` (names, YAML paths or objects).
+    velocity : float
+        Impact speed (m/s), > 0.
+    lo, hi : float
+        Range of initial angular velocity searched (rad/s), ``lo < hi``.
+    tol : float, default 0.5
+        Final bracket width (rad/s), > 0.
+    obliquity, yaw : float, default 0
+        Angles of the impact (deg).
+    scan, max_iter
+        As for :func:`~pencore.vcr`.
+    **simulate_kwargs
+        As for :func:`~pencore.vcr`.
+
+    Returns
+    -------
+    CriticalResult
+        ``lo`` (rad/s) did not turn back, ``hi`` did.
+
+    Raises
+    ------
+    InputError
+        A bad search argument or velocity, or a bad input of :func:`~pencore.simulate`.
+
+    Examples
+    --------
+    #2 at 1500 m/s, normal impact, bracketed to 25 rad/s:
+
+    >>> import pencore
+    >>> r = pencore.omega_c("p2", "soil", 1500.0, lo=0.0, hi=500.0, tol=25.0, scan=None)
+    >>> print(r.status, f"{r.lo:.0f} < omega_c <= {r.hi:.0f} rad/s")
+    ok 156 < omega_c <= 172 rad/s
     """
     check_search_args(lo, hi, tol, max_iter, scan, "omega")
     number(velocity, "velocity", "omega_c")
@@ -171,36 +236,67 @@ def vci(
     shared_runs: dict[float, tuple[bool, float]] | None = None,
     **simulate_kwargs: Any,
 ) -> CriticalResult:
-    """Critical impact velocity for instability Vci (m/s), normal impact with small yaw.
+    """Critical impact velocity for instability Vci (m/s): normal impact with a small yaw.
 
     Verdict at speed ``v``: the run ``simulate(projectile, target, v, obliquity, yaw',
     omega, stop_at_reversal=True)``, with ``(obliquity, yaw') =``
-    :func:`normal_impact_angles` ``(yaw, convention)``, reversed, OR its final deviation
-    (:func:`pencore.analysis.deviation.final_deviation` with ``fraction``: the velocity angle from
-    the normal at the last state with speed >= ``fraction`` x impact speed) exceeds
-    ``threshold_deg``. The paper gives no threshold (it calls 0.16-0.24 deg "not really
-    affected" and 2200 m/s for #4 "large"); report how Vci moves with it.
+    :func:`~pencore.inputs.conventions.normal_impact_angles` ``(yaw, convention)``,
+    reversed, or its final deviation (:func:`~pencore.final_deviation` with ``fraction``:
+    the velocity angle from the normal at the last state with speed >= ``fraction`` x
+    impact speed) exceeds ``threshold_deg``. The paper (Figs 13-15) gives no threshold (it
+    calls 0.16-0.24 deg "not really affected" and 2200 m/s for #4 "large"): report how Vci
+    moves with it.
 
     Parameters
     ----------
+    projectile, target
+        As for :func:`~pencore.simulate` (names, YAML paths or objects).
     yaw : float
         Initial yaw (deg), e.g. 0.1.
-    lo, hi, tol : float
-        Speed range and final bracket width (m/s).
+    lo, hi : float
+        Speed range searched (m/s), ``0 < lo < hi``.
     threshold_deg : float
         Deviation (deg) above which the run counts as unstable, > 0.
-    fraction : float
-        Speed fraction of the final-deviation definition.
-    convention : {"axis_tilted", "velocity_tilted"}
-        Which of the axis or the velocity is tilted by ``yaw`` (the other is normal); see
-        :func:`normal_impact_angles`. Default ``"axis_tilted"`` (velocity normal), the
-        reading that reproduces the paper's Fig. 13 deviations.
+    tol : float, default 5
+        Final bracket width (m/s).
+    omega : float, default 0
+        Initial angular velocity (rad/s).
+    fraction : float, default 0.1
+        Speed fraction of the final-deviation definition, in (0, 1].
+    convention : {"axis_tilted", "velocity_tilted"}, default "axis_tilted"
+        Which of the axis or the velocity is tilted by ``yaw`` (the other is normal);
+        ``"axis_tilted"`` (velocity normal) reproduces the paper's Fig. 13 deviations.
+    scan, max_iter
+        As for :func:`~pencore.vcr`.
     shared_runs : dict, optional
         ``{speed: (reversed, final deviation in deg)}`` of runs already made with the
         same projectile, target, yaw, ``fraction`` and numerics; read before running and
         filled after. Searches for several thresholds of one case pass the same dict and
         so share their runs (a run does not depend on the threshold; results identical).
-    Other arguments as :func:`vcr`.
+    **simulate_kwargs
+        As for :func:`~pencore.vcr`.
+
+    Returns
+    -------
+    CriticalResult
+        ``lo`` (m/s) stayed within ``threshold_deg``, ``hi`` did not.
+
+    Raises
+    ------
+    InputError
+        ``threshold_deg`` not a positive angle, ``fraction`` outside (0, 1], an unknown
+        ``convention``, a bad search argument, or a bad input of :func:`~pencore.simulate`.
+
+    Examples
+    --------
+    #4 of the paper with 0.1 deg of yaw: the speed above which its deviation exceeds
+    1 deg, bracketed to 200 m/s:
+
+    >>> import pencore
+    >>> r = pencore.vci("p4", "soil", 0.1, lo=1000.0, hi=3000.0, threshold_deg=1.0,
+    ...                 tol=200.0, scan=None)
+    >>> print(r.status, f"{r.lo:.0f} < Vci <= {r.hi:.0f} m/s")
+    ok 2000 < Vci <= 2125 m/s
     """
     check_search_args(lo, hi, tol, max_iter, scan, "velocity")
     thr = as_float(threshold_deg, allow_str=False)

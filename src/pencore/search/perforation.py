@@ -9,7 +9,7 @@ velocity (``attrs['residual_velocity']``, m/s) and the exit attitude
 
 The ballistic limit ``v_bl`` (m/s) is the lowest impact speed that perforates:
 :func:`ballistic_limit` searches it with :func:`pencore.search.threshold.find_threshold`, the
-search behind Vcr, Vci and omega_c, and returns the same :class:`CriticalResult`
+search behind Vcr, Vci and omega_c, and returns the same :class:`~pencore.CriticalResult`
 (bracket, every evaluation, monotonicity flag).
 
 Recht-Ipson curve (Recht & Ipson, J. Appl. Mech. 30 (1963) 384-390, energy and momentum
@@ -53,13 +53,54 @@ __all__ = [
 
 
 def perforates(ds: xr.Dataset) -> bool:
-    """True when the run of ``ds`` ended ``perforated``."""
+    """Whether a run perforated its target.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A run of :func:`~pencore.simulate`.
+
+    Returns
+    -------
+    bool
+        True when the run ended with outcome ``perforated`` (every surface band behind
+        the rear face of the last layer, moving away from it).
+
+    Examples
+    --------
+    >>> import pencore
+    >>> slab = pencore.Target("slab", (pencore.Layer(pencore.get_target("concrete").medium, 0.8),))
+    >>> pencore.perforates(pencore.simulate("p2", slab, 500.0))
+    True
+    >>> pencore.perforates(pencore.simulate("p2", "soil", 500.0))
+    False
+    """
     return ds.attrs.get("outcome") == "perforated"
 
 
 def residual_velocity(ds: xr.Dataset) -> float:
-    """Residual speed (m/s) of the centre of mass once clear of the target; 0 when the run
-    did not perforate."""
+    """Residual speed of a run: the centre-of-mass speed once clear of the target.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A run of :func:`~pencore.simulate`.
+
+    Returns
+    -------
+    float
+        The speed (m/s) when the run perforated (attribute ``residual_velocity``); 0 when
+        it did not (stopped, reversed or ricocheted).
+
+    Examples
+    --------
+    >>> import pencore
+    >>> slab = pencore.Target("slab", (pencore.Layer(pencore.get_target("concrete").medium, 0.8),))
+    >>> print(f"{pencore.residual_velocity(pencore.simulate('p2', slab, 500.0)):.0f} m/s")
+    306 m/s
+    >>> pencore.residual_velocity(pencore.simulate("p2", "soil", 500.0))
+    0.0
+    """
     return float(ds.attrs["residual_velocity"]) if perforates(ds) else 0.0
 
 
@@ -88,16 +129,18 @@ def ballistic_limit(
     Parameters
     ----------
     projectile, target
-        As for :func:`pencore.simulate`; the target must be finite (last layer with a
+        As for :func:`~pencore.simulate`; the target must be finite (last layer with a
         thickness).
-    obliquity, yaw : float
-        Degrees.
-    lo, hi, tol : float
-        Speed range searched and final bracket width (m/s).
-    omega : float
+    obliquity, yaw : float, default 0
+        Angles of the impact (deg).
+    lo, hi : float, default 50, 3000
+        Speed range searched (m/s), ``0 < lo < hi``.
+    tol : float, default 5
+        Final bracket width (m/s), > 0.
+    omega : float, default 0
         Initial angular velocity (rad/s).
     scan, max_iter
-        See :func:`pencore.search.threshold.find_threshold`.
+        As for :func:`~pencore.vcr` (:func:`~pencore.find_threshold`).
     **simulate_kwargs
         ``numerics=``, numerics overrides (``rtol=``, ``eps=``, ...) and ``start=``.
 
@@ -106,6 +149,22 @@ def ballistic_limit(
     CriticalResult
         ``value`` is the midpoint of the bracket ``[lo, hi]`` (m/s): ``lo`` did not
         perforate, ``hi`` did.
+
+    Raises
+    ------
+    InputError
+        A semi-infinite target, a bad search argument, or a bad input of
+        :func:`~pencore.simulate`.
+
+    Examples
+    --------
+    #2 against an 0.8 m concrete slab, bracketed to 20 m/s:
+
+    >>> import pencore
+    >>> slab = pencore.Target("slab", (pencore.Layer(pencore.get_target("concrete").medium, 0.8),))
+    >>> r = pencore.ballistic_limit("p2", slab, lo=50.0, hi=1000.0, tol=20.0, scan=None)
+    >>> print(r.status, f"{r.lo:.0f} < v_bl <= {r.hi:.0f} m/s")
+    ok 377 < v_bl <= 391 m/s
     """
     check_search_args(lo, hi, tol, max_iter, scan, "velocity")
     numerics, overrides, sim = split_search_kwargs(dict(simulate_kwargs), FIXED_BY_SEARCH)
@@ -124,7 +183,33 @@ def ballistic_limit(
 
 
 def recht_ipson(v: np.ndarray | float, v_bl: float, a: float = 1.0, p: float = 2.0) -> np.ndarray:
-    """Recht-Ipson residual speed ``a (v^p - v_bl^p)^(1/p)`` (m/s), 0 for ``v <= v_bl``."""
+    """Recht-Ipson residual speed ``a (v^p - v_bl^p)^(1/p)``, 0 for ``v <= v_bl``.
+
+    Recht & Ipson, J. Appl. Mech. 30 (1963) 384 (``a = 1``, ``p = 2``); the free ``a`` and
+    ``p`` as in Lambert & Jonas, BRL-R-1852 (1976).
+
+    Parameters
+    ----------
+    v : float or array_like
+        Impact speed (m/s).
+    v_bl : float
+        Ballistic limit (m/s).
+    a : float, default 1
+        Scale (dimensionless).
+    p : float, default 2
+        Exponent (dimensionless).
+
+    Returns
+    -------
+    numpy.ndarray
+        Residual speed (m/s), the shape of ``v``.
+
+    Examples
+    --------
+    >>> from pencore import recht_ipson
+    >>> recht_ipson([200.0, 500.0, 340.0], v_bl=300.0)
+    array([  0., 400., 160.])
+    """
     v = np.asarray(v, dtype=float)
     return a * np.maximum(v**p - v_bl**p, 0.0) ** (1.0 / p)
 
@@ -143,6 +228,22 @@ def fit_recht_ipson(v: np.ndarray, v_r: np.ndarray, v_bl: float | None = None) -
     -------
     dict
         ``a``, ``p``, ``v_bl`` (m/s) and ``rms`` (m/s, RMS residual of the fit).
+
+    Raises
+    ------
+    InputError
+        Fewer than 3 perforating runs (2 with ``v_bl`` given).
+
+    Examples
+    --------
+    Recovering the curve from exact points:
+
+    >>> import numpy as np
+    >>> from pencore import fit_recht_ipson, recht_ipson
+    >>> v = np.array([450.0, 500.0, 600.0, 700.0, 800.0])
+    >>> fit = fit_recht_ipson(v, recht_ipson(v, 400.0, a=0.9, p=2.5))
+    >>> print({k: round(x, 3) for k, x in fit.items()})
+    {'a': 0.9, 'p': 2.5, 'v_bl': 400.0, 'rms': 0.0}
     """
     from scipy.optimize import least_squares
 

@@ -47,10 +47,11 @@ __all__ = [
 VELOCITY_TOL = 5.0
 #: Default (and widest recommended) bracket width for critical angular velocities (rad/s).
 OMEGA_TOL = 0.5
-#: Scan points used by :func:`vcr`, :func:`omega_c` and :func:`vci` before bisecting.
+#: Scan points used by :func:`~pencore.vcr`, :func:`~pencore.omega_c` and :func:`~pencore.vci`
+#: before bisecting.
 DEFAULT_SCAN = 5
 
-#: Possible values of :attr:`CriticalResult.status`.
+#: Possible values of ``CriticalResult.status`` (:class:`~pencore.CriticalResult`).
 STATUSES = ("ok", "non_monotone", "below_range", "above_range", "max_iter")
 
 
@@ -86,6 +87,15 @@ class CriticalResult:
         Every evaluated value and its verdict, in evaluation order.
     tol : float
         The tolerance asked for.
+
+    Examples
+    --------
+    >>> from pencore import find_threshold
+    >>> r = find_threshold(lambda x: x >= 0.3, 0.0, 1.0, 0.01, scan=5)
+    >>> print(r.status, r.converged, r.monotone, r.n_evals, f"{r.value:.3f}")
+    ok True True 10 0.301
+    >>> r.history[:3]
+    ((0.0, False), (1.0, True), (0.25, False))
     """
 
     value: float
@@ -138,7 +148,8 @@ def find_threshold(
         Search range, ``lo < hi`` (units of the searched quantity).
     tol : float
         Required width of the final bracket (same units), > 0. No default on purpose:
-        use :data:`VELOCITY_TOL` or :data:`OMEGA_TOL` or tighter.
+        use :data:`~pencore.search.threshold.VELOCITY_TOL` or
+        :data:`~pencore.search.threshold.OMEGA_TOL` or tighter.
     max_iter : int
         Largest number of bisection steps.
     scan : int, optional
@@ -160,6 +171,23 @@ def find_threshold(
         False it is ``"above_range"`` (``value`` NaN, ``lo = hi``, ``hi`` NaN). Otherwise
         ``lo`` has verdict False, ``hi`` True, ``hi - lo <= tol`` (unless ``max_iter``),
         and ``value = (lo + hi) / 2``.
+
+    Raises
+    ------
+    InputError
+        ``lo >= hi``, a bound or ``tol`` that is not a finite number, ``tol <= 0``,
+        ``max_iter`` or ``scan`` not a whole number in its range (the message names it).
+
+    Examples
+    --------
+    Any yes/no question of one number: here where ``x**2`` exceeds 2.
+
+    >>> from pencore import find_threshold
+    >>> r = find_threshold(lambda x: x * x > 2.0, 0.0, 2.0, 1e-6)
+    >>> print(r.status, f"{r.value:.5f}", r.lo < 2**0.5 <= r.hi)
+    ok 1.41421 True
+    >>> find_threshold(lambda x: x > 5.0, 0.0, 2.0, 0.1).status
+    'above_range'
     """
     lo, hi, tol = float(lo), float(hi), float(tol)
     lo, hi, tol, max_iter, scan = check_search_args(lo, hi, tol, max_iter, scan)

@@ -322,7 +322,7 @@ def _walk(path: str, node: Any) -> None:
 
 
 def check_config(config: Mapping[str, Any], root: str | Path = ".") -> None:
-    """Raise :class:`ConfigError` for the first problem in ``config`` (see the module).
+    """Raise :class:`~pencore.ConfigError` for the first problem in ``config`` (see the module).
 
     Parameters
     ----------

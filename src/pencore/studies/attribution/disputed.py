@@ -113,7 +113,8 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
     Parameters
     ----------
     choices : mapping, optional
-        The setting; keys in :data:`CHOICES`. ``None`` or ``{}``: pencore's default.
+        The setting; keys in :data:`~pencore.paper.choices.CHOICES`. ``None`` or ``{}``: pencore's
+        default.
 
     Returns
     -------

@@ -126,7 +126,7 @@ def _miss(key: str, value: np.ndarray, paper: float) -> np.ndarray:
 
 def gather(parts: Sequence[xr.Dataset]) -> xr.Dataset:
     """Join :func:`run_setting` results (in the given order) and add ``paper_<n>``,
-    ``rel_<n>`` (pencore / paper - 1), ``miss_<n>`` (see :func:`_miss`) for every paper
+    ``rel_<n>`` (pencore / paper - 1), ``miss_<n>`` (see ``_miss``) for every paper
     number, and ``within_tolerance_all`` per setting."""
     if not parts:
         raise InputError("attribution gather: no parts")

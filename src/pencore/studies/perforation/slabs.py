@@ -1,7 +1,7 @@
 """Beyond the paper: perforation of finite slabs.
 
-* :func:`ballistic_limit_map`: the ballistic limit v_bl (:func:`pencore.search.critical.
-  ballistic_limit`) of one projectile against slab thickness and obliquity;
+* :func:`ballistic_limit_map`: the ballistic limit v_bl (:func:`~pencore.ballistic_limit`)
+  of one projectile against slab thickness and obliquity;
 * :func:`residual_velocity_curve`: residual speed against impact speed for one slab,
   with the Recht-Ipson curve ``v_r = a (v^p - v_bl^p)^(1/p)`` fitted to it
   (:func:`pencore.search.perforation.fit_recht_ipson`, ``v_bl`` from the search).

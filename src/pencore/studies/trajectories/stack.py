@@ -57,7 +57,8 @@ def stack_trajectories(
     Returns
     -------
     xarray.Dataset
-        :data:`TRAJECTORY_VARIABLES` on ``(*dims, time)`` and per-run scalars on ``dims``:
+        :data:`~pencore.studies.common.TRAJECTORY_VARIABLES` on ``(*dims, time)`` and per-run
+        scalars on ``dims``:
         ``outcome``, ``reversed``, ``penetration_depth``, ``path_length``,
         ``final_deviation`` (and ``final_deviation_signed``), ``final_theta``,
         ``nose_direction``, ``t_first_contact``, ``t_end``, ``n_steps``, ``wall_time``.

@@ -33,6 +33,7 @@ DEPTH_MEASURES: dict[str, tuple[str, str]] = {
     ),
 }
 
+#: The columns of a Table 2 input row.
 TABLE2_INPUT_COLUMNS = (
     "test",
     "velocity_m_s",
@@ -65,7 +66,8 @@ def table2(
     Parameters
     ----------
     rows : pandas.DataFrame
-        One row per test with columns :data:`TABLE2_INPUT_COLUMNS` (and optionally
+        One row per test with columns :data:`~pencore.studies.table2.TABLE2_INPUT_COLUMNS` (and
+        optionally
         ``source``). Velocities in m/s, angles in degrees, depths in m.
     numerics : Numerics or mapping, optional
         Numerical parameters, or overrides of pencore's defaults.
