@@ -16,7 +16,8 @@ module             figures
 =================  =====================================================================
 
 Each ``plot_*`` function takes the study's dataset and returns a
-:class:`matplotlib.figure.Figure`; :func:`save_figure` writes it (format from the suffix).
+:class:`matplotlib.figure.Figure`; :func:`~pencore.plotting.style.save_figure` writes it
+(format from the suffix).
 :data:`PLOTS` maps the workflow's figure kinds to the functions: the Section 4 studies'
 from their records (:mod:`pencore.workflowconfig.registry`), the other figures listed here.
 """

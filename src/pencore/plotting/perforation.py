@@ -156,8 +156,8 @@ def plot_ballistic_map(bl_map: xr.Dataset, cmp: xr.Dataset | None = None) -> Fig
     ``v_bl(0) sec(theta)`` dashed.
     Right: ``v_bl(theta) / v_bl(0)`` against obliquity at the map's thickness nearest
     the measured plates' median, one line per near-surface option, ``sec(theta)``
-    dashed, and the measured ratios (``cmp``, :func:`pencore.studies.perforation.obliquity.
-    compare_obliquity`) as points.
+    dashed, and the measured ratios (``cmp``,
+    :func:`~pencore.studies.perforation.obliquity.compare_obliquity`) as points.
     """
     fig = new_figure(11.0, 4.6)
     ax, bx = fig.subplots(1, 2)

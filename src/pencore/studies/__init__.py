@@ -11,13 +11,14 @@ writes a file or runs Snakemake.
 module             contents
 =================  ===============================================================
 ``common``         the paper's projectiles, axes, attributes, search variables
-``config``         a study from its configuration record: :func:`config.from_config`,
-                   :func:`config.gather`
+``config``         a study from its configuration record:
+                   :func:`~pencore.studies.config.from_config`,
+                   :func:`~pencore.studies.config.gather`
 ``trajectories``   Figs 7, 11, 13-14, 16-17 and the start-height study
 ``critical``       Figs 8 and 12 (Vcr), 15 (Vci), 18 (omega_c)
 ``turning``        Fig. 9: total turning angle against Lc/L
-``comparison``     :func:`comparison.paper_comparison`: the paper's numbers beside
-                   pencore's
+``comparison``     :func:`~pencore.studies.comparison.paper_comparison`: the paper's
+                   numbers beside pencore's
 ``trends``         trend verdicts within search brackets
 ``validation``     Table 2, Fig. 5, verification, the measured shots
 ``perforation``    beyond the paper: ballistic limits and residual velocities of plates

@@ -3,7 +3,8 @@
 Each claim names, in its ``computed_by`` column, an entry of :data:`HANDLERS`: a function
 of the claim and the study datasets that returns the claim's table rows (none when its
 study was not given). The paper's values come from the claim, never from code; verdicts
-on the paper's trends are computed from the datasets with :func:`trend`. The rows are
+on the paper's trends are computed from the datasets with
+:func:`~pencore.studies.trends.trend`. The rows are
 formatted, rounded and looked up in the search datasets by the helpers below; the spin
 claims (Figs 16-18, Sect. 4.3) compare the deviation alpha and the turning back at an
 initial angular velocity, with the start-height study beside them, and omega_c of #2.

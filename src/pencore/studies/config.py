@@ -1,5 +1,6 @@
 """From the workflow configuration to studies: running one study or one job part of it
-(:func:`from_config`) and joining the parts (:func:`gather`), dispatched through the
+(:func:`~pencore.studies.config.from_config`) and joining the parts
+(:func:`~pencore.studies.config.gather`), dispatched through the
 records of :mod:`pencore.workflowconfig.registry`; each record names the ``run_*`` function,
 beside its study's physics, that reads the study's configuration entry.
 """

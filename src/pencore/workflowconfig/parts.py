@@ -1,6 +1,8 @@
-"""How a split study's configuration becomes job parts (:func:`parts_of`; which studies
+"""How a split study's configuration becomes job parts
+(:func:`~pencore.workflowconfig.parts.parts_of`; which studies
 are split, and by what, is their record in :mod:`pencore.workflowconfig.registry`), with
-the ``{min, max, step}`` grids of the configuration (:func:`grid`).
+the ``{min, max, step}`` grids of the configuration
+(:func:`~pencore.workflowconfig.parts.grid`).
 
 Light (numpy and :mod:`pencore.errors` only): the workflow asks for the parts at every
 Snakemake start, before any study runs.

@@ -1,4 +1,5 @@
-"""The Section 4 studies of the workflow, one :class:`Study` record each.
+"""The Section 4 studies of the workflow, one
+:class:`~pencore.workflowconfig.registry.Study` record each.
 
 Everything that names a study is derived from :data:`STUDIES`: the configuration dispatch
 (:func:`pencore.studies.config.from_config`, :func:`pencore.studies.config.gather`), the

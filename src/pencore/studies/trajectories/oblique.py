@@ -32,7 +32,7 @@ def fig7(
     """Paper Fig. 7: trajectories and slopes of #2 at 45 deg, tip from (-1, 1) m.
 
     Dims ``(velocity, time)``. Besides the variables of
-    :func:`~pencore.studies.trajectories.stack_trajectories`: ``x_linear``
+    :func:`~pencore.studies.trajectories.stack.stack_trajectories`: ``x_linear``
     (x of the centre of mass where the curved part ends, Point 2 of Eq. 12 by
     :func:`pencore.analysis.turning.turning_angle`) and ``delta_theta``.
     """

@@ -1,6 +1,7 @@
 """Validation and verification studies of the paper's Section 3.
 
-* :func:`table2` (code in :mod:`pencore.studies.validation.table2`) - the five soil tests of
+* :func:`~pencore.studies.validation.table2.table2` (code in
+  :mod:`pencore.studies.validation.table2`) - the five soil tests of
   Forrestal & Luk (1992) (paper Table 2), run with every candidate projectile and both
   depth measures; the candidate closest to the paper's predicted column is selected and
   reported.

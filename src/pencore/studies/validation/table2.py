@@ -66,8 +66,8 @@ def table2(
     Parameters
     ----------
     rows : pandas.DataFrame
-        One row per test with columns :data:`~pencore.studies.table2.TABLE2_INPUT_COLUMNS` (and
-        optionally
+        One row per test with columns
+        :data:`~pencore.studies.validation.table2.TABLE2_INPUT_COLUMNS` (and optionally
         ``source``). Velocities in m/s, angles in degrees, depths in m.
     numerics : Numerics or mapping, optional
         Numerical parameters, or overrides of pencore's defaults.
