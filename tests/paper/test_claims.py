@@ -90,7 +90,7 @@ def test_comparison_rows_come_from_the_claims():
     }  # fmt: skip
     data = {k: read_netcdf(ARCHIVE / f"{v}.nc") for k, v in names.items()}
     claims = load_claims()
-    df = paper_comparison(claims=claims, **data, table3=False)
+    df = paper_comparison(datasets=data, claims=claims, table3=False)
     assert set(df["claim"]) <= set(claims["id"])
     byid = claims.set_index("id")
     for _, r in df[df["kind"] == "value"].iterrows():
@@ -101,6 +101,6 @@ def test_comparison_rows_come_from_the_claims():
         assert float(r["paper_value"]) == pytest.approx(expect, rel=1e-6), r["quantity"]
     edited = claims.copy()
     edited.loc[edited["id"] == "fig16_alpha_20", "value"] = "9.99"
-    df2 = paper_comparison(claims=edited, **data, table3=False)
+    df2 = paper_comparison(datasets=data, claims=edited, table3=False)
     row = df2[df2["claim"] == "fig16_alpha_20"].iloc[0]
     assert float(row["paper_value"]) == 9.99

@@ -7,8 +7,11 @@ import pytest
 import xarray as xr
 from helpers import search_results
 
+from pencore.errors import InputError
+from pencore.paper.claims import load_claims
 from pencore.studies.common import projectile_coords, search_variables
 from pencore.studies.comparison import _nose_rows, paper_comparison
+from pencore.workflowconfig.registry import STUDIES
 
 NAN = np.nan
 
@@ -38,7 +41,7 @@ def _rows(df, start):
 
 def test_comparison_fig8_trends_follow_the_data():
     falls = _fig8(np.array([[3000.0, 1574.0, 600.0], [2100.0, 1100.0, 400.0]]))
-    df = paper_comparison(fig8=falls, table3=False)
+    df = paper_comparison(datasets={"fig8": falls}, table3=False)
     assert list(df.columns[:6]) == [
         "quantity",
         "paper_value",
@@ -50,6 +53,8 @@ def test_comparison_fig8_trends_follow_the_data():
     got = dict(zip(df["quantity"], df["pencore_value"], strict=True))
     assert got["Fig. 8: Vcr against obliquity"] == "holds"
     assert got["Fig. 8: Vcr against Lc/L"] == "holds"
+    # the claims find the dataset by their study; the rows name the registry's file
+    assert df["source"].str.startswith(STUDIES["fig8"].dataset).all()
     vcr = _rows(df, "Vcr of #2 at 45 deg").iloc[0]
     assert vcr["paper_value"] == 1645.5 and vcr["pencore_value"] == 1574.0
     assert vcr["difference"] == pytest.approx(1574.0 - 1645.5)
@@ -58,7 +63,9 @@ def test_comparison_fig8_trends_follow_the_data():
     rises = _fig8(np.array([[600.0, 1574.0, 3000.0], [700.0, 2000.0, 3500.0]]))
     got = dict(
         zip(
-            *paper_comparison(fig8=rises, table3=False)[["quantity", "pencore_value"]].T.values,
+            *paper_comparison(datasets={"fig8": rises}, table3=False)[
+                ["quantity", "pencore_value"]
+            ].T.values,
             strict=True,
         )
     )
@@ -66,7 +73,7 @@ def test_comparison_fig8_trends_follow_the_data():
     assert got["Fig. 8: Vcr against Lc/L"] == "does not hold"
     # a search above its range is reported as a bound, not a number
     above = _fig8(np.array([[3000.0, NAN, 600.0], [2100.0, 1100.0, 400.0]]))
-    row = _rows(paper_comparison(fig8=above, table3=False), "Vcr of #2").iloc[0]
+    row = _rows(paper_comparison(datasets={"fig8": above}, table3=False), "Vcr of #2").iloc[0]
     assert row["pencore_value"] == "> 4000" and "above_range" in row["note"]
 
 
@@ -85,12 +92,14 @@ def test_comparison_fig9_fig18_and_verdict_rows():
         },
         attrs={"primary_bracket_fraction": 0.05},
     )
-    df = paper_comparison(fig9=fig9, table3=False)
+    df = paper_comparison(datasets={"fig9": fig9}, table3=False)
     assert df["pencore_value"].tolist() == ["holds"]
     fig9["delta_theta"] = fig9["delta_theta"][::-1].assign_coords(
         projectile=fig9["projectile"], lc_over_l=fig9["lc_over_l"]
     )
-    assert paper_comparison(fig9=fig9, table3=False)["pencore_value"].tolist() == ["does not hold"]
+    assert paper_comparison(datasets={"fig9": fig9}, table3=False)["pencore_value"].tolist() == [
+        "does not hold"
+    ]
 
     # Fig. 18: p2 never turns back in range, p4 falls with Vi
     data = search_variables(
@@ -104,7 +113,7 @@ def test_comparison_fig9_fig18_and_verdict_rows():
         data,
         coords={**projectile_coords(["p2", "p4"]), "velocity": ("velocity", [500.0, 1000.0])},
     )
-    df = paper_comparison(fig18=fig18, table3=False)
+    df = paper_comparison(datasets={"fig18": fig18}, table3=False)
     got = dict(zip(df["quantity"], df["pencore_value"], strict=True))
     assert got["omega_c of #2 at 1000 m/s (Figs 16-17)"] == "> 4000"
     assert got["Fig. 18: omega_c against impact velocity"] == "holds"
@@ -118,7 +127,7 @@ def test_comparison_fig9_fig18_and_verdict_rows():
         },
         coords={"velocity": [1641.0, 1650.0, 1700.0]},
     )
-    df = paper_comparison(fig7=fig7, table3=False)
+    df = paper_comparison(datasets={"fig7": fig7}, table3=False)
     verdicts = df[df["kind"] == "verdict"].set_index("quantity")["difference"]
     assert verdicts.str.contains("1641").index.size == 3
     assert verdicts[verdicts.index.str.contains("1641")].item() == "differs"
@@ -142,13 +151,13 @@ def test_comparison_nose_direction_statements():
             "yaw": ("yaw", yaw),
         },
     )
-    got = {r["quantity"]: r["pencore_value"] for r in _nose_rows(ds)}
+    got = {r["quantity"]: r["pencore_value"] for r in _nose_rows(ds, "results/fig12/vcr_yaw.nc")}
     assert got["Fig. 12: nose points +x at Vcr for every negative yaw"] == "yes"
     assert got["Fig. 12: flip to -x more likely at 30 than 60 deg"] == "yes"  # 2 vs 1
     assert got["Fig. 12: flip to -x more likely for larger Lc/L (p4 than p2)"] == "yes"
     assert got["Fig. 12: the flip to -x happens only for yaw > 1 deg"] == "yes"
     ds["nose_direction"][0, 0, 0] = "-x"  # a negative yaw that flips
-    got = {r["quantity"]: r["pencore_value"] for r in _nose_rows(ds)}
+    got = {r["quantity"]: r["pencore_value"] for r in _nose_rows(ds, "results/fig12/vcr_yaw.nc")}
     assert got["Fig. 12: nose points +x at Vcr for every negative yaw"] == "no"
     assert got["Fig. 12: the flip to -x happens only for yaw > 1 deg"] == "no"
 
@@ -174,3 +183,16 @@ def test_comparison_table2_and_table3_rows():
     assert len(t3) == 8
     lcl = t3[t3["quantity"].str.endswith("Lc/L")]
     assert (lcl["difference"].astype(float).abs() < 1e-3).all()
+
+
+def test_comparison_names_an_unknown_study():
+    """A dataset under an id the registry lacks, or a claim whose study names no Section 4
+    dataset, is one line naming the offending value."""
+    with pytest.raises(InputError, match="'fig99'") as e:
+        paper_comparison(datasets={"fig99": xr.Dataset()}, table3=False)
+    assert "\n" not in str(e.value)
+    claims = load_claims().copy()
+    claims.loc[claims["computed_by"] == "fig8_lc", "study"] = "fig8/elsewhere"
+    with pytest.raises(InputError, match="fig8/elsewhere") as e:
+        paper_comparison(claims=claims, table3=False)
+    assert "\n" not in str(e.value)

@@ -3,11 +3,11 @@ and the sign-change definitions, with units."""
 
 import numpy as np
 
-from pencore.studies.turning import fig9
+from pencore.studies.turning import turning_angle_study
 
 
 def test_turning_angle_per_projectile_and_fraction():
-    ds = fig9(["p1", "p4"], fractions=(0.05, 0.1), n_time=40)
+    ds = turning_angle_study(["p1", "p4"], fractions=(0.05, 0.1), n_time=40)
     assert ds["delta_theta"].dims == ("projectile", "bracket_fraction")
     assert ds["delta_theta"].attrs["units"] == "degree"
     assert ds["lc_over_l"].values[0] < ds["lc_over_l"].values[1]

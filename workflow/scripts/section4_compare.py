@@ -15,8 +15,8 @@ table2 = pd.read_csv(smk.input.table2)
 claims = load_claims(smk.input.claims)
 log.info("%d claims from %s", len(claims), smk.input.claims)
 df = paper_comparison(
+    datasets=datasets,
     claims=claims,
-    **datasets,
     table2=table2,
     yaw_convention=smk.params.yaw_convention,
 )

@@ -2,7 +2,10 @@
 
 Each claim names, in its ``computed_by`` column, an entry of :data:`HANDLERS`: a function
 of the claim and the study datasets that returns the claim's table rows (none when its
-study was not given). The paper's values come from the claim, never from code; verdicts
+study was not given). A claim's ``study`` column names its dataset, ``results/<study>.nc``;
+the handler finds that study's record in :data:`pencore.workflowconfig.registry.STUDIES`
+and reads the dataset given under the record's id, and the rows' sources are the record's
+dataset path. The paper's values come from the claim, never from code; verdicts
 on the paper's trends are computed from the datasets with
 :func:`~pencore.studies.trends.trend`. The rows are
 formatted, rounded and looked up in the search datasets by the helpers below; the spin
@@ -26,11 +29,42 @@ from pencore.errors import InputError
 from pencore.inputs.library import get_projectile
 from pencore.paper.claims import at, load_claims
 from pencore.studies.trends import trend
+from pencore.workflowconfig.registry import STUDIES, Study, study
 
 __all__ = ["paper_comparison", "HANDLERS"]
 
 Claim = Mapping[str, Any]
 Rows = list[dict[str, Any]]
+
+
+# ----------------------------------------------------------------------------- studies
+
+
+def _record(c: Claim) -> Study:
+    """The registry record of a claim's study: the one whose dataset is ``results/<study>.nc``."""
+    path = f"results/{c['study']}.nc"
+    for s in STUDIES.values():
+        if s.dataset == path:
+            return s
+    known = ", ".join(
+        s.dataset.removeprefix("results/").removesuffix(".nc") for s in STUDIES.values()
+    )
+    raise InputError(
+        f"paper claims: claim {c['id']!r} has study {c['study']!r}, which names no Section 4 "
+        f"dataset (one of {known})"
+    )
+
+
+def _dataset(c: Claim, d: Mapping[str, Any]) -> tuple[xr.Dataset | None, Study]:
+    """(the dataset of the claim's study, or ``None`` when not given; its record)."""
+    rec = _record(c)
+    return d["datasets"].get(rec.id), rec
+
+
+def _siblings(rec: Study) -> list[Study]:
+    """The other studies of ``rec``'s configuration entry (e.g. the start-height study
+    beside Figs 16-17)."""
+    return [s for s in STUDIES.values() if s.entry == rec.entry and s.id != rec.id]
 
 
 # ----------------------------------------------------------------------------- rows
@@ -131,9 +165,10 @@ def _pencore_rel(pencore: Any, paper: float) -> str:
     return ""
 
 
-def _nose_rows(ds: xr.Dataset) -> list[dict[str, Any]]:
-    """Verdicts on the paper's Fig. 12 statements about the final nose direction."""
-    src = "results/fig12/vcr_yaw.nc: nose_direction"
+def _nose_rows(ds: xr.Dataset, dataset: str) -> list[dict[str, Any]]:
+    """Verdicts on the paper's Fig. 12 statements about the final nose direction of ``ds``,
+    read from the file ``dataset``."""
+    src = f"{dataset}: nose_direction"
     nd = ds["nose_direction"]
     known = nd != ""
     minus = (nd == "-x") & known
@@ -211,22 +246,31 @@ def _close(values: Any, v: float) -> bool:
 # ----------------------------------------------------------------------------- spin (Figs 16-18)
 
 
-def _start_heights(d: Mapping[str, Any], w: float) -> list[tuple[float, float, int]]:
-    """(tip start height m, alpha deg, reversed 0/1) of the start-height study at spin w."""
-    sh = d.get("start_height")
-    if sh is None or not _close(sh["omega"], w):
-        return []
-    cells = [sh.sel(omega=w, start_height=hh) for hh in sh["start_height"].values]
-    return [(float(x["start_height"]), float(x["alpha"]), int(x["reversed"])) for x in cells]
+def _start_heights(
+    rec: Study, d: Mapping[str, Any], w: float
+) -> list[tuple[float, float, int, str]]:
+    """(tip start height m, alpha deg, reversed 0/1, dataset path) at spin ``w`` of the
+    start-height studies beside ``rec`` (the studies of its configuration entry)."""
+    out = []
+    for s in _siblings(rec):
+        sh = d["datasets"].get(s.id)
+        if sh is None or not _close(sh["omega"], w):
+            continue
+        cells = [sh.sel(omega=w, start_height=hh) for hh in sh["start_height"].values]
+        out += [
+            (float(x["start_height"]), float(x["alpha"]), int(x["reversed"]), s.dataset)
+            for x in cells
+        ]
+    return out
 
 
 def _fig16_alpha(c: Claim, d: Mapping[str, Any]) -> Rows:
     w, a = float(at(c["at"])[0]["omega"]), float(c["value"])
     rows = []
-    fig16 = d.get("fig16")
-    if fig16 is not None and _close(fig16["omega"], w):
-        h = float(fig16.attrs.get("start_height_m", 0.0))
-        pen = float(fig16["final_deviation"].sel(omega=w))
+    ds, rec = _dataset(c, d)
+    if ds is not None and _close(ds["omega"], w):
+        h = float(ds.attrs.get("start_height_m", 0.0))
+        pen = float(ds["final_deviation"].sel(omega=w))
         rows.append(
             _row(
                 f"Fig. 16: deviation alpha of #2, 1000 m/s, omega = {w:g} rad/s",
@@ -235,10 +279,10 @@ def _fig16_alpha(c: Claim, d: Mapping[str, Any]) -> Rows:
                 c["units"],
                 f"{_pencore_rel(pen, a)}; tip starting {h:g} m above the surface",
                 "value",
-                "results/fig16/trajectories.nc",
+                rec.dataset,
             )
         )
-    for hh, pen, rev in _start_heights(d, w):
+    for hh, pen, rev, src in _start_heights(rec, d, w):
         rows.append(
             _row(
                 f"Start-height sensitivity: alpha at omega = {w:g} rad/s, tip {hh:g} m above",
@@ -247,7 +291,7 @@ def _fig16_alpha(c: Claim, d: Mapping[str, Any]) -> Rows:
                 c["units"],
                 f"{_pencore_rel(pen, a)}; reversed = {rev}",
                 "value",
-                "results/fig16/start_height.nc",
+                src,
             )
         )
     return rows
@@ -256,10 +300,10 @@ def _fig16_alpha(c: Claim, d: Mapping[str, Any]) -> Rows:
 def _fig16_reverses(c: Claim, d: Mapping[str, Any]) -> Rows:
     w = float(at(c["at"])[0]["omega"])
     rows = []
-    fig16 = d.get("fig16")
-    if fig16 is not None and _close(fig16["omega"], w):
-        h = float(fig16.attrs.get("start_height_m", 0.0))
-        rev = int(fig16["reversed"].sel(omega=w))
+    ds, rec = _dataset(c, d)
+    if ds is not None and _close(ds["omega"], w):
+        h = float(ds.attrs.get("start_height_m", 0.0))
+        rev = int(ds["reversed"].sel(omega=w))
         rows.append(
             _row(
                 f"Fig. 16: turns back at omega = {w:g} rad/s (#2, 1000 m/s)",
@@ -268,10 +312,10 @@ def _fig16_reverses(c: Claim, d: Mapping[str, Any]) -> Rows:
                 "",
                 f"tip starting {h:g} m above the surface",
                 "verdict",
-                "results/fig16/trajectories.nc",
+                rec.dataset,
             )
         )
-    for hh, pen, rev in _start_heights(d, w):
+    for hh, pen, rev, src in _start_heights(rec, d, w):
         rows.append(
             _row(
                 f"Start-height sensitivity: turns back at omega = {w:g} rad/s, tip {hh:g} m above",
@@ -280,22 +324,18 @@ def _fig16_reverses(c: Claim, d: Mapping[str, Any]) -> Rows:
                 "",
                 f"alpha = {pen:.3g} deg",
                 "verdict",
-                "results/fig16/start_height.nc",
+                src,
             )
         )
     return rows
 
 
 def _omega_c_p2(c: Claim, d: Mapping[str, Any]) -> Rows:
-    fig18 = d.get("fig18")
-    if (
-        fig18 is None
-        or "p2" not in fig18["projectile"].values
-        or not _close(fig18["velocity"], 1000.0)
-    ):
+    ds, rec = _dataset(c, d)
+    if ds is None or "p2" not in ds["projectile"].values or not _close(ds["velocity"], 1000.0):
         return []
     lo_p, hi_p = float(c["value"]), float(c["value_hi"])
-    val, note = _search_value(fig18, "omega_c", {"projectile": "p2", "velocity": 1000.0})
+    val, note = _search_value(ds, "omega_c", {"projectile": "p2", "velocity": 1000.0})
     return [
         _row(
             "omega_c of #2 at 1000 m/s (Figs 16-17)",
@@ -305,7 +345,7 @@ def _omega_c_p2(c: Claim, d: Mapping[str, Any]) -> Rows:
             f"paper: {lo_p:g} does not turn back, {hi_p:g} does (derived: midpoint of "
             f"({lo_p:g}, {hi_p:g}]); pencore {note}",
             "value",
-            "results/fig18/omega_c.nc",
+            rec.dataset,
         )
     ]
 
@@ -371,11 +411,11 @@ def _table3(c: Claim, d: Mapping[str, Any], what: str) -> Rows:
 
 
 def _fig7_reverses(c: Claim, d: Mapping[str, Any]) -> Rows:
-    fig7 = d.get("fig7")
+    ds, rec = _dataset(c, d)
     v = float(at(c["at"])[0]["velocity"])
-    if fig7 is None or not _close(fig7["velocity"], v):
+    if ds is None or not _close(ds["velocity"], v):
         return []
-    pen_rev = bool(int(fig7["reversed"].sel(velocity=v, method="nearest")))
+    pen_rev = bool(int(ds["reversed"].sel(velocity=v, method="nearest")))
     return [
         _row(
             f"Fig. 7 (#2, 45 deg, tip from (-1, 1) m): turns back at Vi = {v:g} m/s",
@@ -384,21 +424,21 @@ def _fig7_reverses(c: Claim, d: Mapping[str, Any]) -> Rows:
             "",
             "",
             "verdict",
-            "results/fig7/trajectories.nc: reversed",
+            f"{rec.dataset}: reversed",
         )
     ]
 
 
 def _fig7_x_linear(c: Claim, d: Mapping[str, Any]) -> Rows:
-    fig7 = d.get("fig7")
-    if fig7 is None:
+    ds, rec = _dataset(c, d)
+    if ds is None:
         return []
     rows = []
     for cond in at(c["at"]):
         v = float(cond["velocity"])
-        if not _close(fig7["velocity"], v):
+        if not _close(ds["velocity"], v):
             continue
-        x2 = float(fig7["x_linear"].sel(velocity=v, method="nearest"))
+        x2 = float(ds["x_linear"].sel(velocity=v, method="nearest"))
         rows.append(
             _row(
                 f"Fig. 7: x where the curved path becomes straight, Vi = {v:g} m/s",
@@ -408,18 +448,18 @@ def _fig7_x_linear(c: Claim, d: Mapping[str, Any]) -> Rows:
                 "paper: approximately 7 m for 1641-1700 m/s; pencore: centre of "
                 "mass x at Point 2 (|curvature| below 5 % of its peak)",
                 "value",
-                "results/fig7/trajectories.nc: x_linear",
+                f"{rec.dataset}: x_linear",
             )
         )
     return rows
 
 
 def _vcr_p2_45(c: Claim, d: Mapping[str, Any]) -> Rows:
-    fig8 = d.get("fig8")
-    if fig8 is None or "p2" not in fig8["projectile"].values or not _close(fig8["obliquity"], 45):
+    ds, rec = _dataset(c, d)
+    if ds is None or "p2" not in ds["projectile"].values or not _close(ds["obliquity"], 45):
         return []
     lo_p, hi_p = float(c["value"]), float(c["value_hi"])
-    val, note = _search_value(fig8, "vcr", {"projectile": "p2", "obliquity": 45.0})
+    val, note = _search_value(ds, "vcr", {"projectile": "p2", "obliquity": 45.0})
     mid = 0.5 * (lo_p + hi_p)
     return [
         _row(
@@ -430,35 +470,35 @@ def _vcr_p2_45(c: Claim, d: Mapping[str, Any]) -> Rows:
             f"paper: {lo_p:g} does not reverse, {hi_p:g} does (derived: midpoint "
             f"of ({lo_p:g}, {hi_p:g}]); pencore {note}; {_pencore_rel(val, mid)}",
             "value",
-            "results/fig8/vcr.nc: vcr",
+            f"{rec.dataset}: vcr",
         )
     ]
 
 
-def _search_trend(study: str, name: str, along: str, quantity: str, source: str):
+def _search_trend(name: str, along: str, quantity: str):
+    """Handler: the trend of search quantity ``name`` along ``along`` in the claim's study."""
+
     def handler(c: Claim, d: Mapping[str, Any]) -> Rows:
-        ds = d.get(study)
+        ds, rec = _dataset(c, d)
         if ds is None:
             return []
-        return [_trend_row(quantity, c, _search_lines(ds, name, along), source)]
+        return [_trend_row(quantity, c, _search_lines(ds, name, along), rec.dataset)]
 
     return handler
 
 
 def _fig9_lc(c: Claim, d: Mapping[str, Any]) -> Rows:
-    fig9 = d.get("fig9")
-    if fig9 is None:
+    ds, rec = _dataset(c, d)
+    if ds is None:
         return []
-    f0 = float(fig9.attrs.get("primary_bracket_fraction", analysis.DEFAULT_BRACKET_FRACTION))
-    fr = fig9["bracket_fraction"].values
+    f0 = float(ds.attrs.get("primary_bracket_fraction", analysis.DEFAULT_BRACKET_FRACTION))
+    fr = ds["bracket_fraction"].values
     fsel = fr[int(np.argmin(np.abs(fr - f0)))]
-    dth = fig9["delta_theta"].sel(bracket_fraction=fsel).values
-    tr = trend([("delta_theta", fig9["lc_over_l"].values, dth, dth)], c["value"])
-    spread = fig9["delta_theta"].max("bracket_fraction") - fig9["delta_theta"].min(
-        "bracket_fraction"
-    )
+    dth = ds["delta_theta"].sel(bracket_fraction=fsel).values
+    tr = trend([("delta_theta", ds["lc_over_l"].values, dth, dth)], c["value"])
+    spread = ds["delta_theta"].max("bracket_fraction") - ds["delta_theta"].min("bracket_fraction")
     values = ", ".join(
-        f"{p}: {v:.2f} deg" for p, v in zip(fig9["projectile"].values, dth, strict=True)
+        f"{p}: {v:.2f} deg" for p, v in zip(ds["projectile"].values, dth, strict=True)
     )
     return [
         _row(
@@ -469,7 +509,7 @@ def _fig9_lc(c: Claim, d: Mapping[str, Any]) -> Rows:
             f"{tr.note()}; values {values} (bracket fraction {fsel:g}; other fractions "
             f"move them by up to {float(spread.max()):.2f} deg)",
             "trend",
-            "results/fig9/turning_angle.nc",
+            rec.dataset,
         )
     ]
 
@@ -478,19 +518,19 @@ def _fig9_lc(c: Claim, d: Mapping[str, Any]) -> Rows:
 
 
 def _fig11_nose(c: Claim, d: Mapping[str, Any]) -> Rows:
-    fig11 = d.get("fig11")
-    if fig11 is None:
+    ds, rec = _dataset(c, d)
+    if ds is None:
         return []
     neg, pos = str(c["value"]).split("/")[::-1]  # "-x/+x": positive yaw -x, negative +x
     rows = []
-    for y in fig11["yaw"].values:
+    for y in ds["yaw"].values:
         if float(y) == 0.0:
             continue
-        sub = fig11.sel(yaw=y)
+        sub = ds.sel(yaw=y)
         rows.append(
             _row(
-                f"Fig. 11 (#4, {fig11.attrs.get('velocity_fixed', 1000):g} m/s, "
-                f"{fig11.attrs.get('obliquity_fixed', 30):g} deg): nose direction at "
+                f"Fig. 11 (#4, {ds.attrs.get('velocity_fixed', 1000):g} m/s, "
+                f"{ds.attrs.get('obliquity_fixed', 30):g} deg): nose direction at "
                 f"the end, yaw {y:g} deg",
                 neg if y < 0 else pos,
                 str(sub["nose_direction"].item()),
@@ -500,30 +540,30 @@ def _fig11_nose(c: Claim, d: Mapping[str, Any]) -> Rows:
                 f"end of the run ({sub['outcome'].item()}, final theta "
                 f"{float(sub['final_theta']):.0f} deg)",
                 "verdict",
-                "results/fig11/trajectories.nc: nose_direction",
+                f"{rec.dataset}: nose_direction",
             )
         )
     return rows
 
 
 def _fig12_nose(c: Claim, d: Mapping[str, Any]) -> Rows:
-    fig12 = d.get("fig12")
-    if fig12 is None or "nose_direction" not in fig12:
+    ds, rec = _dataset(c, d)
+    if ds is None or "nose_direction" not in ds:
         return []
-    return _nose_rows(fig12)
+    return _nose_rows(ds, rec.dataset)
 
 
 # ----------------------------------------------------------------------------- Figs 13-15
 
 
 def _fig13_phi(c: Claim, d: Mapping[str, Any]) -> Rows:
-    fig13 = d.get("fig13")
+    ds, rec = _dataset(c, d)
     v, phi = float(at(c["at"])[0]["velocity"]), float(c["value"])
-    if fig13 is None or not _close(fig13["velocity"], v):
+    if ds is None or not _close(ds["velocity"], v):
         return []
     rows = []
-    for conv in (str(x) for x in fig13["convention"].values):
-        pen = float(fig13["final_deviation"].sel(convention=conv, velocity=v))
+    for conv in (str(x) for x in ds["convention"].values):
+        pen = float(ds["final_deviation"].sel(convention=conv, velocity=v))
         tag = " (configured)" if conv == d.get("yaw_convention", "axis_tilted") else ""
         rows.append(
             _row(
@@ -534,23 +574,23 @@ def _fig13_phi(c: Claim, d: Mapping[str, Any]) -> Rows:
                 f"{_pencore_rel(pen, phi)}; phi = final deviation (last state with "
                 "speed >= 0.1 Vi)",
                 "value",
-                "results/fig13/trajectories.nc",
+                rec.dataset,
             )
         )
     return rows
 
 
 def _fig13_large(c: Claim, d: Mapping[str, Any]) -> Rows:
-    fig13 = d.get("fig13")
+    ds, rec = _dataset(c, d)
     v = float(at(c["at"])[0]["velocity"])
-    if fig13 is None or not _close(fig13["velocity"], v):
+    if ds is None or not _close(ds["velocity"], v):
         return []
     thr = d.get("vci_threshold")
     thr = 5.0 if thr is None else float(thr)
     rows = []
-    for conv in (str(x) for x in fig13["convention"].values):
-        pen = float(fig13["final_deviation"].sel(convention=conv, velocity=v))
-        rev = int(fig13["reversed"].sel(convention=conv, velocity=v))
+    for conv in (str(x) for x in ds["convention"].values):
+        pen = float(ds["final_deviation"].sel(convention=conv, velocity=v))
+        rev = int(ds["reversed"].sel(convention=conv, velocity=v))
         rows.append(
             _row(
                 f"Fig. 13: large deviation at Vi = {v:g} m/s, {conv}",
@@ -560,7 +600,7 @@ def _fig13_large(c: Claim, d: Mapping[str, Any]) -> Rows:
                 f"pencore phi = {pen:.3g} deg, reversed = {rev}; 'large' = above "
                 f"the Vci threshold {thr:g} deg",
                 "verdict",
-                "results/fig13/trajectories.nc",
+                rec.dataset,
             )
         )
     return rows
@@ -568,10 +608,10 @@ def _fig13_large(c: Claim, d: Mapping[str, Any]) -> Rows:
 
 def _fig15(along: str, label: str):
     def handler(c: Claim, d: Mapping[str, Any]) -> Rows:
-        fig15 = d.get("fig15")
-        if fig15 is None:
+        ds, rec = _dataset(c, d)
+        if ds is None:
             return []
-        th = fig15["threshold"].values
+        th = ds["threshold"].values
         thr = d.get("vci_threshold")
         t0 = float(th[np.argmin(np.abs(th - (5.0 if thr is None else thr)))])
         return [
@@ -579,8 +619,8 @@ def _fig15(along: str, label: str):
                 f"Fig. 15: Vci against {label} (threshold {t:g} deg"
                 f"{', primary' if t == t0 else ''})",
                 c,
-                _search_lines(fig15, "vci", along, fixed={"threshold": t}),
-                "results/fig15/vci.nc",
+                _search_lines(ds, "vci", along, fixed={"threshold": t}),
+                rec.dataset,
             )
             for t in th
         ]
@@ -599,31 +639,15 @@ HANDLERS: dict[str, Callable[[Claim, Mapping[str, Any]], Rows]] = {
     "fig7_reverses": _fig7_reverses,
     "fig7_x_linear": _fig7_x_linear,
     "vcr_p2_45": _vcr_p2_45,
-    "fig8_obliquity": _search_trend(
-        "fig8", "vcr", "obliquity", "Fig. 8: Vcr against obliquity", "results/fig8/vcr.nc"
-    ),
-    "fig8_lc": _search_trend(
-        "fig8", "vcr", "projectile", "Fig. 8: Vcr against Lc/L", "results/fig8/vcr.nc"
-    ),
+    "fig8_obliquity": _search_trend("vcr", "obliquity", "Fig. 8: Vcr against obliquity"),
+    "fig8_lc": _search_trend("vcr", "projectile", "Fig. 8: Vcr against Lc/L"),
     "fig9_lc": _fig9_lc,
     "fig11_nose": _fig11_nose,
-    "fig12_yaw": _search_trend(
-        "fig12", "vcr", "yaw", "Fig. 12: Vcr against yaw", "results/fig12/vcr_yaw.nc"
-    ),
+    "fig12_yaw": _search_trend("vcr", "yaw", "Fig. 12: Vcr against yaw"),
     "fig12_obliquity": _search_trend(
-        "fig12",
-        "vcr",
-        "obliquity",
-        "Fig. 12: Vcr against obliquity (30 -> 60 deg)",
-        "results/fig12/vcr_yaw.nc",
+        "vcr", "obliquity", "Fig. 12: Vcr against obliquity (30 -> 60 deg)"
     ),
-    "fig12_lc": _search_trend(
-        "fig12",
-        "vcr",
-        "projectile",
-        "Fig. 12: Vcr against Lc/L (#2 -> #4)",
-        "results/fig12/vcr_yaw.nc",
-    ),  # fmt: skip
+    "fig12_lc": _search_trend("vcr", "projectile", "Fig. 12: Vcr against Lc/L (#2 -> #4)"),
     "fig12_nose": _fig12_nose,
     "fig13_phi": _fig13_phi,
     "fig13_large": _fig13_large,
@@ -633,35 +657,16 @@ HANDLERS: dict[str, Callable[[Claim, Mapping[str, Any]], Rows]] = {
     "fig16_reverses": _fig16_reverses,
     "omega_c_p2": _omega_c_p2,
     "fig18_velocity": _search_trend(
-        "fig18",
-        "omega_c",
-        "velocity",
-        "Fig. 18: omega_c against impact velocity",
-        "results/fig18/omega_c.nc",
-    ),  # fmt: skip
-    "fig18_lc": _search_trend(
-        "fig18",
-        "omega_c",
-        "projectile",
-        "Fig. 18: omega_c against Lc/L",
-        "results/fig18/omega_c.nc",
-    ),  # fmt: skip
+        "omega_c", "velocity", "Fig. 18: omega_c against impact velocity"
+    ),
+    "fig18_lc": _search_trend("omega_c", "projectile", "Fig. 18: omega_c against Lc/L"),
 }
 
 
 def paper_comparison(
     *,
+    datasets: Mapping[str, xr.Dataset] | None = None,
     claims: pd.DataFrame | None = None,
-    fig7: xr.Dataset | None = None,
-    fig8: xr.Dataset | None = None,
-    fig9: xr.Dataset | None = None,
-    fig11: xr.Dataset | None = None,
-    fig12: xr.Dataset | None = None,
-    fig13: xr.Dataset | None = None,
-    fig15: xr.Dataset | None = None,
-    fig16: xr.Dataset | None = None,
-    start_height: xr.Dataset | None = None,
-    fig18: xr.Dataset | None = None,
     table2: pd.DataFrame | None = None,
     table3: bool = True,
     yaw_convention: str = "axis_tilted",
@@ -671,17 +676,20 @@ def paper_comparison(
 
     Parameters
     ----------
+    datasets : mapping of str to xarray.Dataset, optional
+        The study datasets by study id (the keys of
+        :data:`pencore.workflowconfig.registry.STUDIES`); a study not given skips the
+        claims it computes. An unknown id is an :class:`~pencore.errors.InputError`.
     claims : pandas.DataFrame, optional
         :func:`pencore.paper.claims.load_claims` (default: ``config/paper_claims.csv``).
-    fig7 ... fig18, start_height : xarray.Dataset, optional
-        The study datasets; ``None`` skips the claims they compute.
     table2 : pandas.DataFrame, optional
         ``results/validation/table2.csv``. ``table3``: include the Table 3 rows.
     yaw_convention : str
         The configured yaw convention (marked in the Fig. 13 rows).
     vci_threshold : float, optional
         The deviation threshold (deg) the Vci rows lead with; default the
-        ``primary_threshold_deg`` of ``fig15``, else 5 deg.
+        ``primary_threshold_deg`` attribute of the given dataset that has one (the Vci
+        study's), else 5 deg.
 
     Returns
     -------
@@ -692,14 +700,24 @@ def paper_comparison(
         holds / partly holds / does not hold / undetermined, the count of steps in
         ``note``); brackets are compared at their midpoint, with the bracket in ``note``.
     """
+    given = dict(datasets or {})
+    for name in given:
+        study(name)  # InputError naming the known ids
     df = load_claims() if claims is None else claims
-    if vci_threshold is None and fig15 is not None and "primary_threshold_deg" in fig15.attrs:
-        vci_threshold = float(fig15.attrs["primary_threshold_deg"])
+    if vci_threshold is None:
+        primary = [
+            float(ds.attrs["primary_threshold_deg"])
+            for ds in given.values()
+            if ds is not None and "primary_threshold_deg" in ds.attrs
+        ]
+        vci_threshold = primary[0] if primary else None
     data = dict(
-        fig7=fig7, fig8=fig8, fig9=fig9, fig11=fig11, fig12=fig12, fig13=fig13, fig15=fig15,
-        fig16=fig16, start_height=start_height, fig18=fig18, table2=table2, table3=table3,
-        yaw_convention=yaw_convention, vci_threshold=vci_threshold,
-    )  # fmt: skip
+        datasets={k: ds for k, ds in given.items() if ds is not None},
+        table2=table2,
+        table3=table3,
+        yaw_convention=yaw_convention,
+        vci_threshold=vci_threshold,
+    )
     rows: Rows = []
     for c in df.to_dict("records"):
         handler = HANDLERS.get(c["computed_by"])

@@ -23,10 +23,10 @@ from pencore.studies.config import StudySettings
 from pencore.studies.trajectories.stack import stack_trajectories
 from pencore.workflowconfig.parts import values
 
-__all__ = ["fig9", "run_fig9"]
+__all__ = ["turning_angle_study", "run_fig9"]
 
 
-def fig9(
+def turning_angle_study(
     projectiles: Sequence[str] = PROJECTILES,
     target: str = "soil",
     *,
@@ -109,7 +109,7 @@ def fig9(
 def run_fig9(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
     """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
     record in :mod:`pencore.workflowconfig.registry` names this function)."""
-    return fig9(
+    return turning_angle_study(
         list(cfg["projectiles"]),
         c.target,
         obliquity=float(cfg["obliquity_deg"]),

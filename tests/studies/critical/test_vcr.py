@@ -5,7 +5,7 @@ import pytest
 
 import pencore
 from pencore.errors import InputError
-from pencore.studies.critical.vcr import fig8, vcr_study
+from pencore.studies.critical.vcr import vcr_obliquity_study, vcr_study
 
 START = (-1.0, 1.0, 0.0)
 
@@ -25,5 +25,5 @@ def test_vcr_brackets_the_turn_back_of_p2_at_45_deg():
 
 
 def test_fig8_is_at_zero_yaw():
-    with pytest.raises(InputError, match="fig8 is at zero yaw"):
-        fig8(["p2"], [45.0], yaws=(1.0,))
+    with pytest.raises(InputError, match="vcr_obliquity_study is at zero yaw"):
+        vcr_obliquity_study(["p2"], [45.0], yaws=(1.0,))

@@ -2,11 +2,11 @@
 straight, a spin deviates; a spinning body turns in free flight, so the angle at contact
 and alpha grow with the start height."""
 
-from pencore.studies.trajectories.spin import fig16, start_height_study
+from pencore.studies.trajectories.spin import spin_trajectories, start_height_study
 
 
 def test_spin_deviates_the_path():
-    ds = fig16(omegas=(0.0, 20.0), n_time=40)
+    ds = spin_trajectories(omegas=(0.0, 20.0), n_time=40)
     assert ds["tip_y"].dims == ("omega", "time") and ds["omega"].attrs["units"] == "rad s-1"
     dev = ds["final_deviation"].values
     assert abs(dev[0]) < 1e-9 < dev[1]

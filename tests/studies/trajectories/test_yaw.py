@@ -5,16 +5,16 @@ import numpy as np
 import pytest
 
 from pencore.inputs.conventions import YAW_CONVENTIONS
-from pencore.studies.trajectories.yaw import fig13
+from pencore.studies.trajectories.yaw import yaw_trajectories
 
 
 def test_zero_yaw_goes_straight_and_a_yaw_deviates():
-    straight = fig13(yaw=0.0, velocities=(280.0,), n_time=40)
+    straight = yaw_trajectories(yaw=0.0, velocities=(280.0,), n_time=40)
     assert straight["final_deviation"].dims == ("convention", "velocity")
     assert straight["convention"].values.tolist() == list(YAW_CONVENTIONS)
     assert straight["final_deviation"].attrs["units"] == "degree"
     np.testing.assert_allclose(straight["final_deviation"], 0.0, atol=1e-9)
-    yawed = fig13(yaw=0.5, velocities=(280.0,), n_time=40)
+    yawed = yaw_trajectories(yaw=0.5, velocities=(280.0,), n_time=40)
     assert (yawed["final_deviation"] > 0.1).all()
 
 
@@ -22,4 +22,4 @@ def test_repeated_velocities_are_refused():
     from pencore.errors import InputError
 
     with pytest.raises(InputError, match="repeated"):
-        fig13(velocities=(280.0, 280.0))
+        yaw_trajectories(velocities=(280.0, 280.0))

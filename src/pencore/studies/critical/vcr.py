@@ -32,7 +32,7 @@ from pencore.studies.common import (
 from pencore.studies.config import StudySettings
 from pencore.workflowconfig.parts import grid, value_range, values
 
-__all__ = ["vcr_study", "fig8", "run_fig8", "run_fig12"]
+__all__ = ["vcr_study", "vcr_obliquity_study", "run_fig8", "run_fig12"]
 
 
 def vcr_study(
@@ -158,7 +158,7 @@ def vcr_study(
     )
 
 
-def fig8(
+def vcr_obliquity_study(
     projectiles: Sequence[str] = PROJECTILES,
     obliquities: Sequence[float] = tuple(grid(15.0, 75.0, 7.5)),
     **kwargs: Any,
@@ -169,7 +169,7 @@ def fig8(
     coordinate.
     """
     if "yaws" in kwargs:
-        raise InputError("fig8 is at zero yaw; use vcr_study for other yaws")
+        raise InputError("vcr_obliquity_study is at zero yaw; use vcr_study for other yaws")
     ds = vcr_study(projectiles, obliquities, (0.0,), **kwargs).isel(yaw=0)
     ds.attrs["title"] = "Paper Fig. 8: critical reverse velocity against obliquity"
     return ds
@@ -179,7 +179,7 @@ def run_fig8(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
     """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
     record in :mod:`pencore.workflowconfig.registry` names this function)."""
     lo, hi = value_range(cfg["velocity_range_m_s"])
-    return fig8(
+    return vcr_obliquity_study(
         [c.projectile],
         values(cfg["obliquity_deg"]),
         target=c.target,

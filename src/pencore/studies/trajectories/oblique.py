@@ -15,10 +15,10 @@ from pencore.studies.config import StudySettings
 from pencore.studies.trajectories.stack import trajectory_set
 from pencore.workflowconfig.parts import values
 
-__all__ = ["fig7", "run_fig7"]
+__all__ = ["oblique_trajectories", "run_fig7"]
 
 
-def fig7(
+def oblique_trajectories(
     projectile: str = "p2",
     target: str = "soil",
     obliquity: float = 45.0,
@@ -81,7 +81,7 @@ def fig7(
 def run_fig7(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
     """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
     record in :mod:`pencore.workflowconfig.registry` names this function)."""
-    return fig7(
+    return oblique_trajectories(
         cfg["projectile"],
         c.target,
         float(cfg["obliquity_deg"]),

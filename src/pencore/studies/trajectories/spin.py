@@ -26,10 +26,10 @@ from pencore.studies.config import StudySettings
 from pencore.studies.trajectories.stack import trajectory_set
 from pencore.workflowconfig.parts import values
 
-__all__ = ["fig16", "start_height_study", "run_fig16", "run_start_height"]
+__all__ = ["spin_trajectories", "start_height_study", "run_fig16", "run_start_height"]
 
 
-def fig16(
+def spin_trajectories(
     projectile: str = "p2",
     target: str = "soil",
     velocity: float = 1000.0,
@@ -161,7 +161,7 @@ def start_height_study(
 def run_fig16(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
     """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
     record in :mod:`pencore.workflowconfig.registry` names this function)."""
-    return fig16(
+    return spin_trajectories(
         cfg["projectile"],
         c.target,
         float(cfg["velocity_m_s"]),

@@ -25,10 +25,10 @@ from pencore.studies.config import StudySettings
 from pencore.studies.trajectories.stack import stack_trajectories, trajectory_set
 from pencore.workflowconfig.parts import values
 
-__all__ = ["fig13", "run_fig11", "run_fig13"]
+__all__ = ["yaw_trajectories", "run_fig11", "run_fig13"]
 
 
-def fig13(
+def yaw_trajectories(
     projectile: str = "p4",
     target: str = "soil",
     yaw: float = 0.1,
@@ -103,7 +103,7 @@ def run_fig11(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
 def run_fig13(cfg: Mapping[str, Any], c: StudySettings) -> xr.Dataset:
     """Run the study from its configuration entry ``cfg`` and the shared ``c`` (its
     record in :mod:`pencore.workflowconfig.registry` names this function)."""
-    return fig13(
+    return yaw_trajectories(
         cfg["projectile"],
         c.target,
         float(cfg["yaw_deg"]),
