@@ -189,7 +189,8 @@ sinfo
 # ---- scratch copies ----------------------------------------------------------
 copy_workflow() {
     mkdir -p "$1"
-    cp -r "$REPO/Snakefile" "$REPO/workflow" "$REPO/config" "$REPO/.test" "$1/"
+    # -L: config/ links the paper data shipped in the package (src/pencore/paper/data)
+    cp -rL "$REPO/Snakefile" "$REPO/workflow" "$REPO/config" "$REPO/.test" "$1/"
 }
 copy_workflow "$WORK/slurm-run"
 copy_workflow "$WORK/local-run"
