@@ -5,8 +5,8 @@
 #     do not render) and runs every example of the gallery (an example that raises fails
 #     the build); it needs no network (intersphinx inventories in docs/_inventories/,
 #     MathJax from the docs extra, served by the site);
-#  2. the small configuration .test/config.yaml runs in a scratch clone and Snakemake
-#     writes its HTML report;
+#  2. Snakemake writes the HTML report of the small configuration .test/config.yaml, run
+#     by the test suite (kept by .ci/run in PENCORE_E2E_DIR) or else here in a scratch clone;
 #  3. headless chromium opens every page of the site and the report, and fails on an image
 #     that did not load, a script error, a docs page's request to another host, or math
 #     left as raw TeX (.ci/browser_check.py); screenshots of the front page and the report
@@ -28,13 +28,21 @@ echo "docs: built docs/_build/html"
 
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
-git clone -q "$REPO" "$WORK/repo"
-(
-    cd "$WORK/repo"
-    python -m snakemake --cores 2 --configfile .test/config.yaml --quiet > "$WORK/run.log" 2>&1 \
-        || { tail -40 "$WORK/run.log"; exit 1; }
-    python -m snakemake --configfile .test/config.yaml --report "$WORK/report.html" \
-        > "$WORK/report.log" 2>&1 || { tail -40 "$WORK/report.log"; exit 1; }
-)
+# the test suite's end-to-end run of .test/config.yaml when .ci/run kept it
+# (PENCORE_E2E_DIR, tests/workflow/conftest.py), else a run in a scratch clone
+E2E=${PENCORE_E2E_DIR:-}
+if [[ -n "$E2E" && -f "$E2E/done.json" ]] \
+    && python -c "import json, sys; sys.exit(json.load(open(sys.argv[1]))['returncode'])" \
+        "$E2E/done.json"; then
+    run_dir="$E2E/wd"
+    echo "docs: the workflow report from the test suite's run in $run_dir"
+else
+    run_dir="$WORK/repo"
+    git clone -q "$REPO" "$run_dir"
+    (cd "$run_dir" && python -m snakemake --cores 2 --configfile .test/config.yaml --quiet) \
+        > "$WORK/run.log" 2>&1 || { tail -40 "$WORK/run.log"; exit 1; }
+fi
+(cd "$run_dir" && python -m snakemake --configfile .test/config.yaml --report "$WORK/report.html") \
+    > "$WORK/report.log" 2>&1 || { tail -40 "$WORK/report.log"; exit 1; }
 python .ci/browser_check.py --site docs/_build/html --report "$WORK/report.html" \
     --screenshots ci-artifacts
