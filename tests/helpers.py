@@ -75,3 +75,20 @@ def run_snakemake(cwd: Path, *args: str, timeout: float = 600) -> subprocess.Com
         text=True,
         timeout=timeout,
     )
+
+
+#: An ensemble case with every kind of distribution (the config check's and the ensemble
+#: study's tests share it; copy before changing it).
+ENSEMBLE_CASE = {
+    "name": "t",
+    "projectile": "p2",
+    "target": "soil",
+    "n_samples": 2000,
+    "n_chunks": 7,
+    "seed": 5,
+    "velocity_m_s": {"dist": "normal", "mean": 1400, "sd": 150, "min": 1200, "max": 1500},
+    "obliquity_deg": {"dist": "uniform", "min": 30, "max": 60},
+    "yaw_deg": 0.5,
+    "omega_rad_s": {"dist": "normal", "mean": 0, "sd": 2.0},
+    "azimuth_deg": {"dist": "uniform", "min": 0, "max": 360},
+}

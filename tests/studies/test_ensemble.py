@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 import pytest
+from helpers import ENSEMBLE_CASE
 
 from pencore import simulate
 from pencore.errors import InputError
@@ -20,19 +21,7 @@ from pencore.studies.ensemble import (
     wilson_interval,
 )
 
-CASE = {
-    "name": "t",
-    "projectile": "p2",
-    "target": "soil",
-    "n_samples": 2000,
-    "n_chunks": 7,
-    "seed": 5,
-    "velocity_m_s": {"dist": "normal", "mean": 1400, "sd": 150, "min": 1200, "max": 1500},
-    "obliquity_deg": {"dist": "uniform", "min": 30, "max": 60},
-    "yaw_deg": 0.5,
-    "omega_rad_s": {"dist": "normal", "mean": 0, "sd": 2.0},
-    "azimuth_deg": {"dist": "uniform", "min": 0, "max": 360},
-}
+CASE = ENSEMBLE_CASE
 
 
 def test_sampling_is_seeded_and_respects_the_distributions():

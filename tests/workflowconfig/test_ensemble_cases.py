@@ -3,24 +3,12 @@ and a bad one stops with one line naming the key and what is allowed."""
 
 import pytest
 import yaml
-from helpers import REPO
+from helpers import ENSEMBLE_CASE, REPO
 
 from pencore.errors import InputError
 from pencore.workflowconfig.ensemble_cases import CASE_KEYS, check_case
 
-CASE = {
-    "name": "t",
-    "projectile": "p2",
-    "target": "soil",
-    "n_samples": 2000,
-    "n_chunks": 7,
-    "seed": 5,
-    "velocity_m_s": {"dist": "normal", "mean": 1400, "sd": 150, "min": 1200, "max": 1500},
-    "obliquity_deg": {"dist": "uniform", "min": 30, "max": 60},
-    "yaw_deg": 0.5,
-    "omega_rad_s": {"dist": "normal", "mean": 0, "sd": 2.0},
-    "azimuth_deg": {"dist": "uniform", "min": 0, "max": 360},
-}
+CASE = ENSEMBLE_CASE
 
 
 def test_a_good_case_is_returned_with_every_variable_spelt_out():
