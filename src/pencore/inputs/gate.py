@@ -137,26 +137,29 @@ def _int_digits(value: int) -> int:
     return int(n.bit_length() * 0.30103) + 1
 
 
-#: The YAML event source: libyaml's C parser when PyYAML was built with it
-#: (``yaml.__with_libyaml__``), else PyYAML's pure-Python reader, scanner and parser.
-#: Composition stays in Python either way (:class:`_BoundedLoader`), so the gate's depth
-#: and count bounds hold for both; libyaml only makes the scanning fast.
+class _PyEventSource(yaml.reader.Reader, yaml.scanner.Scanner, yaml.parser.Parser):
+    """PyYAML's pure-Python reader, scanner and parser: the event source whose errors
+    the gate reports (its words and bounds do not change with the libyaml build)."""
+
+    def __init__(self, stream: str) -> None:
+        yaml.reader.Reader.__init__(self, stream)
+        yaml.scanner.Scanner.__init__(self)
+        yaml.parser.Parser.__init__(self)
+
+
+#: libyaml's C parser when PyYAML was built with it (``yaml.__with_libyaml__``), else None.
 try:
     from yaml.cyaml import CParser as _CParser
 except ImportError:  # pragma: no cover - PyYAML built without libyaml
     _CParser = None
-#: True when PyYAML has libyaml's C parser, which then scans the text.
+#: True when PyYAML has libyaml's C parser, which then scans the text. Composition stays
+#: in Python either way (:func:`_bounded_loader`), so the gate's depth and count bounds
+#: hold for both; libyaml only makes the scanning fast. A document libyaml refuses is read
+#: again with :class:`_PyEventSource`, so that what the user is told (and which bound
+#: refuses it) is the gate's, whatever libyaml version PyYAML bundles: libyaml 0.2.5 as
+#: bundled from PyYAML 6.0.3 on stops deep flow nesting with its own words before the
+#: gate's bound can be checked (its scanner reads ahead over every ``[``).
 FAST_YAML: bool = bool(getattr(yaml, "__with_libyaml__", False)) and _CParser is not None
-
-if FAST_YAML:
-    _EventSource: Any = _CParser
-else:  # pragma: no cover - PyYAML without libyaml
-
-    class _EventSource(yaml.reader.Reader, yaml.scanner.Scanner, yaml.parser.Parser):  # type: ignore[no-redef]
-        def __init__(self, stream: str) -> None:
-            yaml.reader.Reader.__init__(self, stream)
-            yaml.scanner.Scanner.__init__(self)
-            yaml.parser.Parser.__init__(self)
 
 
 #: Keys that are not keys: YAML's merge key ``<<`` and its value key ``=``.
@@ -164,17 +167,16 @@ _MERGE_TAGS = ("tag:yaml.org,2002:merge", "tag:yaml.org,2002:value")
 
 
 class _BoundedLoader(
-    yaml.composer.Composer, yaml.constructor.SafeConstructor, yaml.resolver.Resolver, _EventSource
+    yaml.composer.Composer, yaml.constructor.SafeConstructor, yaml.resolver.Resolver
 ):
     """yaml's safe loader with bounded depth and node count, refusing duplicate keys.
 
-    The composer is PyYAML's Python one on top of :data:`_EventSource` (libyaml's
-    compiled composer recurses once per level on the C stack and crashes the process on
-    deep nesting, before any bound can be checked).
+    The composer is PyYAML's Python one on top of an event source (:class:`_PyLoader`,
+    :class:`_FastLoader`); libyaml's compiled composer recurses once per level on the C
+    stack and crashes the process on deep nesting, before any bound can be checked.
     """
 
     def __init__(self, stream: str) -> None:
-        _EventSource.__init__(self, stream)
         yaml.composer.Composer.__init__(self)
         yaml.constructor.SafeConstructor.__init__(self)
         yaml.resolver.Resolver.__init__(self)
@@ -237,6 +239,24 @@ _BoundedLoader.add_constructor(
 )
 
 
+class _PyLoader(_BoundedLoader, _PyEventSource):
+    """The bounded loader on PyYAML's pure-Python scanner and parser."""
+
+    def __init__(self, stream: str) -> None:
+        _PyEventSource.__init__(self, stream)
+        _BoundedLoader.__init__(self, stream)
+
+
+if FAST_YAML:
+
+    class _FastLoader(_BoundedLoader, _CParser):  # type: ignore[misc,valid-type]
+        """The bounded loader on libyaml's scanner and parser."""
+
+        def __init__(self, stream: str) -> None:
+            _CParser.__init__(self, stream)
+            _BoundedLoader.__init__(self, stream)
+
+
 class _Refused(Exception):
     """A YAML document the gate refuses (the message says why)."""
 
@@ -284,17 +304,13 @@ def load_yaml_text(text: str, what: str) -> Any:
     """
     if len(text) > MAX_YAML_BYTES:
         raise InputError(f"{what} is longer than {MAX_YAML_BYTES} characters")
-    loader = None
     try:
-        loader = _BoundedLoader(text)
-        node = loader.get_single_node()
-        if node is None:
-            return None
-        if _expanded_nodes(node) > MAX_YAML_NODES:
-            raise _Refused(
-                f"expands to more than {MAX_YAML_NODES} values through its aliases (an alias bomb?)"
-            )
-        return loader.construct_document(node)
+        if FAST_YAML:
+            try:
+                return _parse(text, _FastLoader)
+            except yaml.YAMLError:
+                pass  # libyaml refused it: read it again in Python, for the gate's words
+        return _parse(text, _PyLoader)
     except _Refused as exc:
         raise InputError(f"{what} {exc}") from None
     except yaml.reader.ReaderError as exc:
@@ -311,9 +327,22 @@ def load_yaml_text(text: str, what: str) -> Any:
         ) from None
     except RecursionError:
         raise InputError(f"{what} nests too deeply") from None
+
+
+def _parse(text: str, loader_class: type) -> Any:
+    """One bounded parse of ``text`` with ``loader_class`` (errors raised as they come)."""
+    loader = loader_class(text)
+    try:
+        node = loader.get_single_node()
+        if node is None:
+            return None
+        if _expanded_nodes(node) > MAX_YAML_NODES:
+            raise _Refused(
+                f"expands to more than {MAX_YAML_NODES} values through its aliases (an alias bomb?)"
+            )
+        return loader.construct_document(node)
     finally:
-        if loader is not None:
-            loader.dispose()
+        loader.dispose()
 
 
 def _line_column(text: str, index: int) -> str:
