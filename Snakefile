@@ -12,6 +12,7 @@ from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
 from pencore.errors import ConfigError
+from pencore.inputs.limits import one_line_warnings
 from pencore.io.results import set_aside_unreadable
 from pencore.workflowconfig.parts import remade_target
 from pencore.workflowconfig.config_check import check_config, read_config
@@ -49,7 +50,8 @@ try:
     if _type_error:
         raise ConfigError(_type_error)
     validate(config, "workflow/schemas/config.schema.yaml")
-    check_config(config, workflow.basedir)
+    with one_line_warnings():  # an implausible value: one line, the run goes on
+        check_config(config, workflow.basedir)
 except ConfigError as exc:
     raise WorkflowError(str(exc)) from None
 except Exception:

@@ -35,6 +35,7 @@ ENTRY_POINTS = [
     "Numerics",
     "InputError",
     "SolverError",
+    "PlausibilityWarning",
 ]
 
 

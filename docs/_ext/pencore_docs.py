@@ -178,6 +178,14 @@ def limits_table(group: str = "core") -> str:
     return limits_markdown(group)
 
 
+def plausible_table() -> str:
+    """Plausible ranges and the slips they point to
+    (:func:`pencore.inputs.limits.plausible_markdown`)."""
+    from pencore.inputs.limits import plausible_markdown
+
+    return plausible_markdown()
+
+
 def speed_table() -> str:
     """The current speed figures (``benchmarks/speed_summary.py --markdown``)."""
     out = subprocess.run(
@@ -644,6 +652,7 @@ PAGES: dict[str, Callable[[], str]] = {
     "comparison.md": comparison_table,
     "limits.md": limits_table,
     "limits_models.md": lambda: limits_table("models"),
+    "plausible.md": plausible_table,
     "speed.md": speed_table,
     "convergence.md": convergence_table,
     "emulation.md": emulation_table,

@@ -80,6 +80,7 @@ _EXPORTS = {
     "SolverError": "errors",
     "WriteError": "errors",
     "ResultError": "errors",
+    "PlausibilityWarning": "errors",
 }
 
 __getattr__, __dir__, __all__ = attach(__name__, _EXPORTS, defined=("__version__",))
@@ -104,6 +105,7 @@ if TYPE_CHECKING:  # for type checkers and editors: the names as if imported eag
         ConfigError,
         GeometryError,
         InputError,
+        PlausibilityWarning,
         ResultError,
         SolverError,
         TargetError,

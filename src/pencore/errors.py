@@ -15,6 +15,10 @@ SolverError        an integration could not finish
 WriteError         a file could not be written (nothing was left behind)
 ResultError        a result file cannot be read (corrupt or truncated)
 =================  ==========================================================
+
+One warning class, :class:`PlausibilityWarning`, marks a value that is valid but far
+outside what the quantity usually is (the likely slip of unit it points to is named);
+it never stops a run.
 """
 
 from __future__ import annotations
@@ -28,6 +32,7 @@ __all__ = [
     "SolverError",
     "WriteError",
     "ResultError",
+    "PlausibilityWarning",
 ]
 
 #: What the command line says when Ctrl-C ends it (exit status 130).
@@ -171,4 +176,28 @@ class ResultError(RuntimeError):
     ...     except pencore.ResultError as exc:
     ...         print("cannot be read" in str(exc))
     True
+    """
+
+
+class PlausibilityWarning(UserWarning):
+    """A valid value far outside what its quantity usually is: a likely slip of unit.
+
+    Issued (never raised) by every input door (the Python API, YAML files, the command
+    line, the workflow configuration) for a value within its valid range but outside
+    its plausible range (:data:`pencore.inputs.limits.PLAUSIBLE`, listed on the docs'
+    errors page): a speed of 1.4 m/s (km/s meant?), a diameter of 9.5 m (cm meant?), a
+    density of 7.85 kg/m^3 (g/cm^3 meant?). The message is one line naming the value,
+    the plausible range and the likely slip; the command line prints it as
+    ``pencore: warning: ...``. The run goes on; silence it with the usual filters
+    (``warnings.simplefilter("ignore", pencore.PlausibilityWarning)``, ``python -W``).
+
+    Examples
+    --------
+    >>> import warnings
+    >>> import pencore
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     p = pencore.Projectile("x", 9.5, pencore.OgiveNose(3.0, 7850.0))
+    >>> print(caught[0].category.__name__, str(caught[0].message).split(" is ")[0])
+    PlausibilityWarning diameter 9.5 m
     """

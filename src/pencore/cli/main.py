@@ -20,6 +20,7 @@ from collections.abc import Callable, Sequence
 from pencore.cli import ballistic, library, simulate
 from pencore.cli.options import INTERRUPTED, PROG, CommandFailure, Parser, one_line
 from pencore.errors import InputError, SolverError
+from pencore.inputs.limits import one_line_warnings
 from pencore.io.atomic import describe_os_error
 from pencore.version import __version__
 
@@ -78,6 +79,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         Exit status: 0 success, 1 solver or write failure, 2 bad input, 130 interrupted,
         141 output pipe closed early.
     """
+    with one_line_warnings(PROG):  # a PlausibilityWarning is one line; the run goes on
+        return _main(argv)
+
+
+def _main(argv: Sequence[str] | None) -> int:
     parser = build_parser()
     try:
         args = parser.parse_args(argv)

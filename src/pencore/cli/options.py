@@ -133,7 +133,8 @@ def number_type(key: str, label: str = "") -> Any:
 
     def conv(text: str) -> float:
         try:
-            return number(text, key, allow_str=True, label=label)
+            # the API the value goes to judges its plausibility (one warning, not two)
+            return number(text, key, allow_str=True, label=label, plausibility=False)
         except InputError as exc:
             raise argparse.ArgumentTypeError(str(exc)) from None
 

@@ -21,18 +21,29 @@ Each range in :data:`~pencore.inputs.limits.LIMITS` is of one of two kinds:
 
 The docs' table of valid ranges (user guide, "Projectiles, targets and numerics") is
 generated from :data:`~pencore.inputs.limits.LIMITS` by :func:`limits_markdown` at every build.
+
+Beside each valid range, :data:`~pencore.inputs.limits.PLAUSIBLE` holds the *plausible*
+range of every quantity that carries a unit, with the slip of unit a value outside it
+most likely is (a speed of 1.4 m/s: km/s meant). A valid but implausible value is run,
+with one :class:`~pencore.PlausibilityWarning` naming the value and the slip
+(:func:`plausible`); the docs' errors page lists the ranges
+(:func:`plausible_markdown`).
 """
 
 from __future__ import annotations
 
+import contextlib
 import difflib
 import math
 import numbers
-from collections.abc import Iterable, Mapping
+import os
+import sys
+import warnings
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, replace
 from typing import Any
 
-from pencore.errors import InputError
+from pencore.errors import InputError, PlausibilityWarning
 from pencore.inputs.gate import DECIMAL_WORDS, brief, decimal
 
 __all__ = [
@@ -44,6 +55,12 @@ __all__ = [
     "integer",
     "check_keys",
     "limits_markdown",
+    "Plausible",
+    "PLAUSIBLE",
+    "plausible",
+    "looks_like_radians",
+    "plausible_markdown",
+    "one_line_warnings",
 ]
 
 
@@ -392,7 +409,13 @@ def _type_name(value: Any) -> str:
 
 
 def number(
-    value: Any, key: str, what: str = "", *, allow_str: bool = False, label: str = ""
+    value: Any,
+    key: str,
+    what: str = "",
+    *,
+    allow_str: bool = False,
+    label: str = "",
+    plausibility: bool = True,
 ) -> float:
     """``value`` as a float within ``LIMITS[key]``, else :class:`~pencore.InputError`.
 
@@ -414,6 +437,9 @@ def number(
     label : str
         How messages name the value, for a quantity that has the range of ``key`` but
         is not it (a search tolerance in m/s); default: the label of ``key``.
+    plausibility : bool
+        Warn (:func:`plausible`) when the value is valid but outside its plausible range
+        (:data:`PLAUSIBLE`); never for a value given a ``label`` (it is not the quantity).
 
     Returns
     -------
@@ -437,6 +463,8 @@ def number(
         )
     if math.isnan(v) or (math.isinf(v) and v != lim.hi) or not lim.contains(v):
         raise InputError(f"{where}{lim.label} must be {lim.describe()}, got {brief(value)}")
+    if plausibility and not label and key in PLAUSIBLE:
+        plausible(v, key, what)
     return v
 
 
@@ -521,4 +549,263 @@ def limits_markdown(group: str = "core") -> str:
         if lim.group != group:
             continue
         rows.append(f"| `{key}` | {lim.describe()[3:]} | {lim.kind} | {lim.why} |")
+    return "\n".join(rows)
+
+
+# ---------------------------------------------------------------- plausible ranges
+
+
+@dataclass(frozen=True)
+class Plausible:
+    """The plausible range of one quantity, and the slip of unit a value outside it
+    most likely is.
+
+    A value ``v`` is plausible when it is 0 (a quantity switched off) or its magnitude
+    lies in ``[lo, hi]`` (rule ``"range"``); rule ``"radians"`` (angles in degrees) flags the
+    likely reading of a common angle in radians instead (:func:`looks_like_radians`).
+
+    Attributes
+    ----------
+    label, unit : str
+        How messages name the quantity, and its unit.
+    lo, hi : float
+        Plausible bounds of ``|v|`` (rule ``"range"``).
+    below, above : str
+        The likely slip of a value below ``lo`` / above ``hi``.
+    rule : str
+        ``"range"`` or ``"radians"``.
+    """
+
+    label: str
+    unit: str
+    lo: float
+    hi: float
+    below: str = ""
+    above: str = ""
+    rule: str = "range"
+
+    def fits(self, v: float) -> bool:
+        if v == 0.0 or math.isnan(v):
+            return True
+        if self.rule == "radians":
+            return not looks_like_radians(v)
+        return self.lo <= abs(v) <= self.hi
+
+    def slip(self, v: float) -> str:
+        if self.rule == "radians":
+            return self.below.format(deg=math.degrees(v))
+        return self.below if abs(v) < self.lo else self.above
+
+    def describe(self) -> str:
+        if self.rule == "radians":
+            return "not a common angle read in radians"
+        u = f" {self.unit}" if self.unit else ""
+        if self.lo == 0.0:
+            return f"magnitude at most {_fmt(self.hi)}{u}"
+        if math.isinf(self.hi):
+            return f"at least {_fmt(self.lo)}{u}"
+        return f"[{_fmt(self.lo)}, {_fmt(self.hi)}]{u}"
+
+
+def looks_like_radians(angle_deg: float) -> bool:
+    """Whether an angle given in degrees is likely a common angle typed in radians.
+
+    The rule: ``0 < |a| < pi/2`` (a radian value of an angle below 90 deg), ``a`` not a
+    multiple of 0.5 deg (the small angles people type in degrees: 0.5, 1, 1.5), and ``a``
+    read as radians within 0.5 deg of a multiple of 5 deg, at least 5 deg (the angles
+    people mean: 0.52 or 0.5236 for 30 deg, 0.785 for 45 deg, 0.26 for 15 deg). A random
+    small angle (an ensemble's draws) is not checked: the check is for values typed in.
+
+    Examples
+    --------
+    >>> [looks_like_radians(a) for a in (0.5236, 0.785, 0.26, 1.0, 0.3, 30.0)]
+    [True, True, True, False, False, False]
+    """
+    a = abs(angle_deg)
+    if not 0.0 < a < 0.5 * math.pi or (2.0 * a).is_integer():
+        return False
+    deg = math.degrees(a)
+    nearest = 5.0 * round(deg / 5.0)
+    return nearest >= 5.0 and abs(deg - nearest) <= 0.5
+
+
+_KMS = "a speed in km/s given for m/s? (1.4 km/s = 1400 m/s)"
+_RAD = "given in radians? ({deg:.1f} deg if so; pencore's angles are in degrees)"
+_GCC = "a density in g/cm^3 given for kg/m^3? (7.85 g/cm^3 = 7850 kg/m^3)"
+
+#: The plausible range of every quantity that carries a unit, by key (the keys of
+#: :data:`LIMITS` where the quantity is one of them): a :class:`Plausible` each.
+PLAUSIBLE: dict[str, Plausible] = {
+    "velocity": Plausible(
+        "velocity",
+        "m/s",
+        10.0,
+        5000.0,
+        below=_KMS,
+        above="beyond rigid-body penetration (the projectile erodes); ft/s or km/h given for m/s?",
+    ),
+    "obliquity": Plausible("obliquity", "deg", 0.0, 90.0, below=_RAD, rule="radians"),
+    "yaw": Plausible("yaw", "deg", 0.0, 90.0, below=_RAD, rule="radians"),
+    "omega": Plausible(
+        "omega",
+        "rad/s",
+        0.0,
+        1000.0,
+        above="a spin in rpm given for rad/s? (1 rpm = 0.1047 rad/s; the transverse rates "
+        "of an impact are tens of rad/s)",
+    ),
+    "diameter": Plausible(
+        "diameter",
+        "m",
+        1e-3,
+        2.0,
+        below="a diameter in km given for m?",
+        above="a diameter in cm or mm given for m? (9.5 cm = 0.095 m)",
+    ),
+    "length": Plausible(
+        "segment length",
+        "m",
+        1e-4,
+        10.0,
+        below="a length in km given for m?",
+        above="a length in cm or mm given for m? (50 cm = 0.5 m)",
+    ),
+    "density": Plausible("density", "kg/m^3", 500.0, _RHO_MAX, below=_GCC),
+    "medium_density": Plausible("medium density", "kg/m^3", 50.0, _RHO_MAX, below=_GCC),
+    "thickness": Plausible(
+        "layer thickness",
+        "m",
+        1e-4,
+        50.0,
+        below="a thickness in km given for m?",
+        above="a thickness in cm or mm given for m? (25 mm = 0.025 m)",
+    ),
+    "a0": Plausible(
+        "resistance a0",
+        "Pa",
+        1e4,
+        1e11,
+        below="a stress in MPa given for Pa? (17.18 MPa = 1.718e7 Pa; soils and rocks "
+        "resist with 10^5 to 10^10 Pa)",
+        above="above any solid's strength (100 GPa); kPa given for Pa?",
+    ),
+    "a2": Plausible(
+        "resistance a2",
+        "kg/m^3",
+        10.0,
+        1e5,
+        below="coefficients in MPa given for Pa? (a2 is B rho, of the order of the "
+        "target's density: 4120 kg/m^3 for the paper's soil)",
+        above="coefficients in kPa given for Pa? (a2 is B rho, of the order of the "
+        "target's density)",
+    ),
+    "depth": Plausible(
+        "measured depth",
+        "m",
+        1e-4,
+        50.0,
+        below="a depth in km given for m?",
+        above="a depth in mm or cm given for m? (a shot table in mm: 120 mm = 0.12 m)",
+    ),
+    "plate": Plausible(
+        "plate thickness",
+        "calibres",
+        5.0,
+        math.inf,
+        below="a plate this thin run on the half-space law with no near-surface option "
+        "(crater_depth, free_surface_depth or plastic_zone_ratio): the front crater "
+        "(2 calibres, Forrestal) and the rear free face reach through it, and the "
+        "half-space law over-resists there",
+    ),
+}
+
+#: Files of this package: a warning is reported at the first caller outside them.
+_PACKAGE = os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep
+
+
+def _caller_level() -> int:
+    """The ``stacklevel`` of the first frame outside pencore (the user's call)."""
+    frame, level = sys._getframe(2), 2
+    while frame is not None and (
+        frame.f_code.co_filename.startswith(_PACKAGE)
+        or (frame.f_code.co_filename == "<string>" and frame.f_code.co_name == "__init__")
+    ):  # a dataclass's generated __init__ is pencore's code too
+        caller = frame.f_back
+        if caller is not None and not isinstance(caller.f_globals.get("__name__"), str):
+            # code run without a module name (a Snakefile): Python drops a warning
+            # attributed to it, so it stays with pencore's frame
+            return level
+        frame, level = caller, level + 1
+    return level
+
+
+def plausible(value: float, key: str, what: str = "") -> bool:
+    """Warn (:class:`~pencore.PlausibilityWarning`) when ``value`` is outside the
+    plausible range ``PLAUSIBLE[key]``; True when it is within.
+
+    The warning is one line naming the value, the plausible range and the likely slip;
+    it never stops a run (unless a filter turns warnings into errors).
+
+    Examples
+    --------
+    >>> import warnings
+    >>> with warnings.catch_warnings(record=True) as w:
+    ...     warnings.simplefilter("always")
+    ...     plausible(1.4, "velocity")
+    False
+    >>> print(w[0].message)
+    velocity 1.4 m/s is implausible (plausible: [10, 5000] m/s): a speed in km/s given for m/s? (1.4 km/s = 1400 m/s)
+    """  # noqa: E501
+    p = PLAUSIBLE[key]
+    v = float(value)
+    if p.fits(v):
+        return True
+    where = f"{what}: " if what else ""
+    unit = f" {p.unit}" if p.unit else ""
+    warnings.warn(
+        f"{where}{p.label} {v:g}{unit} is implausible (plausible: {p.describe()}): {p.slip(v)}",
+        PlausibilityWarning,
+        stacklevel=_caller_level(),
+    )
+    return False
+
+
+@contextlib.contextmanager
+def one_line_warnings(prog: str = "pencore") -> Iterator[None]:
+    """Within the block, print each :class:`~pencore.PlausibilityWarning` as one line,
+    ``<prog>: warning: <message>``, on standard error (other warnings as before); the
+    command line and the workflow show them so. Filters apply as always."""
+    previous = warnings.showwarning
+
+    def show(message, category, filename, lineno, file=None, line=None):  # noqa: ANN001, ANN202
+        if not issubclass(category, PlausibilityWarning):
+            return previous(message, category, filename, lineno, file, line)
+        stream = sys.stderr if file is None else file
+        try:
+            print(f"{prog}: warning: {' '.join(str(message).split())}", file=stream)
+        except (OSError, ValueError):  # no usable standard error: nothing to tell
+            pass
+
+    warnings.showwarning = show
+    try:
+        yield
+    finally:
+        warnings.showwarning = previous
+
+
+def plausible_markdown() -> str:
+    """A Markdown table of the plausible ranges (:data:`PLAUSIBLE`) beside the valid
+    ones, with the slip each points to."""
+    rows = [
+        "| input | valid range | plausible range | likely slip outside it |",
+        "|---|---|---|---|",
+    ]
+    for key, p in PLAUSIBLE.items():
+        legal = LIMITS.get(key) or LIMITS["coefficient" if key in ("a0", "a2") else "thickness"]
+        if key == "depth":
+            legal = replace(LIMITS["thickness"], label="depth")
+        valid = legal.describe()[3:] if key != "plate" else "any finite plate"
+        slips = "; ".join(x.format(deg=30.0) if p.rule == "radians" else x for x in
+                          (p.below, p.above) if x)  # fmt: skip
+        rows.append(f"| `{key}` | {valid} | {p.describe()} | {slips} |")
     return "\n".join(rows)

@@ -67,7 +67,7 @@ import numpy as np
 
 from pencore.errors import InputError, TargetError
 from pencore.inputs.gate import brief
-from pencore.inputs.limits import as_float, count, number
+from pencore.inputs.limits import as_float, count, number, plausible
 
 __all__ = [
     "WINDOW_COLUMNS",
@@ -87,9 +87,9 @@ WINDOW_COLUMNS = 10
 MAX_COEFFICIENTS = 8
 
 
-def _check(key: str, value: float, what: str) -> float:
+def _check(key: str, value: float, what: str, plausibility: bool = True) -> float:
     try:
-        return number(value, key, what)
+        return number(value, key, what, plausibility=plausibility)
     except InputError as exc:
         raise TargetError(str(exc)) from None
 
@@ -175,6 +175,9 @@ class Medium:
                 f"projectile; give a0 (Pa) or a2 (kg/m^3) > 0"
             )
         object.__setattr__(self, "coefficients", c)
+        for i, key in ((0, "a0"), (2, "a2")):
+            if len(c) > i:
+                plausible(c[i], key, what)
         for table in (self.friction_speeds, self.friction_mu):
             if hasattr(table, "__len__") and not isinstance(table, str) and len(table) > 1:
                 try:
@@ -358,7 +361,8 @@ class Target:
                 continue
             if math.isinf(lay.thickness):
                 raise TargetError(f"{what}: only the last layer may be infinite (layer {k})")
-            _check("thickness", lay.thickness, f"{what} layer {k}")
+            # the layer has judged its plausibility already
+            _check("thickness", lay.thickness, f"{what} layer {k}", plausibility=False)
         object.__setattr__(self, "layers", layers)
 
     @classmethod
@@ -427,6 +431,16 @@ class Target:
             for lay in self.layers
         )
         return Target(self.name, layers)
+
+    def check_plates(self, diameter: float) -> None:
+        """Warn (:class:`~pencore.PlausibilityWarning`) for each finite layer thinner than
+        the plausible plate (:data:`~pencore.inputs.limits.PLAUSIBLE` ``"plate"``, in
+        calibres of ``diameter`` m) whose medium has no near-surface option: the
+        half-space law over-resists through the whole of such a plate."""
+        for k, lay in enumerate(self.layers):
+            if lay.is_gap or math.isinf(lay.thickness) or lay.medium.windowed:
+                continue
+            plausible(lay.thickness / diameter, "plate", f"target {brief(self.name)} layer {k}")
 
     def kernel_arrays(
         self,

@@ -125,6 +125,7 @@ def prepare(
         )
     p = get_projectile(projectile)
     t = get_target(target)
+    t.check_plates(p.diameter)
     mp = p.mass_properties()
     ring_set = p.rings(num.n_nose, num.n_shank, num.n_face)
     rings = ring_set.as_array()

@@ -47,7 +47,7 @@ from typing import Any
 
 from pencore.errors import ConfigError, InputError
 from pencore.inputs.gate import brief, load_yaml_text, read_yaml
-from pencore.inputs.limits import LIMITS, Limit, as_float, number
+from pencore.inputs.limits import LIMITS, Limit, as_float, number, plausible
 from pencore.inputs.numerics import NUMERIC_FIELDS, resolve_numerics
 from pencore.paper.choices import check_settings
 from pencore.search.threshold import MAX_SCAN
@@ -203,7 +203,35 @@ def _check_range(path: str, value: Mapping[str, Any]) -> None:
         _fail(path, f"n must be {GRID_POINTS.describe()} points, got {brief(n)}")
 
 
+#: Plausible range (:data:`pencore.inputs.limits.PLAUSIBLE`) of the numbers of the keys a
+#: :data:`KEY_RULES` pattern matches (tolerances excepted: a 2 m/s tolerance is no speed).
+PLAUSIBLE_KEYS = {"*_m_s": "velocity", "*_rad_s": "omega", "obliquity*_deg": "obliquity",
+                  "yaw*_deg": "yaw"}  # fmt: skip
+
+
+def _warn_implausible(path: str, key: str, value: Any, nums: list[float]) -> None:
+    """A :class:`~pencore.PlausibilityWarning` for each implausible number of the key (an
+    ensemble distribution's ``mean`` and ``value`` included)."""
+    rule = key_rule(key)
+    which = PLAUSIBLE_KEYS.get(rule.pattern) if rule is not None else None
+    if key.startswith("thickness") and key.endswith("_m"):
+        which = "thickness"
+    if which is None or "tol" in key:
+        return
+    if isinstance(value, Mapping):
+        nums = nums + [_float(value[k]) for k in ("mean", "value") if _is_num(value.get(k))]
+    for v in nums:
+        if math.isfinite(v):
+            plausible(v, which, f"config {path}")
+
+
 def _check_leaf(path: str, key: str, value: Any) -> None:
+    if isinstance(value, Sequence) and not isinstance(value, str) and len(value) > MAX_GRID:
+        _fail(
+            path,
+            f"the list has {len(value)} entries; at most {MAX_GRID} are allowed, as for a "
+            "grid {min, max, step} (typo guard)",
+        )
     if isinstance(value, Mapping):
         _check_range(path, value)
     nums = _numbers(value)
@@ -240,6 +268,7 @@ def _check_leaf(path: str, key: str, value: Any) -> None:
             resolve_numerics(value)
         except InputError as exc:
             _fail(path, str(exc))
+    _warn_implausible(path, key, value, nums)
     if key in ("projectile", "target", "medium") and isinstance(value, str):
         _check_name(path, key, value)
     if key == "projectiles" and isinstance(value, Sequence) and not isinstance(value, str):

@@ -70,7 +70,7 @@ from pencore import closedform
 from pencore.errors import InputError
 from pencore.inputs.conventions import normal_impact_angles
 from pencore.inputs.library import get_projectile, get_target
-from pencore.inputs.limits import check_keys
+from pencore.inputs.limits import check_keys, plausible
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.target import Target
 from pencore.run.impact import prepare, simulate
@@ -195,6 +195,7 @@ def _shot_row(r: pd.Series, where: str) -> dict[str, Any]:
             continue  # no depth printed (e.g. a channel length only): kept, compared with nothing
         if not isinstance(v, (int, float, np.number)) or not math.isfinite(float(v)) or v <= 0:
             raise InputError(f"{where}: {c} must be a finite number > 0, got {v!r}")
+        plausible(float(v), "velocity" if c == "striking_velocity_m_s" else "depth", where)
     angles = []
     for c in ("pitch_deg", "yaw_deg"):
         v = r[c]
