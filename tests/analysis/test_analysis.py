@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 import xarray as xr
 
+import pencore
 from pencore import analysis as A
 
 
@@ -300,7 +301,7 @@ def test_nose_direction_and_reversed():
     assert A.nose_direction(ds) == "+x"
     assert A.nose_direction(np.array([0.1, 0.0])) == "+x"
     assert A.reversed_in_target(ds) is False
-    with pytest.raises(KeyError):
+    with pytest.raises(pencore.InputError, match="lacks the attribute.s. reversed"):
         A.reversed_in_target(xr.Dataset())
 
 

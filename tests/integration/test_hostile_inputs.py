@@ -1163,3 +1163,193 @@ def test_a_corrupt_chunk_part_set_aside_is_asked_for_again():
     assert remade_target("results/ensemble/p2_soil_oblique/parts/9.nc", rules, ensembles) is None
     assert remade_target("results/ensemble/gone/parts/0.nc", rules, ensembles) is None
     assert remade_target("results/other/x.nc", rules, ensembles) is None
+
+
+# ------------------------------------------------------------ silent wrong answers
+
+
+def _foreign() -> xr.Dataset:
+    """A netCDF-like Dataset not made by pencore.simulate (no run variables or attrs)."""
+    return xr.Dataset({"depth": ("row", [1.0, 2.0])}, attrs={"title": "someone's table"})
+
+
+#: Calls that used to return a wrong answer without a word; each is now one InputError
+#: line holding the words given.
+SILENT_WRONG = {
+    # a prepared problem must be the one the call names
+    "prepared-other-projectile": (
+        lambda: pencore.simulate("p2", "soil", 300.0, prepared=pencore.prepare("p1", "soil")),
+        "prepared= holds projectile 'p1', but the call names projectile 'p2'",
+    ),
+    "prepared-other-target": (
+        lambda: pencore.simulate("p1", "soil", 300.0, prepared=pencore.prepare("p1", "concrete")),
+        "prepared= holds target 'concrete', but the call names target 'soil'",
+    ),
+    "prepared-other-numerics": (
+        lambda: pencore.simulate(
+            "p1", "soil", 300.0, prepared=pencore.prepare("p1", "soil"), rtol=1e-3
+        ),  # fmt: skip
+        "carries its own numerics",
+    ),
+    # a start inside the target
+    "start-inside-target": (
+        lambda: pencore.simulate("p2", "soil", 300.0, start=(0.0, -5.0, 0.0)),
+        "start y must be >= 0 m",
+    ),
+    "start-as-set": (
+        lambda: pencore.simulate("p2", "soil", 300.0, start={0.0, 1.0, 2.0}),
+        "in order (a list, tuple or array), got {",
+    ),
+    # every function that takes a run's Dataset: a wrong type or a foreign Dataset
+    "nose-direction-int": (lambda: pencore.nose_direction(42), "nose_direction needs"),
+    "residual-velocity-foreign": (
+        lambda: pencore.residual_velocity(_foreign()),
+        "residual_velocity needs a Dataset made by pencore.simulate; this one lacks",
+    ),
+    "perforates-foreign": (lambda: pencore.perforates(_foreign()), "perforates needs"),
+    "perforates-text": (lambda: pencore.perforates("run.nc"), "got str 'run.nc'"),
+    "final-deviation-foreign": (
+        lambda: pencore.final_deviation(_foreign()),
+        "final_deviation needs a Dataset made by pencore.simulate; this one lacks the "
+        "variable(s) vel_x",
+    ),
+    "reversed-in-target-foreign": (
+        lambda: pencore.reversed_in_target(_foreign()),
+        "lacks the attribute(s) reversed",
+    ),
+    "inflection-points-list": (
+        lambda: pencore.inflection_points_ds([1, 2]),
+        "inflection_points_ds needs a Dataset",
+    ),
+    # Recht-Ipson helpers
+    "recht-ipson-negative-a": (lambda: pencore.recht_ipson(500.0, 300.0, a=-1), "a must be"),
+    "recht-ipson-p-zero": (lambda: pencore.recht_ipson(500.0, 300.0, p=0.0), "p must be"),
+    "recht-ipson-text": (lambda: pencore.recht_ipson("500", 300.0), "must be numbers"),
+    "recht-ipson-nan": (
+        lambda: pencore.recht_ipson([500.0, float("nan")], 300.0),
+        "finite speeds >= 0 m/s, got nan (entry 1)",
+    ),
+    "fit-recht-ipson-unequal": (
+        lambda: pencore.fit_recht_ipson([400.0, 500.0, 600.0], [100.0, 200.0]),
+        "one residual speed per impact speed",
+    ),
+    "fit-recht-ipson-residual-above-impact": (
+        lambda: pencore.fit_recht_ipson([400.0, 500.0, 600.0], [100.0, 600.0, 300.0]),
+        "residual speed 600 m/s above its impact speed 500 m/s (entry 1)",
+    ),
+    # find_threshold's verdicts must be booleans, its verdict callable
+    **{
+        f"verdict-{name}": (
+            lambda answer=answer: pencore.search.threshold.find_threshold(
+                lambda v: answer, 0.0, 1.0, 0.1
+            ),
+            "must return True or False",
+        )
+        for name, answer in [
+            ("no", "no"),
+            ("none", None),
+            ("nan", float("nan")),
+            ("array", np.array([True, False])),
+            ("one", 1),
+        ]  # fmt: skip
+    },
+    "verdict-not-callable": (
+        lambda: pencore.search.threshold.find_threshold(3, 0.0, 1.0, 0.1),
+        "verdict must be a function",
+    ),
+    "threshold-bound-text": (
+        lambda: pencore.search.threshold.find_threshold(lambda v: v > 0.5, "a", 1.0, 0.1),
+        "search lower bound lo must be a finite number, got 'a'",
+    ),
+    "deviation-of-text": (
+        lambda: pencore.deviation_from_normal("a", 0.0),
+        "needs velocity components as numbers",
+    ),
+    "projectile-without-nose": (
+        lambda: pencore.Projectile("x", 0.1, None),
+        "nose must be an OgiveNose, ConeNose or FlatNose, got NoneType None",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", list(SILENT_WRONG))
+def test_silent_wrong_answer_refused(case):
+    call, words = SILENT_WRONG[case]
+    assert words in _api(call)
+
+
+def test_deviation_of_a_zero_velocity_has_no_direction():
+    assert np.isnan(pencore.deviation_from_normal(0.0, 0.0))
+    out = pencore.deviation_from_normal([0.0, 1.0], [0.0, -1.0])
+    assert np.isnan(out[0]) and out[1] == pytest.approx(45.0)
+
+
+def test_prepared_problem_named_as_it_was_prepared_runs():
+    pr = pencore.prepare("p1", "concrete")
+    a = pencore.simulate("p1", "concrete", 300.0, prepared=pr)
+    b = pencore.simulate(pr.projectile, pr.target, 300.0, prepared=pr)
+    c = pencore.simulate("p1", "concrete", 300.0)
+    assert a.penetration_depth.item() == b.penetration_depth.item() == c.penetration_depth.item()
+
+
+REPEATED_OPTIONS = [
+    [*SIM, "--velocity", "300", "--velocity", "500"],
+    [*SIM, "--velocity", "300", "--out", "a.nc", "--out", "b.nc"],
+    [
+        "simulate",
+        "--projectile",
+        "p1",
+        "--projectile",
+        "p2",
+        "--target",
+        "soil",
+        "--velocity",
+        "300",
+    ],  # fmt: skip
+]
+
+
+@pytest.mark.parametrize("argv", REPEATED_OPTIONS, ids=["velocity", "out", "projectile"])
+def test_cli_repeated_option_refused(argv, capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "given twice" in err[0], err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_cli_empty_write_path_refused(capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    status = main(["fit-table3", "--write", ""])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert status == 2 and len(err) == 1 and "a file path is needed, got ''" in err[0]
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_shot_repeated_with_a_leading_space_refused(tmp_path):
+    from pencore.studies.validation.measurements import SHOT_COLUMNS, read_shot_table
+
+    row = "al_ogive_var4340,600.0,0.12,0.5,0.0,true,1,725,paper"
+    path = tmp_path / "shots.csv"
+    path.write_text(f"{','.join(SHOT_COLUMNS)}\n12,{row}\n 12,{row}\n")
+    assert "duplicate shots ['12']" in _api(lambda: read_shot_table(path))
+
+
+# ------------------------------------------------------------ valid inputs accepted
+
+
+def test_path_objects_name_projectile_and_target_files(tmp_path):
+    (tmp_path / "p.yaml").write_text(PROJECTILE_YAML)
+    (tmp_path / "t.yaml").write_text(TARGET_YAML)
+    assert get_projectile(tmp_path / "p.yaml").name == "probe"
+    assert get_target(tmp_path / "t.yaml").name == "slab"
+    ds = pencore.simulate(tmp_path / "p.yaml", tmp_path / "t.yaml", 300.0)
+    assert ds.attrs["outcome"] in ("stopped", "perforated")
+
+
+def test_numpy_bool_is_a_flag():
+    a = pencore.simulate("p2", "soil", 300.0, stop_at_reversal=np.bool_(True))
+    b = pencore.simulate("p2", "soil", 300.0, stop_at_reversal=True)
+    assert a.penetration_depth.item() == b.penetration_depth.item()
+    assert "True or False" in _api(lambda: pencore.simulate("p2", "soil", 300.0,
+                                                            stop_at_reversal=1))  # fmt: skip

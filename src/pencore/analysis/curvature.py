@@ -16,6 +16,7 @@ import numpy as np
 import xarray as xr
 
 from pencore.errors import InputError
+from pencore.io.runs import check_run
 
 #: Default noise threshold of :func:`inflection_points`, relative to the peak abs(curvature).
 #: A sign change counts only when the curvature reaches this fraction of its peak on both
@@ -177,6 +178,9 @@ def slope_ds(ds: xr.Dataset, point: str = "cm") -> np.ndarray:
     >>> print(f"{pencore.slope_ds(ds)[0]:.3f}")
     -1.000
     """
+    if point not in ("cm", "tip"):
+        raise InputError(f"point must be 'cm' or 'tip', got {point!r}")
+    check_run(ds, "slope_ds", ["vel_x", "vel_y"] if point == "cm" else ["time", "tip_x", "tip_y"])
     if point == "cm":
         with np.errstate(divide="ignore", invalid="ignore"):
             return ds["vel_y"].values / ds["vel_x"].values
@@ -452,6 +456,10 @@ def inflection_points_ds(
     >>> print(len(found), [f"{1e3 * t:.2f} ms" for t in found.param])
     3 ['1.56 ms', '1.70 ms', '2.32 ms']
     """
+    if point not in ("cm", "tip"):
+        raise InputError(f"point must be 'cm' or 'tip', got {point!r}")
+    need = ["time", "speed", f"{point}_x", f"{point}_y"] + (["vel_x", "vel_y"] * (point == "cm"))
+    check_run(ds, "inflection_points_ds", need)
     end = _window_end(ds["speed"].values, _impact_speed(ds), speed_fraction)
     sl = slice(0, end + 1)
     t = ds["time"].values[sl]

@@ -20,6 +20,7 @@ from pencore.analysis.curvature import (
     _window_end,
 )
 from pencore.errors import InputError
+from pencore.io.runs import check_run
 
 _NAN = float("nan")
 
@@ -47,7 +48,13 @@ def deviation_from_normal(vx: Any, vy: Any, vz: Any = 0.0, *, signed: bool = Fal
     Returns
     -------
     float or ndarray
-        Degrees; a float for scalar input.
+        Degrees; a float for scalar input; NaN where the velocity is zero (it has no
+        direction).
+
+    Raises
+    ------
+    InputError
+        Components that are not numbers, or arrays of shapes that do not broadcast.
 
     Examples
     --------
@@ -57,11 +64,21 @@ def deviation_from_normal(vx: Any, vy: Any, vz: Any = 0.0, *, signed: bool = Fal
     >>> deviation_from_normal([-100.0, 100.0], [-100.0, 100.0], signed=True)
     array([-45., 135.])
     """
-    vx, vy, vz = np.asarray(vx, float), np.asarray(vy, float), np.asarray(vz, float)
-    if signed:
-        out = np.degrees(np.arctan2(vx, -vy))
-    else:
-        out = np.degrees(np.arctan2(np.hypot(vx, vz), -vy))
+    try:
+        vx, vy, vz = np.asarray(vx, float), np.asarray(vy, float), np.asarray(vz, float)
+        np.broadcast_shapes(vx.shape, vy.shape, vz.shape)
+    except (TypeError, ValueError):
+        raise InputError(
+            "deviation_from_normal needs velocity components as numbers or arrays of one "
+            f"shape (m/s), got vx={str(vx)[:30]!r}, vy={str(vy)[:30]!r}, vz={str(vz)[:30]!r}"
+        ) from None
+    with np.errstate(invalid="ignore"):
+        if signed:
+            out = np.degrees(np.arctan2(vx, -vy))
+        else:
+            out = np.degrees(np.arctan2(np.hypot(vx, vz), -vy))
+        # a velocity of zero has no direction (atan2 would say 0 or 180 by the signs of 0)
+        out = np.where((vx == 0.0) & (vy == 0.0) & (vz == 0.0), np.nan, out)
     return float(out) if out.ndim == 0 else out
 
 
@@ -134,6 +151,7 @@ def final_deviation(
     >>> print(f"{pencore.final_deviation(ds):.0f} deg")
     46 deg
     """
+    check_run(ds, "final_deviation", ("vel_x", "vel_y", "vel_z", "speed"))
     return final_deviation_arrays(
         ds["vel_x"].values,
         ds["vel_y"].values,
@@ -163,7 +181,7 @@ def nose_direction(data: xr.Dataset | Any) -> str:
     Raises
     ------
     InputError
-        ``axis_x`` at the end is NaN.
+        Not a run's Dataset nor a 1-D array of numbers; ``axis_x`` at the end is NaN.
 
     Examples
     --------
@@ -173,7 +191,20 @@ def nose_direction(data: xr.Dataset | Any) -> str:
     >>> pencore.nose_direction([0.5, 0.1, -0.2])
     '-x'
     """
-    ax = data["axis_x"].values if isinstance(data, xr.Dataset) else np.asarray(data, float)
+    if isinstance(data, xr.Dataset):
+        check_run(data, "nose_direction", ("axis_x",))
+        ax = data["axis_x"].values
+    else:
+        try:
+            ax = np.asarray(data, float)
+        except (TypeError, ValueError):
+            ax = np.empty((0, 0))
+        if ax.ndim != 1 or ax.size == 0:
+            shown = repr(data) if len(repr(data)) <= 40 else repr(data)[:37] + "..."
+            raise InputError(
+                "nose_direction needs a Dataset made by pencore.simulate or an axis_x "
+                f"history (a 1-D array of numbers), got {type(data).__name__} {shown}"
+            )
     last = float(np.ravel(ax)[-1])
     if math.isnan(last):
         raise InputError("axis_x at the end is NaN")
@@ -198,8 +229,8 @@ def reversed_in_target(ds: xr.Dataset) -> bool:
 
     Raises
     ------
-    KeyError
-        ``ds`` has no ``reversed`` attribute (it was not made by ``simulate``).
+    InputError
+        ``ds`` is not a Dataset with a ``reversed`` attribute (not made by ``simulate``).
 
     Examples
     --------
@@ -213,6 +244,5 @@ def reversed_in_target(ds: xr.Dataset) -> bool:
     1000.0 False
     1800.0 True
     """
-    if "reversed" not in ds.attrs:
-        raise KeyError("dataset has no 'reversed' attribute; was it made by pencore.simulate?")
+    check_run(ds, "reversed_in_target", attrs=("reversed",))
     return bool(int(ds.attrs["reversed"]))

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import argparse
 
-from pencore.cli.options import CommandFailure
+from pencore.cli.options import CommandFailure, path_type
 
 __all__ = ["add_parsers", "list_library", "fit_table3"]
 
@@ -25,6 +25,7 @@ def add_parsers(sub: argparse._SubParsersAction) -> None:
     fit3.add_argument(
         "--write",
         metavar="PATH",
+        type=path_type,
         help="also write the fitted geometry to PATH (YAML, written atomically); "
         "src/pencore/inputs/data/table3_geometry.yaml regenerates the shipped file",
     )

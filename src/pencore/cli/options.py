@@ -84,6 +84,13 @@ class Parser(argparse.ArgumentParser):
     argparse would swallow, so that the command line reports it.
     """
 
+    def add_argument(self, *args: Any, **kwargs: Any) -> argparse.Action:
+        """As argparse's, but an option that stores one value refuses to be given twice
+        (``--velocity 300 --velocity 500`` would silently keep the last)."""
+        if args and str(args[0]).startswith("-") and kwargs.get("action", "store") == "store":
+            kwargs["action"] = _StoreOnce
+        return super().add_argument(*args, **kwargs)
+
     def error(self, message: str) -> NoReturn:
         """Exit with status 2 and one line naming the error and ``--help``."""
         self.exit(2, f"{PROG}: error: {one_line(message)} (see '{self.prog} --help')\n")
@@ -93,6 +100,30 @@ class Parser(argparse.ArgumentParser):
             file.write(message)
             return
         super()._print_message(message, file)
+
+
+class _StoreOnce(argparse.Action):
+    """argparse's ``store``, refusing a second value for the same option."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self._given: dict[int, str] = {}
+
+    def __call__(
+        self,
+        parser: argparse.ArgumentParser,
+        namespace: argparse.Namespace,
+        values: Any,
+        option_string: str | None = None,
+    ) -> None:
+        first = self._given.get(id(namespace))
+        if first is not None:
+            parser.error(
+                f"{option_string or self.dest} given twice ({first} and "
+                f"{option_string} {values}); give it once"
+            )
+        self._given[id(namespace)] = f"{option_string} {values}"
+        setattr(namespace, self.dest, values)
 
 
 def one_line(text: str) -> str:
@@ -146,6 +177,14 @@ velocity = number_type("velocity")
 #: argparse type: an obliquity in deg, in ``LIMITS["obliquity"]`` (-90, 90); negative
 #: tilts the axis towards -x.
 obliquity = number_type("obliquity")
+
+
+def path_type(text: str) -> str:
+    """An argparse ``type=`` for a file path: refuses the empty or blank path, which
+    names no file (``--write ''`` would otherwise write nothing without a word)."""
+    if not text.strip():
+        raise argparse.ArgumentTypeError(f"a file path is needed, got {text!r}")
+    return text
 
 
 def numerics_option(text: str) -> tuple[str, Any]:

@@ -375,8 +375,19 @@ class Projectile:
         except InputError as exc:
             raise GeometryError(str(exc)) from None
         object.__setattr__(self, "shank", tuple(self.shank))
+        if not isinstance(self.nose, OgiveNose | ConeNose | FlatNose):
+            raise GeometryError(
+                f"{what}: nose must be an OgiveNose, ConeNose or FlatNose, got "
+                f"{type(self.nose).__name__} {brief(self.nose)}"
+            )
+        for k, c in enumerate(self.shank):
+            if not isinstance(c, Cylinder):
+                raise GeometryError(
+                    f"{what}: shank segment {k} must be a Cylinder, got "
+                    f"{type(c).__name__} {brief(c)}"
+                )
         # a nose of a few calibres, not kilometres (a cone of 1e-6 deg is 2722 km long)
-        nose_length = self.nose.length(self.radius) if hasattr(self.nose, "length") else 0.0
+        nose_length = self.nose.length(self.radius)
         if not nose_length <= LIMITS["length"].hi:
             raise GeometryError(
                 f"{what}: nose length {nose_length:.4g} m is beyond "

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import functools
 import math
+import os
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
@@ -347,7 +348,8 @@ def _num(
     form accepted unless ``allow_str`` is False)."""
     if key not in d:
         raise InputError(f"{what}: missing key {brief(key)}")
-    return number(d[key], limit or key, what, allow_str=allow_str)
+    # the object built from it (Projectile, Medium, Layer) judges its plausibility, once
+    return number(d[key], limit or key, what, allow_str=allow_str, plausibility=False)
 
 
 def _mapping(x: Any, what: str) -> dict[str, Any]:
@@ -526,7 +528,7 @@ def get_projectile(spec: str | Projectile | dict[str, Any]) -> Projectile:
 
     Parameters
     ----------
-    spec : str, dict or Projectile
+    spec : str, path-like, dict or Projectile
         A library name (:func:`~pencore.projectile_names`: ``p1``..``p4`` of the paper's
         Table 3, the validation projectiles), the path of a YAML file, a mapping in that
         file's format (the user guide's Inputs page), or a :class:`~pencore.Projectile`
@@ -565,6 +567,8 @@ def get_projectile(spec: str | Projectile | dict[str, Any]) -> Projectile:
         return spec
     if isinstance(spec, dict):
         return projectile_from_dict(spec)
+    if isinstance(spec, os.PathLike):  # a pathlib.Path: always a file
+        return _from_yaml_file(os.fspath(spec), "projectile", projectile_from_dict)
     if not isinstance(spec, str):
         raise InputError(
             f"projectile must be a name, a YAML file, a mapping or a Projectile, got {brief(spec)}"
@@ -584,7 +588,7 @@ def get_target(spec: str | Target | Medium | dict[str, Any]) -> Target:
 
     Parameters
     ----------
-    spec : str, dict, Target or Medium
+    spec : str, path-like, dict, Target or Medium
         A library name (:func:`~pencore.target_names`: ``soil``, ``concrete``,
         ``aluminium``...), the path of a YAML file, a mapping in that file's format (the
         user guide's Inputs page), a :class:`~pencore.Target` (returned as it is) or a
@@ -617,6 +621,8 @@ def get_target(spec: str | Target | Medium | dict[str, Any]) -> Target:
         return Target.half_space(spec)
     if isinstance(spec, dict):
         return target_from_dict(spec)
+    if isinstance(spec, os.PathLike):  # a pathlib.Path: always a file
+        return _from_yaml_file(os.fspath(spec), "target", target_from_dict)
     if not isinstance(spec, str):
         raise InputError(
             f"target must be a name, a YAML file, a mapping or a Target, got {brief(spec)}"

@@ -52,6 +52,7 @@ __all__ = [
     "count",
     "number",
     "as_float",
+    "flag",
     "integer",
     "check_keys",
     "limits_markdown",
@@ -494,6 +495,22 @@ def as_float(value: Any, allow_str: bool) -> float | None:
     except ImportError:  # pragma: no cover
         pass
     return None
+
+
+def flag(value: Any, what: str) -> bool:
+    """``value`` as a bool when it is one (Python's or numpy's ``bool_``, a 0-d boolean
+    array), else :class:`~pencore.InputError`: ``1``, ``"yes"`` and None are not flags.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> flag(np.bool_(True), "stop_at_reversal")
+    True
+    """
+    kind = getattr(getattr(value, "dtype", None), "kind", "")
+    if isinstance(value, bool) or (kind == "b" and getattr(value, "ndim", 1) == 0):
+        return bool(value)
+    raise InputError(f"{what} must be True or False, got {brief(value)}")
 
 
 def _is_time(value: Any) -> bool:

@@ -33,6 +33,7 @@ import xarray as xr
 from pencore.errors import InputError, SolverError
 from pencore.inputs.geometry import Projectile
 from pencore.inputs.library import get_projectile, get_target
+from pencore.inputs.limits import flag
 from pencore.inputs.models import Emulation, ShankModel, emulation, shank_model, to_json
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.target import Target
@@ -188,7 +189,8 @@ def simulate(
         Initial angular velocity about ``+z`` (rad/s); positive turns the nose towards
         ``+x``.
     start : (3,) float, optional
-        Initial nose-tip position (m). Default: ``x = z = 0``, the body lowered until its
+        Initial nose-tip position (m), in order, with ``y >= 0`` (at or above the
+        surface). Default: ``x = z = 0``, the body lowered until its
         lowest surface point touches ``y = 0``.
     azimuth : float, default 0
         Rotation of the whole impact about the target normal ``+y`` (deg).
@@ -259,7 +261,7 @@ def simulate(
             omega=omega,
             azimuth=azimuth,
             start=None if start is None else list(start),
-            stop_at_reversal=stop_at_reversal,
+            stop_at_reversal=bool(stop_at_reversal),
         ),
     )
     return _record_model(ds, pr, spin_about)
@@ -306,12 +308,13 @@ def _impact(a: Mapping[str, Any]) -> tuple[Problem, RunResult, float, tuple]:
     velocity, obliquity, yaw, omega, azimuth, start = _check_inputs(
         a["velocity"], a["obliquity"], a["yaw"], a["omega"], a["azimuth"], a["start"]
     )
-    if not isinstance(stop_at_reversal, bool):
-        raise InputError(f"stop_at_reversal must be True or False, got {stop_at_reversal!r}")
+    stop_at_reversal = flag(stop_at_reversal, "stop_at_reversal")
     if prepared is not None and not isinstance(prepared, Problem):
         raise InputError(f"prepared must come from pencore.run.impact.prepare, got {prepared!r}")
     if prepared is not None and (shank is not None or emulation is not None):
         raise InputError("pass shank= and emulation= to pencore.prepare, not with prepared=")
+    if prepared is not None:
+        _check_prepared(prepared, a)
     pr = prepared or prepare(
         a["projectile"], a["target"], a["numerics"], shank=shank, emulation=emulation,
         **a["overrides"],
@@ -339,6 +342,41 @@ def _impact(a: Mapping[str, Any]) -> tuple[Problem, RunResult, float, tuple]:
 
 
 _SIMULATE = inspect.signature(simulate)
+
+
+def _same(spec: Any, resolved: Any, resolve: Callable[[Any], Any]) -> bool:
+    """Whether the projectile or target ``spec`` of a call names ``resolved`` (the one a
+    prepared problem holds): the object itself, an equal one, its name, or a name, file
+    or mapping that resolves to an equal one."""
+    if spec is resolved or (isinstance(spec, str) and spec == resolved.name):
+        return True
+    try:
+        return bool(resolve(spec) == resolved)
+    except InputError:
+        return False
+
+
+def _check_prepared(pr: Problem, a: Mapping[str, Any]) -> None:
+    """Refuse a prepared problem that is not the one the call names: its projectile,
+    target and (when the call gives them) numerics must be the call's, or the run would
+    silently be another's."""
+    for kind, resolve, held in (
+        ("projectile", get_projectile, pr.projectile),
+        ("target", get_target, pr.target),
+    ):
+        if not _same(a[kind], held, resolve):
+            given = a[kind] if isinstance(a[kind], str) else getattr(a[kind], "name", a[kind])
+            raise InputError(
+                f"prepared= holds {kind} {held.name!r}, but the call names {kind} "
+                f"{str(given)[:60]!r}; prepare the problem for this {kind} "
+                f"(pencore.prepare(projectile, target, ...)) or pass the one it holds"
+            )
+    if a["numerics"] is not None or a["overrides"]:
+        if resolve_numerics(a["numerics"], a["overrides"]) != pr.numerics:
+            raise InputError(
+                "prepared= carries its own numerics, and the call gives different ones "
+                "(numerics= or keyword overrides); pass them to pencore.prepare instead"
+            )
 
 
 def _record_model(ds: xr.Dataset, pr: Problem, spin_about: str) -> xr.Dataset:

@@ -6,12 +6,14 @@ Conventions as in :mod:`pencore.run.impact` (angles in radians here, degrees at 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 
 from pencore.errors import InputError
 from pencore.inputs.conventions import SPIN_CENTRES
+from pencore.inputs.gate import brief
 from pencore.inputs.geometry import Projectile
 from pencore.inputs.limits import number
 from pencore.kernels.dynamics import quat_to_matrix
@@ -107,9 +109,18 @@ def _check_inputs(
     az = number(azimuth, "azimuth")
     if start is None:
         return v, ob, yw, om, az, None
-    if isinstance(start, str | bytes) or not hasattr(start, "__len__") or len(start) != 3:
-        raise InputError(f"start must be three numbers (x, y, z) in m, got {start!r}")
+    ordered = isinstance(start, Sequence | np.ndarray) and not isinstance(start, str | bytes)
+    if not ordered or len(start) != 3:  # a set or a mapping has no x, y, z order
+        raise InputError(
+            f"start must be three numbers (x, y, z) in m, in order (a list, tuple or "
+            f"array), got {brief(start)} ({type(start).__name__})"
+        )
     xyz = tuple(number(c, "start", f"start {n}") for c, n in zip(start, "xyz", strict=True))
+    if xyz[1] < 0.0:
+        raise InputError(
+            f"start y must be >= 0 m: the nose tip starts at or above the target's surface "
+            f"y = 0 (the target is y <= 0), got y = {xyz[1]:g} m"
+        )
     return v, ob, yw, om, az, xyz  # type: ignore[return-value]
 
 

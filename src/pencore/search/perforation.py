@@ -32,6 +32,9 @@ import numpy as np
 import xarray as xr
 
 from pencore.errors import InputError
+from pencore.inputs.gate import brief
+from pencore.inputs.limits import as_float
+from pencore.io.runs import check_run
 from pencore.run.impact import prepare, run_impact
 from pencore.search.threshold import (
     DEFAULT_SCAN,
@@ -75,7 +78,8 @@ def perforates(ds: xr.Dataset) -> bool:
     >>> pencore.perforates(pencore.simulate("p2", "soil", 500.0))
     False
     """
-    return ds.attrs.get("outcome") == "perforated"
+    check_run(ds, "perforates", attrs=("outcome",))
+    return ds.attrs["outcome"] == "perforated"
 
 
 def residual_velocity(ds: xr.Dataset) -> float:
@@ -101,7 +105,11 @@ def residual_velocity(ds: xr.Dataset) -> float:
     >>> pencore.residual_velocity(pencore.simulate("p2", "soil", 500.0))
     0.0
     """
-    return float(ds.attrs["residual_velocity"]) if perforates(ds) else 0.0
+    check_run(ds, "residual_velocity", attrs=("outcome",))
+    if ds.attrs["outcome"] != "perforated":
+        return 0.0
+    check_run(ds, "residual_velocity", attrs=("residual_velocity",))
+    return float(ds.attrs["residual_velocity"])
 
 
 def ballistic_limit(
@@ -204,14 +212,53 @@ def recht_ipson(v: np.ndarray | float, v_bl: float, a: float = 1.0, p: float = 2
     numpy.ndarray
         Residual speed (m/s), the shape of ``v``.
 
+    Raises
+    ------
+    InputError
+        ``v`` not finite speeds >= 0, ``v_bl`` not a finite number >= 0, ``a`` or ``p``
+        not a finite number > 0.
+
     Examples
     --------
     >>> from pencore import recht_ipson
     >>> recht_ipson([200.0, 500.0, 340.0], v_bl=300.0)
     array([  0., 400., 160.])
     """
-    v = np.asarray(v, dtype=float)
+    v = _speeds(v, "recht_ipson impact speed v")
+    v_bl = _positive(v_bl, "recht_ipson v_bl", zero=True)
+    a, p = _positive(a, "recht_ipson a"), _positive(p, "recht_ipson p")
     return a * np.maximum(v**p - v_bl**p, 0.0) ** (1.0 / p)
+
+
+def _positive(value: Any, what: str, zero: bool = False) -> float:
+    """``value`` as a finite number > 0 (>= 0 with ``zero``), else one InputError line."""
+    v = as_float(value, allow_str=False)
+    if v is None or not math.isfinite(v) or not (v >= 0.0 if zero else v > 0.0):
+        raise InputError(
+            f"{what} must be a finite number {'>=' if zero else '>'} 0, got {brief(value)}"
+        )
+    return v
+
+
+def _speeds(values: Any, what: str) -> np.ndarray:
+    """``values`` as a float array of finite speeds >= 0 (m/s), else one InputError
+    line naming the first bad entry."""
+    try:
+        raw = np.asarray(values)
+        if raw.dtype.kind not in "iuf":  # text, booleans, objects: not speeds
+            raise TypeError
+        arr = raw.astype(float)
+    except (TypeError, ValueError):
+        raise InputError(f"{what} must be numbers (m/s), got {brief(values)}") from None
+    if arr.ndim > 1:
+        raise InputError(f"{what} must be a number or a 1-D array, got shape {arr.shape}")
+    bad = ~(np.isfinite(arr) & (arr >= 0.0))
+    if bad.any():
+        i = int(np.flatnonzero(np.ravel(bad))[0])
+        raise InputError(
+            f"{what} must be finite speeds >= 0 m/s, got {float(np.ravel(arr)[i]):g} (entry {i})"
+        )
+    return arr
 
 
 def fit_recht_ipson(v: np.ndarray, v_r: np.ndarray, v_bl: float | None = None) -> dict[str, float]:
@@ -232,7 +279,9 @@ def fit_recht_ipson(v: np.ndarray, v_r: np.ndarray, v_bl: float | None = None) -
     Raises
     ------
     InputError
-        Fewer than 3 perforating runs (2 with ``v_bl`` given).
+        Speeds that are not finite numbers >= 0, arrays of unequal length, a residual
+        speed above its impact speed, fewer than 3 perforating runs (2 with ``v_bl``
+        given).
 
     Examples
     --------
@@ -247,8 +296,22 @@ def fit_recht_ipson(v: np.ndarray, v_r: np.ndarray, v_bl: float | None = None) -
     """
     from scipy.optimize import least_squares
 
-    v = np.asarray(v, dtype=float)
-    v_r = np.asarray(v_r, dtype=float)
+    v = np.atleast_1d(_speeds(v, "fit_recht_ipson impact speeds v"))
+    v_r = np.atleast_1d(_speeds(v_r, "fit_recht_ipson residual speeds v_r"))
+    if v.shape != v_r.shape:
+        raise InputError(
+            f"fit_recht_ipson needs one residual speed per impact speed, got {v.size} "
+            f"impact and {v_r.size} residual speeds"
+        )
+    above = np.flatnonzero(v_r > v)
+    if above.size:
+        i = int(above[0])
+        raise InputError(
+            f"fit_recht_ipson: residual speed {v_r[i]:g} m/s above its impact speed "
+            f"{v[i]:g} m/s (entry {i}); a rigid projectile leaves a plate slower than it hit it"
+        )
+    if v_bl is not None:
+        v_bl = _positive(v_bl, "fit_recht_ipson v_bl", zero=True)
     keep = v_r > 0.0
     v, v_r = v[keep], v_r[keep]
     if v.size < (3 if v_bl is None else 2):

@@ -176,7 +176,9 @@ def find_threshold(
     ------
     InputError
         ``lo >= hi``, a bound or ``tol`` that is not a finite number, ``tol <= 0``,
-        ``max_iter`` or ``scan`` not a whole number in its range (the message names it).
+        ``max_iter`` or ``scan`` not a whole number in its range, a ``verdict`` that is
+        not callable or returns anything but True or False (``"no"``, None, NaN, 0, an
+        array): the message names it.
 
     Examples
     --------
@@ -189,7 +191,11 @@ def find_threshold(
     >>> find_threshold(lambda x: x > 5.0, 0.0, 2.0, 0.1).status
     'above_range'
     """
-    lo, hi, tol = float(lo), float(hi), float(tol)
+    if not callable(verdict):
+        raise InputError(
+            f"verdict must be a function value -> bool, got {type(verdict).__name__} "
+            f"{brief(verdict)}"
+        )
     lo, hi, tol, max_iter, scan = check_search_args(lo, hi, tol, max_iter, scan)
     search = _Search(verdict, name, tol, [lo, hi])
     log.info("%s: search in [%s, %s], tol %s", name, _fmt(lo), _fmt(hi), _fmt(tol))
@@ -300,7 +306,14 @@ class _Search:
     def ev(self, v: float) -> bool:
         v = float(v)
         if v not in self.seen:
-            self.seen[v] = bool(self.verdict(v))
+            answer = self.verdict(v)
+            if not isinstance(answer, bool | np.bool_):
+                # "no", None, NaN, 0/1 or an array would pass bool() as an answer
+                raise InputError(
+                    f"{self.name}: verdict({_fmt(v)}) must return True or False, got "
+                    f"{type(answer).__name__} {brief(answer)}"
+                )
+            self.seen[v] = bool(answer)
             self.history.append((v, self.seen[v]))
             log.info(
                 "%s: evaluation %d at %s -> %s (bracket [%s, %s])",

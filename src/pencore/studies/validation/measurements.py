@@ -247,9 +247,11 @@ def read_shot_table(path: str | Path, label: str | None = None) -> pd.DataFrame:
 
 def _shot_table(df: pd.DataFrame, label: str) -> pd.DataFrame:
     """The rows of a shot table already read, each mapped by :func:`_shot_row`."""
-    dup = df["shot"].duplicated()
+    # a shot id is compared as written without its blanks: " 12" repeats "12"
+    ids = df["shot"].astype(str).str.strip()
+    dup = ids.duplicated()
     if dup.any():
-        raise InputError(f"{label}: duplicate shots {sorted(set(df['shot'][dup]))}")
+        raise InputError(f"{label}: duplicate shots {sorted(set(ids[dup]))}")
     return pd.DataFrame(
         [_shot_row(r, f"{label} row {i + 1} (shot {r['shot']!r})") for i, r in df.iterrows()]
     )
