@@ -223,3 +223,18 @@ def test_signature_check_catches_a_wrong_default_and_a_missing_one():
     assert _signature_mismatches("pencore.vcr", shown) == [
         "pencore.vcr: hi=3000 shown, default is 4000.0"
     ]
+
+
+def test_commands_never_put_a_target_after_configfile():
+    """``--configfile`` takes every word up to the next option, so a target written after
+    its file is read as a second configuration file: the commands the config files and the
+    docs give end the file list with an option or the end of the command."""
+    import re
+
+    texts = [p.read_text() for p in (REPO / "config").glob("*.yaml")]
+    texts += [p.read_text() for p in (REPO / "docs").rglob("*.md")]
+    texts.append((REPO / "README.md").read_text())
+    for text in texts:
+        joined = re.sub(r"\\\s*\n\s*#?\s*", " ", text)  # continuation lines, commented or not
+        for m in re.finditer(r"snakemake [^\n]*?--configfile\s+(\S+)\s+([^\s\\]+)", joined):
+            assert m.group(2).startswith("-") or m.group(2) in ("```", "#"), m.group(0)

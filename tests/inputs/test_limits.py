@@ -136,6 +136,7 @@ def test_library_and_shipped_configuration_raise_no_warning():
 @pytest.mark.parametrize(
     ("angle", "flagged"),
     [(0.5236, True), (0.785, True), (0.26, True), (1.047, True), (-0.52, True),
+     (0.5235987755982988, True), (0.79056, False), (0.7905612, False),
      (0.0, False), (0.5, False), (1.0, False), (1.5, False), (0.3, False), (0.1, False),
      (5.0, False), (30.0, False), (45.0, False)],
 )  # fmt: skip

@@ -1353,3 +1353,119 @@ def test_numpy_bool_is_a_flag():
     assert a.penetration_depth.item() == b.penetration_depth.item()
     assert "True or False" in _api(lambda: pencore.simulate("p2", "soil", 300.0,
                                                             stop_at_reversal=1))  # fmt: skip
+
+
+# ------------------------------------------------------------ raw tracebacks closed
+
+
+def test_write_netcdf_under_a_file_is_one_write_error(tmp_path):
+    (tmp_path / "f.txt").write_text("a file\n")
+    with pytest.raises(pencore.WriteError) as info:
+        pencore.write_netcdf(xr.Dataset(), tmp_path / "f.txt" / "sub" / "x.nc",
+                             config_slice={}, study="probe")  # fmt: skip
+    assert "its folder" in str(info.value) and "cannot be made" in str(info.value)
+    assert "\n" not in str(info.value)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["f.txt"]
+
+
+@pytest.mark.skipif(os.geteuid() == 0, reason="root writes into read-only folders")
+def test_write_netcdf_under_a_read_only_folder_is_one_write_error(tmp_path):
+    ro = tmp_path / "ro"
+    ro.mkdir()
+    ro.chmod(0o500)
+    try:
+        with pytest.raises(pencore.WriteError, match="cannot be made"):
+            pencore.write_netcdf(xr.Dataset(), ro / "sub" / "x.nc", config_slice={}, study="p")
+    finally:
+        ro.chmod(0o700)
+
+
+@pytest.mark.parametrize("bad", [123, None, 4.5])
+def test_read_netcdf_of_a_non_path(bad):
+    assert "read_netcdf needs a file path" in _api(lambda: pencore.read_netcdf(bad))
+
+
+#: Data files the CSV readers (shot tables, paper claims) get: each one InputError line.
+BAD_CSV = {
+    "empty": (b"", "holds no table (it is empty or only comments)"),
+    "comments-only": (b"# a header\n# and nothing else\n", "holds no table"),
+    "latin-1": ("shot,projectile\nété,p1\n".encode("latin-1"), "is not a UTF-8 text (CSV) file"),
+    "binary": (b"\x7fELF\x02\x01\x01\x00\x00\x00" * 8, "binary file"),
+}
+
+
+@pytest.mark.parametrize("kind", list(BAD_CSV))
+@pytest.mark.parametrize("reader", ["shot-table", "claims"])
+def test_csv_readers_on_bad_files(kind, reader, tmp_path):
+    from pencore.paper.claims import load_claims
+    from pencore.studies.validation.measurements import read_shot_table
+
+    data, words = BAD_CSV[kind]
+    path = tmp_path / "data.csv"
+    path.write_bytes(data)
+    read = read_shot_table if reader == "shot-table" else load_claims
+    text = _api(lambda: read(path))
+    assert words in text, text
+
+
+def test_one_text_cell_in_a_shot_table_names_its_row_and_value(tmp_path):
+    from pencore.studies.validation.measurements import SHOT_COLUMNS, read_shot_table
+
+    rows = [",".join(SHOT_COLUMNS)] + [
+        f"s{i},al_ogive_var4340,{v},0.12,0.5,0.0,true,1,725,paper"
+        for i, v in enumerate(["600.0", "700.0", "fast", "800"])
+    ]
+    path = tmp_path / "shots.csv"
+    path.write_text("\n".join(rows) + "\n")
+    text = _api(lambda: read_shot_table(path))
+    assert "row 3 (shot 's2')" in text and "got 'fast'" in text, text
+    path.write_text("\n".join(rows).replace("fast", "650") + "\n")
+    assert read_shot_table(path)["velocity_m_s"].tolist() == [600.0, 700.0, 650.0, 800.0]
+
+
+@pytest.mark.parametrize(
+    ("call", "words"),
+    [
+        (lambda: pencore.simulate("p2", "soil", 300.0, obliquty=30.0),
+         "simulate: unknown keyword 'obliquty' (did you mean 'obliquity'?)"),
+        (lambda: pencore.simulate("p2", "soil", 300.0, Obliquity=30.0),
+         "unknown keyword 'Obliquity' (did you mean 'obliquity'?)"),
+        (lambda: pencore.simulate("p2", "soil", 300.0, rtoll=1e-6),
+         "unknown keyword 'rtoll' (did you mean 'rtol'?)"),
+        (lambda: pencore.prepare("p2", "soil", shnk="dafl"),
+         "prepare: unknown keyword 'shnk' (did you mean 'shank'?)"),
+    ],
+    ids=["obliquty", "Obliquity", "rtoll", "prepare-shnk"],
+)  # fmt: skip
+def test_keyword_typo_names_the_keyword_meant(call, words):
+    assert words in _api(call)
+
+
+@pytest.mark.parametrize("content", ["", "# comments only\n"], ids=["empty", "comments"])
+def test_workflow_shot_table_read_at_parse_is_one_line(content, tmp_path):
+    shots = tmp_path / "shots.csv"
+    shots.write_text(content)
+    extra = tmp_path / "extra.yaml"
+    extra.write_text(f"validation:\n  fig5:\n    shots: [{shots}]\n")
+    out = subprocess.run(
+        [sys.executable, "-m", "snakemake", "-n", "--configfile", str(extra)],
+        cwd=REPO, capture_output=True, text=True, timeout=300,
+    )  # fmt: skip
+    assert out.returncode != 0
+    assert "holds no table (it is empty or only comments)" in out.stderr + out.stdout
+    assert "pandas" not in out.stderr and "EmptyDataError" not in out.stderr
+
+
+# ------------------------------------------------------------ unbounded lists
+
+
+def test_workflow_list_longer_than_a_grid_refused_before_the_plan():
+    from pencore.errors import ConfigError
+    from pencore.workflowconfig.config_check import MAX_GRID, check_config
+
+    t0 = time.monotonic()
+    cfg = _edit(_config(), "perforation.ballistic_limit.thickness_m", [0.5] * 10**5)
+    with pytest.raises(ConfigError) as info:
+        check_config(cfg, REPO)
+    assert time.monotonic() - t0 < 1.0
+    assert f"the list has 100000 entries; at most {MAX_GRID}" in str(info.value)

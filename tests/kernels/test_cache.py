@@ -214,6 +214,19 @@ def test_a_damaged_local_cache_is_discarded_and_recompiled(case, tmp_path):
     _recompiles_with_the_notice_then_loads(tmp_path)
 
 
+@pytest.mark.parametrize("case", ["a garbage data file", "a truncated data file"])
+def test_a_damaged_local_cache_beside_good_shipped_kernels_loads_them_in_silence(case, tmp_path):
+    # the local copy is read first and fails; the shipped kernels then serve: nothing is
+    # compiled, so no "compiling ... about a minute" notice may be printed
+    _ship(tmp_path)
+    first = _kernel(tmp_path, {cache.NO_SHIPPED_ENV: "1"})  # a local cache of its own
+    assert first.stdout.split() == ["0", "13.0"]
+    LOCAL_CASES[case](tmp_path / "local")
+    done = _kernel(tmp_path)
+    assert done.stdout.split() == ["1", "13.0"]  # loaded (from the shipped kernels)
+    assert NOTICE not in done.stderr and done.stderr == ""
+
+
 # every place numba could write its cache refuses (a read-only install with a read-only
 # home; the tests run as any user, root included, so the refusal is made where numba and
 # pencore probe a folder for writing: tempfile.TemporaryFile)

@@ -5,17 +5,25 @@
 #   measurements  pencore against published measurements (shipped data files with sources)
 # Each study's rule gets its own config slice through params, so editing one study's
 # entry reruns only that study (rerun trigger `params`).
-import pandas as pd
+from pencore.errors import InputError
+from pencore.inputs.gate import read_csv
 
 VALIDATION = config["validation"]
 
-# Tabular inputs are checked at parse time, so a bad row fails before anything runs.
-validate(
-    pd.read_csv(VALIDATION["table2"]["csv"], comment="#"),
-    "../schemas/table2.schema.yaml",
-)
-for shot_table in VALIDATION["fig5"]["shots"]:
-    validate(pd.read_csv(shot_table, comment="#"), "../schemas/shot_table.schema.yaml")
+# Tabular inputs are checked at parse time, so a bad row fails before anything runs; a
+# missing, empty or unreadable file is one line (pencore's file gate), not a traceback.
+try:
+    validate(
+        read_csv(VALIDATION["table2"]["csv"], "validation.table2.csv", comment="#"),
+        "../schemas/table2.schema.yaml",
+    )
+    for shot_table in VALIDATION["fig5"]["shots"]:
+        validate(
+            read_csv(shot_table, "validation.fig5.shots", comment="#"),
+            "../schemas/shot_table.schema.yaml",
+        )
+except InputError as exc:
+    raise WorkflowError(str(exc)) from None
 
 
 rule table2:

@@ -629,13 +629,14 @@ def looks_like_radians(angle_deg: float) -> bool:
 
     The rule: ``0 < |a| < pi/2`` (a radian value of an angle below 90 deg), ``a`` not a
     multiple of 0.5 deg (the small angles people type in degrees: 0.5, 1, 1.5), and ``a``
-    read as radians within 0.5 deg of a multiple of 5 deg, at least 5 deg (the angles
-    people mean: 0.52 or 0.5236 for 30 deg, 0.785 for 45 deg, 0.26 for 15 deg). A random
-    small angle (an ensemble's draws) is not checked: the check is for values typed in.
+    read as radians is a multiple of 5 deg, at least 5 deg: exactly (``math.radians(30)``
+    passed on), or within 0.5 deg when ``a`` has at most 4 significant digits (typed in:
+    0.52 or 0.5236 for 30 deg, 0.785 for 45 deg, 0.26 for 15 deg). A computed angle with
+    more digits (a measured angle of attack, an ensemble's draw) is not flagged.
 
     Examples
     --------
-    >>> [looks_like_radians(a) for a in (0.5236, 0.785, 0.26, 1.0, 0.3, 30.0)]
+    >>> [looks_like_radians(a) for a in (0.5236, 0.785, math.radians(30), 0.79056, 1.0, 30.0)]
     [True, True, True, False, False, False]
     """
     a = abs(angle_deg)
@@ -643,7 +644,12 @@ def looks_like_radians(angle_deg: float) -> bool:
         return False
     deg = math.degrees(a)
     nearest = 5.0 * round(deg / 5.0)
-    return nearest >= 5.0 and abs(deg - nearest) <= 0.5
+    if nearest < 5.0:
+        return False
+    if abs(deg - nearest) < 1e-6:  # math.radians(30), np.deg2rad(45): converted in full
+        return True
+    typed = float(f"{a:.4g}") == a  # a value typed in: at most 4 significant digits
+    return typed and abs(deg - nearest) <= 0.5
 
 
 _KMS = "a speed in km/s given for m/s? (1.4 km/s = 1400 m/s)"

@@ -9,7 +9,7 @@ every value checked against :data:`pencore.inputs.limits.LIMITS`.
 from __future__ import annotations
 
 import difflib
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, fields, replace
 from typing import Any
 
@@ -25,6 +25,7 @@ __all__ = [
     "JACOBIANS",
     "NUMERIC_FIELDS",
     "resolve_numerics",
+    "check_keywords",
 ]
 
 #: Integration methods: the compiled Rosenbrock pair (default) and scipy's implicit
@@ -213,6 +214,30 @@ def resolve_numerics(
             f"numerics must be a pencore.Numerics or a mapping of options, got {brief(numerics)}"
         )
     return _apply(base, overrides) if overrides else base
+
+
+def check_keywords(overrides: Mapping[str, Any], own: Iterable[str], function: str) -> None:
+    """Refuse a keyword of ``function`` that is neither one of its own parameters
+    (``own``) nor a :class:`Numerics` field, naming the closest of both: a typo of the
+    function's own keyword (``obliquty=30``) is not an unknown numerics key.
+
+    Raises
+    ------
+    InputError
+        ``unknown keyword 'obliquty' (did you mean 'obliquity'?)``, one line.
+    """
+    numerics = [f.name for f in fields(Numerics)]
+    known = [k for k in own if k not in ("overrides", "kwargs")] + numerics
+    for key in overrides:
+        if key in numerics:
+            continue
+        lower = {k.lower(): k for k in known}
+        hint = difflib.get_close_matches(str(key).lower(), list(lower), n=1, cutoff=0.6)
+        tip = f" (did you mean {lower[hint[0]]!r}?)" if hint else ""
+        raise InputError(
+            f"{function}: unknown keyword {brief(key)}{tip}; its keywords are its own "
+            f"parameters and the numerics fields ({', '.join(numerics)})"
+        )
 
 
 def _apply(base: Numerics, mapping: Mapping[str, Any]) -> Numerics:

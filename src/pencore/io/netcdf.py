@@ -26,8 +26,8 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from pencore.errors import ResultError
-from pencore.io.atomic import atomic_path
+from pencore.errors import InputError, ResultError, WriteError
+from pencore.io.atomic import atomic_path, describe_os_error
 from pencore.io.results import unreadable_message
 from pencore.version import __version__
 
@@ -214,7 +214,14 @@ def write_netcdf(
     if not isinstance(ds, xr.Dataset):
         raise TypeError(f"write_netcdf needs an xarray.Dataset, got {type(ds).__name__}")
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    try:  # inside the promise: any failure to write is one WriteError line
+        path.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise WriteError(
+            f"cannot write {str(path)!r}: its folder {str(path.parent)!r} cannot be made "
+            f"({describe_os_error(exc)}); nothing was written",
+            exc.errno,
+        ) from None
     out = ds.copy(deep=False)
     out.attrs = _netcdf_safe_attrs({**ds.attrs, **provenance_attrs(config_slice, study)})
     for name in out.variables:
@@ -318,6 +325,8 @@ def read_netcdf(path: str | os.PathLike[str]) -> xr.Dataset:
 
     Raises
     ------
+    InputError
+        ``path`` is not a path (a number, None).
     FileNotFoundError
         No file at ``path``.
     pencore.errors.ResultError
@@ -344,12 +353,23 @@ def read_netcdf(path: str | os.PathLike[str]) -> xr.Dataset:
     ...
     FileNotFoundError: no netCDF file at 'no-such-file.nc'
     """
+    if not isinstance(path, str | os.PathLike):
+        raise InputError(
+            f"read_netcdf needs a file path (str or path-like), got {type(path).__name__} "
+            f"{str(path)[:40]!r}"
+        )
     path = Path(path)
     if not path.is_file():
         raise FileNotFoundError(f"no netCDF file at {str(path)!r}")
     try:
         with xr.open_dataset(path, engine="netcdf4") as ds:
             ds = ds.load()
+    except MemoryError:
+        raise ResultError(
+            f"netCDF file {str(path)!r} is too large to load into memory "
+            f"({path.stat().st_size / 2**30:.3g} GiB on disk); open it lazily with "
+            "xarray.open_dataset instead"
+        ) from None
     except (OSError, RuntimeError, ValueError, KeyError) as exc:
         raise ResultError(unreadable_message(path, exc)) from None
     if ELAPSED_TIME in ds.dims and "time" not in ds.variables:

@@ -346,14 +346,17 @@ class KernelCache:
         from numba.core import compiler
 
         magic = target_context.codegen().magic_tuple()
+        damaged = False
         for directory, key_magic in self._places(magic):
             try:
                 data = self._file(directory).load(self._key(sig, key_magic))
                 if data is not None:
                     return compiler.CompileResult._rebuild(target_context, *data)
-            except Exception:  # truncated, garbage, unreadable: numba compiles instead
+            except Exception:  # truncated, garbage, unreadable: the next place, or compile
                 self._discard(directory)
-                announce_compile()
+                damaged = True
+        if damaged:  # only now is a compile certain (the shipped kernels may have served)
+            announce_compile()
         return None
 
     def save_overload(self, sig: Any, data: Any) -> None:

@@ -22,6 +22,7 @@ from typing import Any
 import pandas as pd
 
 from pencore.errors import InputError
+from pencore.inputs.gate import read_csv
 
 __all__ = [
     "DATA_DIR",
@@ -90,10 +91,7 @@ def at(text: Any) -> list[dict[str, float | str]]:
 
 @functools.lru_cache(maxsize=8)
 def _load(path: Path, mtime: float) -> pd.DataFrame:
-    try:
-        df = pd.read_csv(path, comment="#", dtype=str, keep_default_na=False)
-    except (OSError, pd.errors.ParserError) as e:
-        raise InputError(f"paper claims: cannot read {path}: {e}") from None
+    df = read_csv(path, "paper claims", comment="#", dtype=str, keep_default_na=False)
     missing = [c for c in COLUMNS if c not in df.columns]
     if missing:
         raise InputError(f"paper claims: {path} lacks column(s) {missing}")

@@ -35,7 +35,7 @@ from pencore.inputs.geometry import Projectile
 from pencore.inputs.library import get_projectile, get_target
 from pencore.inputs.limits import flag
 from pencore.inputs.models import Emulation, ShankModel, emulation, shank_model, to_json
-from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.inputs.numerics import Numerics, check_keywords, resolve_numerics
 from pencore.inputs.target import Target
 from pencore.integrators.driver import CHUNK_STEPS, RunResult
 from pencore.integrators.problem import Problem
@@ -115,6 +115,7 @@ def prepare(
     200 m/s: 2.68 m
     300 m/s: 4.50 m
     """
+    check_keywords(overrides, _PREPARE_KEYWORDS, "prepare")
     num = resolve_numerics(numerics, overrides)
     sm = shank_model(shank)
     em = _emulation(emulation)
@@ -141,6 +142,7 @@ def prepare(
 
 
 _emulation = emulation
+_PREPARE_KEYWORDS = tuple(inspect.signature(prepare).parameters)
 
 
 def simulate(
@@ -303,6 +305,7 @@ def _impact(a: Mapping[str, Any]) -> tuple[Problem, RunResult, float, tuple]:
 
     ``a`` maps each parameter of :func:`simulate` to its value (``overrides``: the dict
     of numerics overrides), every one present."""
+    check_keywords(a["overrides"], _SIMULATE.parameters, "simulate")
     stop_at_reversal, prepared = a["stop_at_reversal"], a["prepared"]
     shank, emulation, spin_about = a["shank"], a["emulation"], a["spin_about"]
     velocity, obliquity, yaw, omega, azimuth, start = _check_inputs(

@@ -69,6 +69,7 @@ import xarray as xr
 from pencore import closedform
 from pencore.errors import InputError
 from pencore.inputs.conventions import normal_impact_angles
+from pencore.inputs.gate import decimal, read_csv
 from pencore.inputs.library import get_projectile, get_target
 from pencore.inputs.limits import check_keys, plausible
 from pencore.inputs.numerics import Numerics, resolve_numerics
@@ -168,7 +169,7 @@ def read_data_csv(path: str | Path, columns: Sequence[str], label: str) -> pd.Da
     path = Path(path)
     if not path.is_file():
         raise InputError(f"{label}: no such file {str(path)!r}")
-    df = pd.read_csv(path, comment="#")
+    df = read_csv(path, "data", label=label, comment="#")
     missing = [c for c in columns if c not in df.columns]
     if missing:
         raise InputError(f"{label}: {path} lacks column(s) {missing}")
@@ -184,8 +185,21 @@ def total_angle_of_attack(pitch_deg: float, yaw_deg: float) -> float:
     return math.degrees(math.atan(math.hypot(tp, ty)))
 
 
+def _cell(v: Any) -> Any:
+    """A numeric cell as a number: one text cell turns a whole column into text, so each
+    row's text is read back as a plain decimal number (the gate's notation) when it is
+    one, and kept as text (refused by the row's check, naming it) when it is not."""
+    if isinstance(v, str):
+        f = decimal(v.strip())
+        return v if f is None else f
+    return v
+
+
 def _shot_row(r: pd.Series, where: str) -> dict[str, Any]:
     """One row of a shot table in the common form (impact angles mapped, see the notes)."""
+    r = r.copy()
+    for c in ("striking_velocity_m_s", "depth_m", "pitch_deg", "yaw_deg"):
+        r[c] = _cell(r[c])
     for c in ("table", "page", "source", "projectile"):
         if pd.isna(r[c]) or not str(r[c]).strip():
             raise InputError(f"{where}: no {c}")
