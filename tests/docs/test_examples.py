@@ -143,9 +143,13 @@ def test_snakemake_command_dry_runs(page, command):
 @pytest.mark.parametrize(("page", "command"), _commands("python -m pip install "))
 def test_pip_install_names_extras_that_exist(page, command):
     project = tomllib.loads((REPO / "pyproject.toml").read_text())["project"]
-    spec = shlex.split(command)[-1]
+    argv = shlex.split(command)
+    assert "-e" in argv, f"{command!r}: expected an editable install of '.'"
+    spec = argv[argv.index("-e") + 1]
     m = re.fullmatch(r"\.(?:\[([\w,-]+)\])?", spec)
-    assert m and "-e" in command, f"{command!r}: expected an editable install of '.'"
+    assert m, f"{command!r}: expected an editable install of '.'"
+    if "-c" in argv:  # a constraints file the clone holds
+        assert (REPO / argv[argv.index("-c") + 1]).is_file(), command
     for extra in (m.group(1) or "").split(",") if m.group(1) else []:
         assert extra in project["optional-dependencies"], f"{command!r}: no extra {extra}"
 

@@ -19,14 +19,23 @@ def test_opens_with_exactly_the_two_setup_commands():
     assert first[0] == "bash"
     commands = first[1:]
     assert len(commands) == 2
-    assert commands[0].startswith("python -m pip install -e '.[workflow]'")
+    # the reproduction installs the pinned versions the archive was made with
+    assert commands[0].startswith("python -m pip install -e '.[workflow]' -c constraints.txt")
     assert "snakemake --cores 2" in commands[0]
-    assert commands[1].startswith("python -m pip install -e '.[test]'")
+    # the tests resolve the newest versions pyproject.toml allows, as CI does
+    assert commands[1].startswith("python -m pip install -e '.[test]' &&")
+    assert "constraints" not in commands[1]
     assert commands[1].endswith("python -m pytest -q -n 2")
-    # CI runs the very test command a user runs
+    # CI runs the very test command a user runs, in a fresh virtual environment with a
+    # fresh resolve (not the constraints, not whatever the machine has installed)
     test_command = commands[1].split("&&")[-1].strip()
     ci = (Path(__file__).parents[2] / ".ci" / "run").read_text()
     assert test_command in ci.splitlines()
+    assert "python -m venv" in ci and "-c constraints.txt" not in ci
+    install = [ln for ln in ci.splitlines() if "pip install" in ln and "-e '." in ln]
+    assert install and all("-c " not in ln for ln in install)
+    venv = ci.index("python -m venv")
+    assert venv < ci.index(install[0]) and venv < ci.index(test_command)
     # nothing but the title before them
     assert README.split("```")[0].strip() == "# pencore"
 
@@ -85,3 +94,29 @@ def test_python_example_runs():
     ds, r = namespace["ds"], namespace["r"]
     assert ds.penetration_depth.units == "m"
     assert r.status == "ok" and r.hi - r.lo <= 5.0
+
+
+def test_constraints_pin_the_reproduction_within_what_pyproject_allows():
+    """constraints.txt pins every dependency of pencore[workflow] to one version that
+    pyproject.toml allows, says why, and how to regenerate it."""
+    import tomllib
+
+    from packaging.requirements import Requirement
+    from packaging.utils import canonicalize_name
+
+    text = (REPO / "constraints.txt").read_text()
+    header = "\n".join(ln for ln in text.splitlines() if ln.startswith("#"))
+    assert "bit-identical" in header and "python .ci/constraints.py > constraints.txt" in header
+    pins = {}
+    for line in text.splitlines():
+        if line.strip() and not line.startswith("#"):
+            name, _, version = line.partition("==")
+            assert version, f"not an exact pin: {line!r}"
+            pins[canonicalize_name(name)] = version
+    assert "pencore" not in pins
+    project = tomllib.loads((REPO / "pyproject.toml").read_text())["project"]
+    direct = project["dependencies"] + project["optional-dependencies"]["workflow"]
+    for spec in map(Requirement, direct):
+        name = canonicalize_name(spec.name)
+        assert name in pins, f"{name} is not pinned"
+        assert spec.specifier.contains(pins[name], prereleases=True), (name, pins[name])
