@@ -6,7 +6,7 @@
 # Each study's rule gets its own config slice through params, so editing one study's
 # entry reruns only that study (rerun trigger `params`).
 from pencore.errors import InputError
-from pencore.inputs.gate import read_csv
+from pencore.paper.tables import read_csv
 
 VALIDATION = config["validation"]
 

@@ -59,7 +59,7 @@ __all__ = [
     "DECIMAL_WORDS",
     "decimal",
     "read_yaml",
-    "read_csv",
+    "read_text",
     "load_yaml_text",
     "MAX_YAML_BYTES",
     "MAX_YAML_DEPTH",
@@ -395,13 +395,14 @@ def read_yaml(path: str | os.PathLike[str], what: str) -> Any:
         One line naming the file (quoted short) and why it is refused.
     """
     name = f"{what} file {brief_path(path)}"
-    text = _read_text(path, name, "YAML")
+    text = read_text(path, name, "YAML")
     return load_yaml_text(text, name)
 
 
-def _read_text(path: str | os.PathLike[str], name: str, kind: str) -> str:
+def read_text(path: str | os.PathLike[str], name: str, kind: str) -> str:
     """The UTF-8 text of the regular file ``path`` of at most :data:`MAX_YAML_BYTES`
-    bytes, else one :class:`~pencore.InputError` line starting with ``name``."""
+    bytes (YAML inputs, data tables), else one :class:`~pencore.InputError` line
+    starting with ``name`` (``kind`` names the format: ``"YAML"``, ``"CSV"``)."""
     try:
         st = os.stat(path)
     except OSError as exc:
@@ -433,35 +434,3 @@ def _read_text(path: str | os.PathLike[str], name: str, kind: str) -> str:
     except UnicodeDecodeError:
         raise InputError(f"{name} is not a UTF-8 text ({kind}) file") from None
     return text
-
-
-def read_csv(
-    path: str | os.PathLike[str], what: str, *, label: str | None = None, **kwargs: Any
-) -> Any:
-    """Read the CSV file ``path`` (a data table: shots, claims) through the gate: a
-    regular UTF-8 text file of bounded size holding a table, as a
-    :class:`pandas.DataFrame` (``kwargs`` go to :func:`pandas.read_csv`).
-
-    Raises
-    ------
-    InputError
-        One line naming the file: not a regular file, too large, not UTF-8 text
-        (a Latin-1 or binary file), empty or comments only, or rows pandas cannot split.
-    ``label`` replaces the start of the message (``"<what> file <path>"``).
-    """
-    import io
-
-    import pandas as pd
-
-    name = label or f"{what} file {brief_path(path)}"
-    text = _read_text(path, name, "CSV")
-    if "\x00" in text:
-        raise InputError(f"{name} is a binary file, not a CSV text file")
-    try:
-        return pd.read_csv(io.StringIO(text), **kwargs)
-    except pd.errors.EmptyDataError:
-        raise InputError(f"{name} holds no table (it is empty or only comments)") from None
-    except (pd.errors.ParserError, ValueError) as exc:
-        raise InputError(
-            f"{name} cannot be read as CSV: {' '.join(str(exc).split())[:160]}"
-        ) from None

@@ -62,6 +62,7 @@ __all__ = [
     "looks_like_radians",
     "plausible_markdown",
     "one_line_warnings",
+    "half_space_plates",
 ]
 
 
@@ -791,6 +792,16 @@ def plausible(value: float, key: str, what: str = "") -> bool:
         stacklevel=_caller_level(),
     )
     return False
+
+
+@contextlib.contextmanager
+def half_space_plates() -> Iterator[None]:
+    """Within the block, a thin plate on the half-space law is intended (a study that
+    compares the near-surface options with none): its ``"plate"`` warning is not given.
+    Every other plausibility warning is."""
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", r".*: plate thickness ", PlausibilityWarning)
+        yield
 
 
 @contextlib.contextmanager

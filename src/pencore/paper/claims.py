@@ -22,7 +22,7 @@ from typing import Any
 import pandas as pd
 
 from pencore.errors import InputError
-from pencore.inputs.gate import read_csv
+from pencore.paper.tables import read_csv
 
 __all__ = [
     "DATA_DIR",

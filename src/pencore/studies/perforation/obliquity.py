@@ -34,6 +34,7 @@ import xarray as xr
 
 from pencore.errors import InputError, SolverError
 from pencore.inputs.library import get_projectile
+from pencore.inputs.limits import half_space_plates
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.search.perforation import ballistic_limit
 from pencore.search.threshold import CriticalResult
@@ -147,9 +148,11 @@ def ballistic_map(
             t = slab_target(medium, float(x * d), **opt)
             for j, o in enumerate(obl):
                 try:
-                    res[i, j] = ballistic_limit(
-                        projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan, numerics=num
-                    )
+                    with half_space_plates():  # option "none": the half-space law, on purpose
+                        res[i, j] = ballistic_limit(
+                            projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan,
+                            numerics=num,
+                        )  # fmt: skip
                 except SolverError as exc:
                     # a run of the search failed (e.g. a rebound chattering on the face):
                     # the cell is recorded as failed, not guessed

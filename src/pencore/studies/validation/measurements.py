@@ -69,11 +69,12 @@ import xarray as xr
 from pencore import closedform
 from pencore.errors import InputError
 from pencore.inputs.conventions import normal_impact_angles
-from pencore.inputs.gate import decimal, read_csv
+from pencore.inputs.gate import decimal
 from pencore.inputs.library import get_projectile, get_target
-from pencore.inputs.limits import check_keys, plausible
+from pencore.inputs.limits import check_keys, half_space_plates, plausible
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.target import Target
+from pencore.paper.tables import read_csv
 from pencore.run.impact import prepare, simulate
 from pencore.studies.common import t_half_width
 from pencore.studies.perforation.slabs import slab_target
@@ -390,7 +391,8 @@ def _predict(
     key = (row["projectile"], row["target"], row["thickness_m"])
     if key not in cache:
         target = _slab(row["target"], row["thickness_m"], options)
-        cache[key] = (target, prepare(row["projectile"], target, num))
+        with half_space_plates():  # the measured plates, with each option and with none
+            cache[key] = (target, prepare(row["projectile"], target, num))
     target, pr = cache[key]
     ds = simulate(
         row["projectile"],
