@@ -12,10 +12,9 @@ from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
 from pencore.errors import ConfigError
-from pencore.inputs.limits import one_line_warnings
 from pencore.io.results import set_aside_unreadable
 from pencore.workflowconfig.parts import remade_target
-from pencore.workflowconfig.config_check import check_config, read_config
+from pencore.workflowconfig.config_check import check_config, one_line_warnings, read_config
 from pencore.workflowconfig.config_check import schema_error_message, strict_schema_error
 from pencore.workflowconfig.sources import physics_source_hash, plotting_source_hash
 
