@@ -184,3 +184,14 @@ def test_docs_list_every_plausible_range():
     assert "```{include} ../_generated/plausible.md" in page
     generator = (REPO / "docs/_ext/pencore_docs.py").read_text()
     assert '"plausible.md": plausible_table' in generator
+
+
+def test_a_study_of_thin_plates_on_the_half_space_law_silences_only_that_warning():
+    from pencore.inputs.limits import half_space_plates
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        with half_space_plates():
+            pencore.prepare("p2", _concrete_slab(0.33))
+            pencore.Projectile("x", 9.5, STEEL)
+    assert [str(w.message).split(" is ")[0] for w in caught] == ["diameter 9.5 m"]

@@ -1309,7 +1309,13 @@ REPEATED_OPTIONS = [
 ]
 
 
-@pytest.mark.parametrize("argv", REPEATED_OPTIONS, ids=["velocity", "out", "projectile"])
+REPEATED_OPTIONS.append([*SIM, "--velocity", "300", "--numerics", "rtol=1e-6",
+                         "--numerics", "rtol=1e-7"])  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    "argv", REPEATED_OPTIONS, ids=["velocity", "out", "projectile", "numerics-key"]
+)
 def test_cli_repeated_option_refused(argv, capsys, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     assert main(argv) == 2

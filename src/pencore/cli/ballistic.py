@@ -10,6 +10,7 @@ from pencore.cli.options import (
     add_window_options,
     exit_at_once_on_interrupt,
     number_type,
+    numerics_given,
     numerics_option,
     obliquity,
     resolve,
@@ -91,7 +92,7 @@ def run(args: argparse.Namespace) -> int:
         args.lo,
         args.hi,
         args.tol,
-        numerics=resolve_numerics(dict(args.numerics)),
+        numerics=resolve_numerics(numerics_given(args.numerics)),
     )
     value = f"{r.value:.6g} m/s" if math.isfinite(r.value) else "not found"
     print(f"ballistic limit: {value}")

@@ -187,6 +187,20 @@ def path_type(text: str) -> str:
     return text
 
 
+def numerics_given(pairs: Sequence[tuple[str, Any]]) -> dict[str, Any]:
+    """The ``--numerics KEY=VALUE`` options as a mapping; a key given twice is refused
+    (the last would silently win)."""
+    out: dict[str, Any] = {}
+    for key, value in pairs:
+        if key in out:
+            raise InputError(
+                f"--numerics {key} given twice ({key}={out[key]!r} and {key}={value!r}); "
+                "give it once"
+            )
+        out[key] = value
+    return out
+
+
 def numerics_option(text: str) -> tuple[str, Any]:
     """Parse one ``--numerics KEY=VALUE`` (an argparse ``type=``).
 

@@ -15,6 +15,7 @@ from pencore.cli.options import (
     cli_inputs,
     exit_at_once_on_interrupt,
     number_type,
+    numerics_given,
     numerics_option,
     obliquity,
     resolve,
@@ -157,7 +158,7 @@ def run(args: argparse.Namespace) -> int:
     out = check_output(args.out, inputs) if args.out is not None else None
     projectile = resolve("projectile", args.projectile, get_projectile)
     target = with_windows(resolve("target", args.target, get_target), args)
-    numerics = resolve_numerics(dict(args.numerics))
+    numerics = resolve_numerics(numerics_given(args.numerics))
     if numerics.v_stop >= args.velocity:
         # the run would be over before its first step, with a depth of 0
         raise CommandFailure(
