@@ -44,7 +44,7 @@ def read_csv(
     >>> from pathlib import Path
     >>> with tempfile.TemporaryDirectory() as tmp:
     ...     empty = Path(tmp) / "shots.csv"
-    ...     _ = empty.write_text("# a header only\n")
+    ...     _ = empty.write_text("# a header only")
     ...     try:
     ...         read_csv(empty, "shot table", label="shot table", comment="#")
     ...     except InputError as exc:
