@@ -76,6 +76,16 @@ def run_setting(setting: Mapping[str, Any]) -> xr.Dataset:
     )
     ds["vcr_status"] = ("setting", np.array([ds.attrs.pop("vcr_status")]))
     ds["setting_json"] = ("setting", np.array([ds.attrs.pop("setting_json")]))
+    ds["body_description"] = (
+        "setting",
+        np.array([ds.attrs.pop("body_description")]),
+        {"long_name": "how #2's body would be built"},
+    )
+    ds["fitted_to"] = (
+        "setting",
+        np.array([ds.attrs.pop("fitted_to")]),
+        {"long_name": "paper numbers this setting is fitted to (;-separated; empty: none)"},
+    )
     return ds
 
 
