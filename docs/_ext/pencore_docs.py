@@ -417,7 +417,8 @@ def attribution_mass_text() -> str:
             i for i, g in enumerate(groups) if g == "mass distribution" or names[i] == "default"
         ]
         head = (
-            "| setting | body of #2 | Lc/L | I_t (kg m^2) | buildable | alpha 5 rad/s (deg) "
+            "| setting | body of #2 | Lc/L | I_t (kg m^2) | buildable #2 / #4 "
+            "| alpha 5 rad/s (deg) "
             "| alpha 20 | alpha 25 | turns back at 25 | Vcr (m/s) | depth 280 (m) "
             "| phi #4 280 / 1000 (deg) | Fig. 12 falls |"
         )
@@ -436,7 +437,8 @@ def attribution_mass_text() -> str:
                 f"| {d['label'].item()} | {d['body_description'].item()} "
                 f"| {_fmt(float(d['body_lc_over_l']), 4)} "
                 f"| {_fmt(float(d['body_i_transverse']), 3)} "
-                f"| {'yes' if int(d['body_buildable']) else 'no'} "
+                f"| {'yes' if int(d['body_buildable']) else 'no'} / "
+                f"{'yes' if int(d['body_p4_buildable']) else 'no'} "
                 f"| {_fmt(a[0], 3)} | {_fmt(a[1], 3)} | {_fmt(a[2], 3)} "
                 f"| {'yes' if bool(d['turned_back'].values[2]) else 'no'} "
                 f"| {_fmt(float(d['value_vcr']), 4)} | {_fmt(float(d['value_depth_280']), 3)} "

@@ -66,3 +66,17 @@ def test_default_inertia_reproduces_the_default_deviation_exactly():
     np.testing.assert_array_equal(same["alpha"].values, ref["alpha"].values)
     assert float(same["vcr"]) == float(ref["vcr"])
     np.testing.assert_array_equal(same["phi_p4"].values, ref["phi_p4"].values)
+
+
+def test_a_mass_case_runs_the_body_it_names():
+    """The dataset of a mass case records the body it ran: Table 3's rounding edge of
+    #2's Lc/L at the solid body's mass; #4's body (Lc/L 0.65 of #2 moves #4's to 0.696)
+    needs a rear half denser than any alloy and says so."""
+    ds = disputed_quantities({"body": {"kind": "lc", "lc_over_l": 0.5255}})
+    solid = pencore.get_projectile("p2").mass_properties()
+    assert float(ds["body_mass"]) == pytest.approx(solid.mass, rel=1e-12)
+    assert float(ds["body_lc_over_l"]) == pytest.approx(0.5255, abs=1e-12)
+    assert int(ds["body_buildable"]) == 1 and int(ds["body_p4_buildable"]) == 1
+    assert "front half 5121, rear half 5179" in ds.attrs["body_description"]
+    far = disputed_quantities({"body": {"kind": "lc", "lc_over_l": 0.65}})
+    assert int(far["body_buildable"]) == 1 and int(far["body_p4_buildable"]) == 0

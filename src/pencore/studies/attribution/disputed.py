@@ -249,6 +249,7 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
                 for k, v in wall.items()
             },
             **_body_variables(b2, fit, trends),
+            "body_p4_buildable": ((), int(b4.buildable), attrs("1", "1: #4's body could be built")),
         },
         coords={
             "omega": ("omega", np.array(OMEGAS), om_attrs),
