@@ -256,3 +256,27 @@ def test_cli_simulate_into_a_law_target_file(tmp_path, capsys):
     ref = closedform.depth(p, laws.concrete_law(40e6, 2300.0), 300.0)
     depth = float(out.split("penetration depth:")[1].split()[0])
     assert depth == pytest.approx(ref, rel=2e-3)
+
+
+def test_the_guide_page_states_what_the_laws_compute():
+    """docs/user-guide/own-projectile-and-target.md types these numbers and claims."""
+    from pathlib import Path
+
+    page = (
+        Path(__file__).resolve().parents[2] / "docs/user-guide/own-projectile-and-target.md"
+    ).read_text()
+    import yaml
+
+    root = Path(__file__).resolve().parents[2]
+    src = yaml.safe_load((root / "config/aluminium_law_source.yaml").read_text())["target"]
+    ce = laws.cavity_expansion(**AL, hardening_exponent=0.051)
+    assert f"$A$ = {src['A']}, $B$ = {src['B']}, $C$ = {src['C']:.3f}" in page
+    assert f"$A$ = {ce.a:.3f} is {round(100 * (1 - ce.a / src['A']))} % lower" in page
+    assert f"3/2 is {round(100 * (ce.b / src['C'] - 1))} % higher than $C$" in page
+    assert f"this gives {laws.forrestal_s(13.5e6):.2f}" in page
+    rod = pencore.get_projectile("al_ogive_var4340")
+    computed = laws.metal_law(**AL, hardening_exponent=0.051, density=2710.0)
+    source = get_target("aluminium_3term").medium
+    assert "deeper than the source's at every speed" in page
+    for v in (500.0, 1000.0, 1500.0, 2000.0):
+        assert closedform.depth(rod, computed, v) > closedform.depth(rod, source, v)
