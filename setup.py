@@ -30,6 +30,7 @@ import time
 from pathlib import Path
 
 from setuptools import setup
+from setuptools.command.bdist_wheel import bdist_wheel
 from setuptools.command.build_py import build_py
 
 ROOT = Path(__file__).resolve().parent
@@ -131,4 +132,20 @@ class build_py_with_kernels(build_py):
         compile_kernels(package / "kernels" / "compiled")
 
 
-setup(cmdclass={"build_py": build_py_with_kernels})
+class bdist_wheel_tagged(bdist_wheel):
+    """A wheel tagged for what it carries: with compiled kernels (numba cache files for one
+    CPython version and one architecture) the interpreter, ABI and platform of the build
+    (``cp311-cp311-linux_x86_64``), without them ``py3-none-any``. ``--plat-name`` still
+    sets the platform (``manylinux_2_28_x86_64`` for an index: docs/getting-started.md)."""
+
+    def run(self) -> None:
+        if not self.skip_build:
+            self.run_command("build")  # build_py compiles (or copies) the kernels, or not
+        build_lib = Path(self.get_finalized_command("build_py").build_lib)
+        self.root_is_pure = not (
+            build_lib / "pencore" / "kernels" / "compiled" / "BUILD.json"
+        ).is_file()
+        super().run()
+
+
+setup(cmdclass={"build_py": build_py_with_kernels, "bdist_wheel": bdist_wheel_tagged})
