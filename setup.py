@@ -142,9 +142,10 @@ class bdist_wheel_tagged(bdist_wheel):
         if not self.skip_build:
             self.run_command("build")  # build_py compiles (or copies) the kernels, or not
         build_lib = Path(self.get_finalized_command("build_py").build_lib)
-        self.root_is_pure = not (
-            build_lib / "pencore" / "kernels" / "compiled" / "BUILD.json"
-        ).is_file()
+        kernels = (build_lib / "pencore" / "kernels" / "compiled" / "BUILD.json").is_file()
+        self.root_is_pure = not kernels
+        if kernels:  # the install step then puts the package in platlib, at the wheel's root
+            self.distribution.has_ext_modules = lambda: True
         super().run()
 
 
