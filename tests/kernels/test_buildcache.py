@@ -7,6 +7,7 @@ way each build went)."""
 from __future__ import annotations
 
 import json
+import os
 import pickle
 from pathlib import Path
 
@@ -220,3 +221,26 @@ def test_the_build_step_says_what_it_does(tmp_path):
     assert said == [
         f"pencore build: numba kernels copied from the build cache {root / buildcache.entry_name(RECORD)} (no compile)"  # noqa: E501
     ]
+
+
+def test_the_cache_keeps_the_entries_used_last(tmp_path):
+    records = [{**RECORD, "kernel_hash": f"{i:02d}" * 32} for i in range(buildcache.KEEP + 2)]
+    for i, record in enumerate(records[: buildcache.KEEP]):
+        build(tmp_path, record=record)
+        os.utime(entry_of(tmp_path, record), (1000 + i, 1000 + i))  # stored in this order
+    assert build(tmp_path, record=records[0])[0]["build"] == "copied"  # used again: last
+    for record in records[buildcache.KEEP :]:
+        build(tmp_path, record=record)
+    kept = {p.name for p in (tmp_path / "cache").iterdir()}
+    expected = [records[0], *records[3 : buildcache.KEEP], *records[buildcache.KEEP :]]
+    assert kept == {buildcache.entry_name(r) for r in expected}
+
+
+def test_a_stopped_build_partial_folder_is_deleted_a_running_one_kept(tmp_path):
+    root = tmp_path / "cache"
+    old, young = root / "x.partial-1-aa", root / "y.partial-2-bb"
+    old.mkdir(parents=True)
+    young.mkdir()
+    os.utime(old, (1, 1))
+    assert buildcache.prune(root) == [old]
+    assert young.is_dir()

@@ -24,7 +24,9 @@ asked for (stamp, numba, Python, target), every file of its ``MANIFEST.json`` is
 with the SHA-256 recorded when it was stored (a truncated, emptied or garbage file fails),
 and every numba index file starts with this numba's version. An entry that fails is
 deleted (it could only fail again) and the kernels are compiled, as without a cache. A
-cache that cannot be written (a read-only home) only costs the copy for next time.
+cache that cannot be written (a read-only home) only costs the copy for next time. The
+cache keeps the :data:`KEEP` entries used last (about 7 MB each) and the partial folders
+of builds that are still running (younger than :data:`PARTIAL_AGE_S`).
 
 This module uses the standard library only: ``setup.py`` loads it by its path, before
 numba or the package can be imported.
@@ -38,6 +40,7 @@ import os
 import pickle
 import shutil
 import sys
+import time
 import uuid
 from collections.abc import Callable
 from pathlib import Path
@@ -45,11 +48,14 @@ from pathlib import Path
 __all__ = [
     "CACHE_ENV",
     "FOLDERS",
+    "KEEP",
     "KEY_FIELDS",
+    "PARTIAL_AGE_S",
     "cache_root",
     "entry_name",
     "find_entry",
     "provide_kernels",
+    "prune",
     "store_entry",
     "verify_entry",
 ]
@@ -62,6 +68,12 @@ KEY_FIELDS = ("kernel_hash", "numba", "python", "target")
 
 #: The compiled folders of a kernel build (``pencore.kernels.cache.COMPILED_FOLDERS``).
 FOLDERS = ("kernels", "integrators")
+
+#: How many entries the cache keeps (the ones used last).
+KEEP = 4
+
+#: A partial folder older than this (seconds) is of a build that was stopped: deleted.
+PARTIAL_AGE_S = 3600.0
 
 #: The record of the build beside the kernels, and the manifest of a cache entry.
 BUILD_FILE = "BUILD.json"
@@ -169,6 +181,10 @@ def find_entry(root: Path, record: dict[str, str]) -> tuple[Path | None, str]:
         return None, f"no entry {entry.name} in {root}"
     why = verify_entry(entry, record)
     if why is None:
+        try:
+            os.utime(entry)  # used now: the last to be pruned
+        except OSError:
+            pass
         return entry, ""
     shutil.rmtree(entry, ignore_errors=True)
     return None, f"entry {entry} refused and deleted: {why}"
@@ -206,6 +222,27 @@ def store_entry(root: Path, built: Path, record: dict[str, str]) -> Path:
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     return entry
+
+
+def prune(root: Path, keep: int = KEEP, now: float | None = None) -> list[Path]:
+    """Delete all but the ``keep`` entries of ``root`` used last (by their folder's time,
+    renewed on each use) and the partial folders older than :data:`PARTIAL_AGE_S`;
+    returns what was deleted."""
+    now = time.time() if now is None else now
+    entries, gone = [], []
+    for d in sorted(root.iterdir()) if root.is_dir() else []:
+        if not d.is_dir():
+            continue
+        if ".partial-" in d.name:
+            if now - d.stat().st_mtime > PARTIAL_AGE_S:
+                gone.append(d)
+        else:
+            entries.append(d)
+    entries.sort(key=lambda d: d.stat().st_mtime, reverse=True)
+    gone += entries[keep:]
+    for d in gone:
+        shutil.rmtree(d, ignore_errors=True)
+    return gone
 
 
 def provide_kernels(
@@ -252,6 +289,7 @@ def provide_kernels(
             try:
                 done["build_cache"] = str(store_entry(root, tmp, done))
                 say(f"pencore build: kept in the build cache {done['build_cache']}")
+                prune(root)
             except OSError as exc:
                 say(f"pencore build: the build cache {root} cannot be written ({exc}): not kept")
     (tmp / BUILD_FILE).write_text(json.dumps(done, indent=1) + "\n")
