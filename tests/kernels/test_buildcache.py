@@ -244,3 +244,34 @@ def test_a_stopped_build_partial_folder_is_deleted_a_running_one_kept(tmp_path):
     os.utime(old, (1, 1))
     assert buildcache.prune(root) == [old]
     assert young.is_dir()
+
+
+def test_a_copy_that_differs_from_the_manifest_is_compiled_instead(tmp_path, monkeypatch):
+    """An entry changed while it is copied (another build pruning the cache, a full
+    disk): the copies are checked against the manifest, and the build compiles."""
+    build(tmp_path)
+    real_copytree = buildcache.shutil.copytree
+
+    def copy_then_damage(src, dst, **kw):
+        real_copytree(src, dst, **kw)
+        truncate(next(Path(dst).glob("*.nbc")))
+
+    monkeypatch.setattr(buildcache.shutil, "copytree", copy_then_damage)
+    done, c = build(tmp_path)
+    assert (c.calls, done["build"]) == (1, "compiled")
+
+
+def test_the_module_uses_the_standard_library_only():
+    """setup.py loads it by its path in the build environment, before numba or pencore
+    can be imported: every import is of the standard library."""
+    import ast
+    import sys
+
+    tree = ast.parse(Path(buildcache.__file__).read_text())
+    names = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            names |= {a.name.split(".")[0] for a in node.names}
+        elif isinstance(node, ast.ImportFrom):
+            names.add((node.module or "").split(".")[0])
+    assert names and names <= set(sys.stdlib_module_names) | {"__future__"}

@@ -245,6 +245,22 @@ def prune(root: Path, keep: int = KEEP, now: float | None = None) -> list[Path]:
     return gone
 
 
+def _copy_entry(entry: Path, dest: Path) -> str:
+    """Copy the kernels of a verified entry into ``dest`` and check the copies against its
+    manifest; returns why that failed ("" when done): an entry deleted or changed while
+    it was copied (another build pruning the cache), a full disk."""
+    try:
+        manifest = json.loads((entry / MANIFEST_FILE).read_text())
+        dest.mkdir(parents=True)
+        for d in FOLDERS:
+            if (entry / d).is_dir():
+                shutil.copytree(entry / d, dest / d)
+        copied = {p.relative_to(dest).as_posix(): _sha256(p) for p in _kernel_files(dest)}
+    except (OSError, ValueError) as exc:
+        return f"copy from {entry} failed ({type(exc).__name__})"
+    return "" if copied == manifest else f"copy from {entry} differs from its manifest"
+
+
 def provide_kernels(
     out: Path,
     record: dict[str, str],
@@ -267,11 +283,12 @@ def provide_kernels(
     shutil.rmtree(tmp, ignore_errors=True)
     entry, why = (None, "disabled") if root is None else find_entry(root, record)
     if entry is not None:
+        why = _copy_entry(entry, tmp)
+        if why:
+            shutil.rmtree(tmp, ignore_errors=True)
+            entry = None
+    if entry is not None:
         say(f"pencore build: numba kernels copied from the build cache {entry} (no compile)")
-        tmp.mkdir(parents=True)
-        for d in FOLDERS:
-            if (entry / d).is_dir():
-                shutil.copytree(entry / d, tmp / d)
         done = {**record, "build": "copied", "compile_s": 0.0, "build_cache": str(entry)}
     else:
         say(
