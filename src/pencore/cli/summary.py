@@ -19,6 +19,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from pencore.cli.options import add_window_options, numerics_option
+
 __all__ = [
     "FORMATS",
     "NOT_FOUND",
@@ -28,6 +30,13 @@ __all__ = [
     "Progress",
     "check_plot_output",
     "write_plot",
+    "check_table_output",
+    "write_table",
+    "dataset_csv",
+    "read_csv",
+    "EXIT_NOTE",
+    "add_search_outputs",
+    "search_fields",
 ]
 
 #: The ``--format`` choices.
@@ -37,6 +46,14 @@ FORMATS = ("text", "json", "csv")
 #: change between the ends of the range, or the search did not converge); the summary
 #: is still printed and files still written.
 NOT_FOUND = 3
+
+
+#: The exit statuses, for the help texts.
+EXIT_NOTE = (
+    f"Exit status: 0 threshold found, {NOT_FOUND} no threshold in the range (the verdict "
+    "is the same at both ends, or the bracket did not narrow to --tol; the summary and "
+    "files are still written), 2 bad input, 1 solver or write failure."
+)
 
 
 @dataclass(frozen=True)
@@ -72,9 +89,10 @@ class Field:
         """The text form of the value."""
         if self.text is not None:
             return self.text
+        units = "" if self.units == "1" else self.units
         if isinstance(self.value, float):
-            return f"{self.value:.6g} {self.units}".strip()
-        return f"{self.value} {self.units}".strip()
+            return f"{self.value:.6g} {units}".strip()
+        return f"{self.value} {units}".strip()
 
 
 def add_format_option(p: argparse.ArgumentParser) -> None:
@@ -164,12 +182,143 @@ def write_plot(fig: Any, path: Path) -> None:
     """Write ``fig`` to ``path`` atomically (a temporary file beside it, then a rename):
     a failed write leaves nothing; raises ``CommandFailure`` (status 1) naming the path."""
     from pencore.cli.options import CommandFailure
+    from pencore.errors import WriteError
+    from pencore.io.atomic import atomic_path
     from pencore.plotting.style import save_figure
 
-    tmp = path.with_name(f".{path.stem}.part{path.suffix}")
     try:
-        save_figure(fig, tmp)
-        os.replace(tmp, path)
-    except OSError as exc:
-        tmp.unlink(missing_ok=True)
-        raise CommandFailure(f"cannot write plot file {str(path)!r}: {exc.strerror}", 1) from None
+        with atomic_path(path) as tmp:
+            save_figure(fig, tmp, fmt=path.suffix[1:].lower())
+    except WriteError as exc:
+        raise CommandFailure(str(exc), 1) from None
+
+
+#: Table formats ``--out`` writes (from the file's suffix).
+TABLE_SUFFIXES = (".nc", ".csv")
+
+
+def check_table_output(path: str) -> Path:
+    """Check an ``--out`` path of a search or sweep before any computation: ``.nc`` or
+    ``.csv`` and an existing directory; raises ``CommandFailure`` (status 2)."""
+    from pencore.cli.options import CommandFailure, check_output
+
+    p = Path(path)
+    if p.suffix.lower() == ".nc":
+        return check_output(path)
+    if p.suffix.lower() != ".csv":
+        raise CommandFailure(
+            f"output file {path!r} must end in one of {', '.join(TABLE_SUFFIXES)}", 2
+        )
+    parent = p.parent if str(p.parent) else Path(".")
+    if not parent.is_dir():
+        raise CommandFailure(f"output file {path!r}: directory {str(parent)!r} does not exist", 2)
+    if p.is_dir():
+        raise CommandFailure(f"output file {path!r} is a directory", 2)
+    return p
+
+
+def dataset_csv(ds: Any) -> str:
+    """A Dataset as CSV text: ``# key: value`` lines for the attributes and the scalars
+    (with their units), then one row per point of the data variables on the Dataset's
+    dimensions, each column headed ``name [units]``. :func:`read_csv` reads it back."""
+
+    lines = [f"# {k}: {one_line_attr(v)}" for k, v in ds.attrs.items() if k != "inputs_json"]
+    scalars = [k for k in ds.data_vars if ds[k].ndim == 0]
+    for k in scalars:
+        lines.append(f"# {k} [{ds[k].attrs.get('units', '')}]: {ds[k].item()!r}")
+    table = ds.drop_vars(scalars)
+    frame = table.to_dataframe().reset_index()
+    frame.columns = [f"{c} [{table[c].attrs.get('units', '')}]" for c in frame.columns]
+    return "\n".join(lines) + "\n" + frame.to_csv(index=False, lineterminator="\n")
+
+
+def one_line_attr(v: Any) -> str:
+    """An attribute value on one line."""
+    return " ".join(str(v).split())
+
+
+def read_csv(path: str | os.PathLike[str]) -> Any:
+    """Read a CSV written by :func:`dataset_csv`: a :class:`pandas.DataFrame` whose
+    columns are the variable names, with ``frame.attrs["units"]`` mapping each to its
+    units."""
+    import pandas as pd
+
+    frame = pd.read_csv(path, comment="#")
+    units = {}
+    names = []
+    for c in frame.columns:
+        name, _, rest = c.partition(" [")
+        names.append(name)
+        units[name] = rest[:-1] if rest.endswith("]") else ""
+    frame.columns = names
+    frame.attrs["units"] = units
+    return frame
+
+
+def write_table(ds: Any, path: Path, args: argparse.Namespace, study: str) -> None:
+    """Write a search's or sweep's Dataset to ``path`` (``.nc``: netCDF with provenance;
+    ``.csv``: :func:`dataset_csv`), atomically; ``CommandFailure`` status 1 on failure."""
+    from pencore.cli.options import CommandFailure, cli_inputs
+    from pencore.errors import WriteError
+    from pencore.io.atomic import atomic_path
+    from pencore.io.netcdf import write_netcdf
+
+    try:
+        if path.suffix.lower() == ".nc":
+            write_netcdf(ds, path, config_slice={"cli": cli_inputs(args)}, study=study)
+        else:
+            text = dataset_csv(ds)
+            with atomic_path(path) as tmp:
+                Path(tmp).write_text(text, encoding="utf-8")
+    except WriteError as exc:
+        raise CommandFailure(str(exc), 1) from None
+
+
+def add_search_outputs(p: argparse.ArgumentParser) -> None:
+    """``--numerics``, ``--out``, ``--plot`` and ``--format`` of a search command."""
+    add_window_options(p)
+    p.add_argument(
+        "--numerics",
+        type=numerics_option,
+        action="append",
+        default=[],
+        metavar="KEY=VALUE",
+        help="numerical parameter override (repeatable), as for 'simulate'",
+    )
+    p.add_argument(
+        "--scan",
+        type=int,
+        default=5,
+        metavar="N",
+        help="coarse scan of N points before bisecting, to detect a verdict that is not "
+        "monotone (0: none; default: 5)",
+    )
+    p.add_argument(
+        "--out",
+        metavar="FILE.nc|FILE.csv",
+        default=None,
+        help="write every value tried and its verdict, and the result, as netCDF or CSV",
+    )
+    p.add_argument(
+        "--plot",
+        metavar="FILE.png",
+        default=None,
+        help="draw the search (values tried, verdicts, final bracket) to this image file",
+    )
+    add_format_option(p)
+
+
+def search_fields(r: Any, quantity: str, units: str, text_units: str) -> list[Field]:
+    """The summary of a threshold search."""
+    value = r.value if math.isfinite(r.value) else math.nan
+    shown = f"{value:.6g} {text_units}" if math.isfinite(value) else "not found in the range"
+    return [
+        Field(quantity, quantity, value, units, text=shown),
+        Field(f"{quantity}_lo", "bracket low", float(r.lo), units, in_text=False),
+        Field(f"{quantity}_hi", "bracket high", float(r.hi), units, in_text=False),
+        Field("bracket", "bracket", None,
+              text=f"[{r.lo:.6g}, {r.hi:.6g}] {text_units}", in_data=False),
+        Field("runs", "runs", int(r.n_evals), "1", text=str(r.n_evals)),
+        Field("status", "status", r.status, text=f"{r.status} ({r.message})"),
+        Field("message", "message", r.message, in_text=False),
+    ]  # fmt: skip
