@@ -20,8 +20,10 @@ def test_points_are_the_evaluations():
     assert ax.get_ylabel() == "vcr tried (m/s)"
     assert ax.get_xlabel() == "Evaluation"
     # the bracket is shaded between lo and hi
-    span = ax.patches[0].get_path().vertices[:, 1]
-    assert np.isclose(span.min(), r.lo) and np.isclose(span.max(), r.hi)
+    (span,) = ax.patches
+    ys = span.get_patch_transform().transform(span.get_path().vertices)[:, 1]
+    assert np.isclose(ys.min(), r.lo) and np.isclose(ys.max(), r.hi)
+    assert span.get_label() == f"final bracket [{r.lo:.4g}, {r.hi:.4g}]"
 
 
 def test_not_found_says_so():
