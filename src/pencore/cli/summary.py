@@ -220,7 +220,8 @@ def check_table_output(path: str) -> Path:
 def dataset_csv(ds: Any) -> str:
     """A Dataset as CSV text: ``# key: value`` lines for the attributes and the scalars
     (with their units), then one row per point of the data variables on the Dataset's
-    dimensions, each column headed ``name [units]``. :func:`read_csv` reads it back."""
+    dimensions, each column headed ``name [units]``, numbers to 17 significant digits
+    (they read back to the bit). :func:`read_csv` reads it back."""
 
     lines = [f"# {k}: {one_line_attr(v)}" for k, v in ds.attrs.items() if k != "inputs_json"]
     scalars = [k for k in ds.data_vars if ds[k].ndim == 0]
@@ -229,7 +230,11 @@ def dataset_csv(ds: Any) -> str:
     table = ds.drop_vars(scalars)
     frame = table.to_dataframe().reset_index()
     frame.columns = [f"{c} [{table[c].attrs.get('units', '')}]" for c in frame.columns]
-    return "\n".join(lines) + "\n" + frame.to_csv(index=False, lineterminator="\n")
+    return (
+        "\n".join(lines)
+        + "\n"
+        + frame.to_csv(index=False, lineterminator="\n", float_format="%.17g")
+    )
 
 
 def one_line_attr(v: Any) -> str:
@@ -243,7 +248,7 @@ def read_csv(path: str | os.PathLike[str]) -> Any:
     units."""
     import pandas as pd
 
-    frame = pd.read_csv(path, comment="#")
+    frame = pd.read_csv(path, comment="#", float_precision="round_trip")
     units = {}
     names = []
     for c in frame.columns:
