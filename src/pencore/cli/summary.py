@@ -56,6 +56,10 @@ EXIT_NOTE = (
 )
 
 
+#: Units as the text form shows them.
+_READABLE = {"1": "", "m s-1": "m/s", "m s-2": "m/s^2", "rad s-1": "rad/s", "degree": "deg"}
+
+
 @dataclass(frozen=True)
 class Field:
     """One line of a summary.
@@ -89,7 +93,7 @@ class Field:
         """The text form of the value."""
         if self.text is not None:
             return self.text
-        units = "" if self.units == "1" else self.units
+        units = _READABLE.get(self.units, self.units)
         if isinstance(self.value, float):
             return f"{self.value:.6g} {units}".strip()
         return f"{self.value} {units}".strip()

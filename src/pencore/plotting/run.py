@@ -12,12 +12,12 @@ from __future__ import annotations
 
 import os
 
+import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
 from pencore.errors import InputError
 from pencore.plotting.style import _c, _pname, new_figure, save_figure, styled
-from pencore.run.dataset import STANDARD_GRAVITY
 
 __all__ = ["plot_run", "AGAINST"]
 
@@ -99,7 +99,11 @@ def plot_run(
     ax.set_ylabel("Deceleration (g)")
     if "deceleration_g" in ds:
         ax.plot(x, ds.deceleration_g.values, color=_c(3))
-        g0 = STANDARD_GRAVITY
+        # the Dataset's own g0 (m/s^2 per g), from its largest deceleration
+        i = int(np.argmax(np.abs(ds.deceleration_g.values)))
+        g0 = float(ds.deceleration.values[i] / ds.deceleration_g.values[i])
+        if not np.isfinite(g0):  # no contact load at all
+            g0 = 9.80665
         right = ax.secondary_yaxis("right", functions=(lambda g: g * g0, lambda a: a / g0))
         right.set_ylabel("Deceleration (m/s²)")
     else:
