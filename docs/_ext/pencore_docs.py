@@ -623,7 +623,7 @@ def figures_page(target: Path = GENERATED) -> str:
         png = out / f"{kind}.png"
         save_figure(fig, png, dpi=90)
         lines += [
-            f"### {label}",
+            f"## {label}",
             "",
             f"![pencore's {label}, drawn from results/archive/{path}](../_generated/figures/"
             f"{kind}.png)",

@@ -247,7 +247,7 @@ def one_line_attr(v: Any) -> str:
 
 
 def read_csv(path: str | os.PathLike[str]) -> Any:
-    """Read a CSV written by :func:`dataset_csv`: a :class:`pandas.DataFrame` whose
+    """Read a CSV written by :func:`dataset_csv`: a ``pandas.DataFrame`` whose
     columns are the variable names, with ``frame.attrs["units"]`` mapping each to its
     units."""
     import pandas as pd

@@ -56,7 +56,7 @@ def plot_run(
     ------
     InputError
         ``ds`` is not a trajectory (a study's dataset) or ``against`` is not one of
-        :data:`AGAINST`.
+        :data:`~pencore.plotting.run.AGAINST`.
 
     Examples
     --------

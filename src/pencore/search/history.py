@@ -67,12 +67,7 @@ def search_dataset(
             "verdict": (
                 "evaluation",
                 verdicts,
-                {
-                    "units": "1",
-                    "long_name": "verdict of the run (1: at or above the threshold)",
-                    "flag_values": np.array([0, 1], dtype=np.int8),
-                    "flag_meanings": "below above",
-                },
+                {"units": "1", "long_name": "verdict of the run (1: at or above the threshold)"},
             ),
             name: scalar(result.value, f"{long_name} (midpoint of the final bracket)"),
             f"{name}_lo": scalar(result.lo, f"{long_name}: largest value below"),
