@@ -11,6 +11,7 @@ from pencore.cli.options import (
     obliquity,
     resolve,
     velocity,
+    with_mass,
     with_windows,
 )
 from pencore.cli.summary import (
@@ -85,7 +86,7 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(f"--lo {args.lo:g} must be below --hi {args.hi:g} (m/s)")
     out = check_table_output(args.out) if args.out is not None else None
     plot = check_plot_output(args.plot) if args.plot is not None else None
-    projectile = resolve("projectile", args.projectile, get_projectile)
+    projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
     target = with_windows(resolve("target", args.target, get_target), args)
     r = ballistic_limit(
         projectile,

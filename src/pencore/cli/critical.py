@@ -20,6 +20,7 @@ from pencore.cli.options import (
     obliquity,
     resolve,
     velocity,
+    with_mass,
     with_windows,
 )
 from pencore.cli.summary import (
@@ -208,7 +209,7 @@ def run_search(args: argparse.Namespace) -> int:
         raise InputError(f"--scan must be 0 (none) or at least 2 points, got {args.scan}")
     out = check_table_output(args.out) if args.out is not None else None
     plot = check_plot_output(args.plot) if args.plot is not None else None
-    projectile = resolve("projectile", args.projectile, get_projectile)
+    projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
     target = with_windows(resolve("target", args.target, get_target), args)
     num = resolve_numerics(dict(args.numerics))
     scan = args.scan or None

@@ -17,7 +17,7 @@ import os
 import sys
 from collections.abc import Callable, Sequence
 
-from pencore.cli import ballistic, critical, library, simulate, sweeps
+from pencore.cli import ballistic, critical, law, library, simulate, sweeps
 from pencore.cli.options import INTERRUPTED, PROG, CommandFailure, Parser, one_line
 from pencore.errors import InputError, SolverError
 from pencore.io.atomic import describe_os_error
@@ -37,6 +37,7 @@ COMMANDS: dict[str, Callable[[argparse.Namespace], int]] = {
     "ballistic-table": sweeps.run_sweep,
     "fit-table3": library.fit_table3,
     "list": library.list_library,
+    "law": law.run,
 }
 
 
@@ -46,7 +47,8 @@ def build_parser() -> argparse.ArgumentParser:
     Returns
     -------
     argparse.ArgumentParser
-        Parser with the ``simulate``, ``fit-table3`` and ``list`` subcommands.
+        Parser with the ``simulate``, ``ballistic-limit``, ``fit-table3``, ``list`` and
+        ``law`` subcommands.
     """
     parser = Parser(
         prog=PROG,
@@ -69,6 +71,7 @@ def build_parser() -> argparse.ArgumentParser:
     critical.add_parsers(sub)
     sweeps.add_parsers(sub)
     library.add_parsers(sub)
+    law.add_parser(sub)
     return parser
 
 

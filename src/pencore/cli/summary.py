@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from pencore.cli.options import add_window_options, numerics_option
+from pencore.cli.options import add_mass_options, add_window_options, numerics_option
 
 __all__ = [
     "FORMATS",
@@ -284,7 +284,9 @@ def write_table(ds: Any, path: Path, args: argparse.Namespace, study: str) -> No
 
 
 def add_search_outputs(p: argparse.ArgumentParser) -> None:
-    """``--numerics``, ``--out``, ``--plot`` and ``--format`` of a search command."""
+    """The mass, window, ``--numerics``, ``--scan``, ``--out``, ``--plot`` and
+    ``--format`` options of a search command."""
+    add_mass_options(p)
     add_window_options(p)
     p.add_argument(
         "--numerics",

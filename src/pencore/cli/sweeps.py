@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from pencore.cli.options import (
+    add_mass_options,
     add_window_options,
     exit_at_once_on_interrupt,
     number_type,
@@ -23,6 +24,7 @@ from pencore.cli.options import (
     obliquity,
     resolve,
     velocity,
+    with_mass,
     with_windows,
 )
 from pencore.cli.summary import (
@@ -51,6 +53,7 @@ def _speeds(p: argparse.ArgumentParser) -> None:
 
 
 def _outputs(p: argparse.ArgumentParser, plot: bool) -> None:
+    add_mass_options(p)
     add_window_options(p)
     p.add_argument(
         "--numerics",
@@ -199,7 +202,7 @@ def run_sweep(args: argparse.Namespace) -> int:
     out = check_table_output(args.out) if args.out is not None else None
     plot_path = getattr(args, "plot", None)
     plot = check_plot_output(plot_path) if plot_path is not None else None
-    projectile = resolve("projectile", args.projectile, get_projectile)
+    projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
     num = resolve_numerics(dict(args.numerics))
     status = 0
     fields: list[Field]
