@@ -24,6 +24,7 @@ ENTRY_POINTS = [
     "ballistic_limit",
     "residual_velocity",
     "read_netcdf",
+    "plot_run",
     "final_deviation",
     "turning_angle",
     "inflection_points_ds",

@@ -684,6 +684,66 @@ def config_reference_page() -> str:
     return config_reference(REPO).split("\n", 1)[1].strip()
 
 
+#: The reproduced figures the results pages show, drawn from the archive (no run):
+#: (figure kind of :data:`pencore.plotting.PLOTS`, archived file, its study, the paper's
+#: figure, the text that finds its rows in the comparison table).
+FIGURES = (
+    ("table2", "validation/table2.nc", "validation/table2", "Table 2", "Table 2 test"),
+    ("fig5", "validation/fig5.nc", "validation/fig5", "Fig. 5", "Fig. 5"),
+    ("fig7", "fig7/trajectories.nc", "section4/fig7", "Fig. 7", "Fig. 7"),
+    ("fig8", "fig8/vcr.nc", "section4/fig8", "Fig. 8", "Fig. 8"),
+    ("fig9", "fig9/turning_angle.nc", "section4/fig9", "Fig. 9", "Fig. 9"),
+    ("fig11", "fig11/trajectories.nc", "section4/fig11", "Fig. 11", "Fig. 11"),
+    ("fig12", "fig12/vcr_yaw.nc", "section4/fig12", "Fig. 12", "Fig. 12"),
+    ("fig13", "fig13/trajectories.nc", "section4/fig13", "Fig. 13", "Fig. 13"),
+    ("fig15", "fig15/vci.nc", "section4/fig15", "Fig. 15", "Fig. 15"),
+    ("fig16", "fig16/trajectories.nc", "section4/fig16", "Fig. 16", "Fig. 16"),
+    ("start_height", "fig16/start_height.nc", "section4/start_height", "Figs 16-17 (start "
+     "height)", "Start-height"),
+    ("fig18", "fig18/omega_c.nc", "section4/fig18", "Fig. 18", "omega_c of"),
+)  # fmt: skip
+
+
+def figures_page(target: Path = GENERATED) -> str:
+    """The reproduced figures, drawn from ``results/archive`` into
+    ``docs/_generated/figures/`` (PNG), each with the paper's numbers for it beside
+    pencore's (the archived comparison's rows that name it)."""
+    from pencore.plotting import PLOTS
+    from pencore.plotting.style import save_figure
+
+    table = comparison()
+    out = target / "figures"
+    out.mkdir(parents=True, exist_ok=True)
+    lines = []
+    for kind, path, study, label, key in FIGURES:
+        with open_archive(ARCHIVE / path, study) as ds:
+            fig = PLOTS[kind](ds)
+        png = out / f"{kind}.png"
+        save_figure(fig, png, dpi=90)
+        lines += [
+            f"## {label}",
+            "",
+            f"![pencore's {label}, drawn from results/archive/{path}](../_generated/figures/"
+            f"{kind}.png)",
+            "",
+            f"*Drawn from `results/archive/{path}` (study `{study}`).*",
+            "",
+        ]
+        rows = table[table["quantity"].str.contains(key, regex=False)]
+        if len(rows):
+            lines += ["| quantity | paper | pencore | units |", "|---|---|---|---|"]
+            for _, row in rows.iterrows():
+                cells = [
+                    row["quantity"],
+                    _fmt(row["paper_value"], 5),
+                    _fmt(row["pencore_value"], 6),
+                    UNIT_TEXT.get(row["units"], row["units"]),
+                ]
+                lines.append("| " + " | ".join(c.replace("|", "/") for c in cells) + " |")
+            lines.append("")
+    return "\n".join(lines).rstrip()
+
+
 #: every generated page: file name in docs/_generated -> the function that writes it
 def _cff_names(authors: list[dict[str, str]]) -> list[str]:
     return [
@@ -757,6 +817,7 @@ PAGES: dict[str, Callable[[], str]] = {
     "obliquity_ratio.md": obliquity_ratio_table,
     "ballistic_map.md": ballistic_map_table,
     "config_reference.md": config_reference_page,
+    "figures.md": figures_page,
 }
 
 #: the README's generated blocks: marker name -> the function that writes it
