@@ -40,6 +40,7 @@ _EXPORTS = {
     "recht_ipson": "search.perforation",
     "fit_recht_ipson": "search.perforation",
     # reading and writing results
+    "plot_run": "plotting.run",
     "read_netcdf": "io.netcdf",
     "write_netcdf": "io.netcdf",
     # analysis of a trajectory
@@ -64,6 +65,9 @@ _EXPORTS = {
     "Medium": "inputs.target",
     "Layer": "inputs.target",
     "Target": "inputs.target",
+    "concrete_law": "inputs.laws",
+    "metal_law": "inputs.laws",
+    "soil_law": "inputs.laws",
     "Numerics": "inputs.numerics",
     "ShankModel": "inputs.models",
     "Emulation": "inputs.models",
@@ -112,6 +116,7 @@ if TYPE_CHECKING:  # for type checkers and editors: the names as if imported eag
         WriteError,
     )
     from pencore.inputs.geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
+    from pencore.inputs.laws import concrete_law, metal_law, soil_law
     from pencore.inputs.library import (
         get_projectile,
         get_target,
@@ -123,6 +128,7 @@ if TYPE_CHECKING:  # for type checkers and editors: the names as if imported eag
     from pencore.inputs.numerics import Numerics
     from pencore.inputs.target import Layer, Medium, Target
     from pencore.io.netcdf import read_netcdf, write_netcdf
+    from pencore.plotting.run import plot_run
     from pencore.run.impact import prepare, simulate
     from pencore.search.critical import omega_c, vci, vcr
     from pencore.search.perforation import (

@@ -16,9 +16,9 @@ WriteError         a file could not be written (nothing was left behind)
 ResultError        a result file cannot be read (corrupt or truncated)
 =================  ==========================================================
 
-One warning class, :class:`PlausibilityWarning`, marks a value that is valid but far
-outside what the quantity usually is (the likely slip of unit it points to is named);
-it never stops a run.
+One warning class, :class:`PlausibilityWarning`, marks a value that is allowed but
+implausible: where a law is extrapolated, or of a size that suggests a slip of unit
+(the likely slip is named); it never stops a run.
 """
 
 from __future__ import annotations
@@ -180,16 +180,17 @@ class ResultError(RuntimeError):
 
 
 class PlausibilityWarning(UserWarning):
-    """A valid value far outside what its quantity usually is: a likely slip of unit.
+    """A value that is allowed but implausible; the run goes on.
 
     Issued (never raised) by every input door (the Python API, YAML files, the command
     line, the workflow configuration) for a value within its valid range but outside
     its plausible range (:data:`pencore.inputs.limits.PLAUSIBLE`, listed on the docs'
     errors page): a speed of 1.4 m/s (km/s meant?), a diameter of 9.5 m (cm meant?), a
-    density of 7.85 kg/m^3 (g/cm^3 meant?). The message is one line naming the value,
-    the plausible range and the likely slip; the command line prints it as
-    ``pencore: warning: ...``. The run goes on; silence it with the usual filters
-    (``warnings.simplefilter("ignore", pencore.PlausibilityWarning)``, ``python -W``).
+    density of 7.85 kg/m^3 (g/cm^3 meant?); and by a law used outside the range it was
+    built on (extrapolated). The message is one line naming the value and the range (and
+    the likely slip); the command line prints it as ``pencore: warning: ...``. Silence it
+    with the usual filters (``warnings.simplefilter("ignore", pencore.PlausibilityWarning)``,
+    ``python -W``).
 
     Examples
     --------
@@ -200,4 +201,9 @@ class PlausibilityWarning(UserWarning):
     ...     p = pencore.Projectile("x", 9.5, pencore.OgiveNose(3.0, 7850.0))
     >>> print(caught[0].category.__name__, str(caught[0].message).split(" is ")[0])
     PlausibilityWarning diameter 9.5 m
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     _ = pencore.concrete_law(fc=150e6, density=2500.0)
+    >>> issubclass(caught[0].category, pencore.PlausibilityWarning)
+    True
     """

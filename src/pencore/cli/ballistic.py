@@ -4,18 +4,28 @@ finite target."""
 from __future__ import annotations
 
 import argparse
-import math
 
 from pencore.cli.options import (
-    add_window_options,
     exit_at_once_on_interrupt,
     number_type,
     numerics_given,
-    numerics_option,
     obliquity,
     resolve,
     velocity,
+    with_mass,
     with_windows,
+)
+from pencore.cli.summary import (
+    EXIT_NOTE,
+    NOT_FOUND,
+    Field,
+    add_search_outputs,
+    check_plot_output,
+    check_table_output,
+    print_summary,
+    search_fields,
+    write_plot,
+    write_table,
 )
 from pencore.inputs.numerics import resolve_numerics
 
@@ -30,7 +40,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         description="Search the ballistic limit v_bl (m/s): the lowest impact speed at "
         "which the projectile perforates a finite target (a target YAML file whose last "
         "layer has a thickness in m). Prints v_bl, its bracket (m/s), the number of runs "
-        "and the status of the search (pencore.search.perforation.ballistic_limit).",
+        "and the status of the search (pencore.search.perforation.ballistic_limit). " + EXIT_NOTE,
     )
     p.add_argument("--projectile", required=True, metavar="NAME|FILE", help="projectile")
     p.add_argument(
@@ -62,27 +72,22 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         metavar="M_S",
         help="width of the final bracket in m/s (default: 5)",
     )
-    add_window_options(p)
-    p.add_argument(
-        "--numerics",
-        type=numerics_option,
-        action="append",
-        default=[],
-        metavar="KEY=VALUE",
-        help="numerical parameter override (repeatable), as for 'simulate'",
-    )
+    add_search_outputs(p)
 
 
 def run(args: argparse.Namespace) -> int:
     """Run the search and print the result; errors propagate to :func:`pencore.cli.main`."""
     from pencore.errors import InputError
     from pencore.inputs.library import get_projectile, get_target
+    from pencore.search.history import search_dataset
     from pencore.search.perforation import ballistic_limit
 
     exit_at_once_on_interrupt()
     if not args.lo < args.hi:
         raise InputError(f"--lo {args.lo:g} must be below --hi {args.hi:g} (m/s)")
-    projectile = resolve("projectile", args.projectile, get_projectile)
+    out = check_table_output(args.out) if args.out is not None else None
+    plot = check_plot_output(args.plot) if args.plot is not None else None
+    projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
     target = with_windows(resolve("target", args.target, get_target), args)
     r = ballistic_limit(
         projectile,
@@ -92,11 +97,30 @@ def run(args: argparse.Namespace) -> int:
         args.lo,
         args.hi,
         args.tol,
+        scan=args.scan or None,
         numerics=resolve_numerics(numerics_given(args.numerics)),
     )
-    value = f"{r.value:.6g} m/s" if math.isfinite(r.value) else "not found"
-    print(f"ballistic limit: {value}")
-    print(f"bracket:         [{r.lo:.6g}, {r.hi:.6g}] m/s")
-    print(f"runs:            {r.n_evals}")
-    print(f"status:          {r.status} ({r.message})")
-    return 0
+    ds = search_dataset(
+        r,
+        "v_bl",
+        "m s-1",
+        "ballistic limit (lowest speed that perforates)",
+        projectile=args.projectile,
+        target=args.target,
+        obliquity_deg=args.obliquity,
+        yaw_deg=args.yaw,
+    )
+    if out is not None:
+        write_table(ds, out, args, "cli/ballistic-limit")
+    if plot is not None:
+        from pencore.plotting.search import plot_search
+
+        write_plot(plot_search(ds), plot)
+    fields = search_fields(r, "v_bl", "m s-1", "m/s")
+    fields[0] = Field("v_bl", "ballistic limit", fields[0].value, "m s-1", text=fields[0].text)
+    if out is not None:
+        fields.append(Field("output", "output", str(out)))
+    if plot is not None:
+        fields.append(Field("plot", "plot", str(plot)))
+    print_summary(fields, args.format)
+    return 0 if r.converged else NOT_FOUND

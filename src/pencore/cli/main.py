@@ -17,7 +17,7 @@ import os
 import sys
 from collections.abc import Callable, Sequence
 
-from pencore.cli import ballistic, library, simulate
+from pencore.cli import ballistic, critical, law, library, simulate, sweeps
 from pencore.cli.options import INTERRUPTED, PROG, CommandFailure, Parser, one_line
 from pencore.errors import InputError, SolverError
 from pencore.inputs.limits import one_line_warnings
@@ -30,8 +30,15 @@ __all__ = ["main", "build_parser"]
 COMMANDS: dict[str, Callable[[argparse.Namespace], int]] = {
     "simulate": simulate.run,
     "ballistic-limit": ballistic.run,
+    "vcr": critical.run_search,
+    "vci": critical.run_search,
+    "omega-c": critical.run_search,
+    "depth-curve": sweeps.run_sweep,
+    "residual-velocity": sweeps.run_sweep,
+    "ballistic-table": sweeps.run_sweep,
     "fit-table3": library.fit_table3,
     "list": library.list_library,
+    "law": law.run,
 }
 
 
@@ -41,7 +48,8 @@ def build_parser() -> argparse.ArgumentParser:
     Returns
     -------
     argparse.ArgumentParser
-        Parser with the ``simulate``, ``fit-table3`` and ``list`` subcommands.
+        Parser with the ``simulate``, ``ballistic-limit``, ``fit-table3``, ``list`` and
+        ``law`` subcommands.
     """
     parser = Parser(
         prog=PROG,
@@ -61,7 +69,10 @@ def build_parser() -> argparse.ArgumentParser:
 
     simulate.add_parser(sub)
     ballistic.add_parser(sub)
+    critical.add_parsers(sub)
+    sweeps.add_parsers(sub)
     library.add_parsers(sub)
+    law.add_parser(sub)
     return parser
 
 
@@ -76,8 +87,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     Returns
     -------
     int
-        Exit status: 0 success, 1 solver or write failure, 2 bad input, 130 interrupted,
-        141 output pipe closed early.
+        Exit status: 0 success, 1 solver or write failure, 2 bad input, 3 a search found
+        no threshold in its range (``vcr``, ``vci``, ``omega-c``, ``ballistic-limit``),
+        130 interrupted, 141 output pipe closed early.
     """
     with one_line_warnings(PROG):  # a PlausibilityWarning is one line; the run goes on
         return _main(argv)

@@ -6,10 +6,11 @@ from __future__ import annotations
 import argparse
 import math
 import os
-import time
+from typing import Any
 
 from pencore.cli.options import (
     CommandFailure,
+    add_mass_options,
     add_window_options,
     check_output,
     cli_inputs,
@@ -20,7 +21,15 @@ from pencore.cli.options import (
     obliquity,
     resolve,
     velocity,
+    with_mass,
     with_windows,
+)
+from pencore.cli.summary import (
+    Field,
+    add_format_option,
+    check_plot_output,
+    print_summary,
+    write_plot,
 )
 from pencore.inputs.numerics import resolve_numerics
 
@@ -36,12 +45,17 @@ simulate options (all SI, angles in degrees):
   --yaw DEG               velocity angle minus axis angle (deg)
   --omega RAD_S           initial angular velocity about +z (rad/s)
   --start X Y Z           initial nose-tip position (m)
+  --mass KG               measured projectile mass (outline distribution scaled)
+  --centre-of-mass M      measured tip-to-centre-of-mass distance Lc (m)
+  --inertia IA IT         measured axial, transverse inertia about the c.m. (kg m^2)
   --stop-at-reversal      end the run at the first trajectory reversal
   --crater-depth K        Forrestal's crater region (F = c z) over K calibers
   --free-surface-depth K  resistance ramp within K calibers of a free face
   --plastic-zone-ratio C  finite-sphere free-surface reduction (Hill), c/a > 1
   --numerics KEY=VALUE    numerical parameter override (repeatable), e.g. rtol=1e-6
-  --out FILE.nc           write the full trajectory as NetCDF
+  --out FILE.nc           write the full trajectory (and its loads) as NetCDF
+  --plot FILE.png         draw the run: path, deviation, speed, deceleration
+  --format text|json|csv  the summary's form (numbers in SI units)
 Run 'pencore simulate --help' for details; 'pencore list' for the named projectiles
 and targets.
 """
@@ -55,8 +69,9 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         description="Simulate one impact of a rigid projectile on a target and print a "
         "summary: penetration depth (m), nose-tip path length below the surface (m), "
         "outcome, reversal, final trajectory slope dy/dx, final deviation of the velocity "
-        "from the target normal (deg), run time (s) and number of steps. The target is "
-        "y <= 0 and the projectile moves towards +x and -y.",
+        "from the target normal (deg), which angle the yaw tilted, the peak axial "
+        "deceleration (m/s^2 and g) and peak axial and lateral forces (N), run time (s) and "
+        "number of steps. The target is y <= 0 and the projectile moves towards +x and -y.",
     )
     sim.add_argument(
         "--projectile",
@@ -93,8 +108,10 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         type=number_type("yaw"),
         default=0.0,
         metavar="DEG",
-        help="yaw in deg: velocity angle minus axis angle; |obliquity + yaw| "
-        "must stay below 90 deg (default: 0 deg)",
+        help="yaw in deg: velocity angle minus axis angle, so --yaw alone tilts the "
+        "VELOCITY and leaves the axis along the normal; the paper's normal impact with yaw "
+        "(Figs 13-15, and 'pencore vci') tilts the AXIS with the velocity normal: "
+        "--obliquity Y --yaw -Y. |obliquity + yaw| must stay below 90 deg (default: 0 deg)",
     )
     sim.add_argument(
         "--omega",
@@ -119,6 +136,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         help="end the run at the first reversal of the trajectory (dy/dx "
         "changes sign; outcome 'reversed')",
     )
+    add_mass_options(sim)
     add_window_options(sim)
     sim.add_argument(
         "--numerics",
@@ -135,15 +153,125 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         metavar="FILE.nc",
         default=None,
         help="write the trajectory (time in s, positions in m, velocities in "
-        "m/s, angles in deg, rates in rad/s) to this NetCDF file; its "
-        "directory must exist and be writable; written atomically",
+        "m/s, angles in deg, rates in rad/s, forces in N, decelerations in m/s^2 and g) "
+        "to this NetCDF file; its directory must exist and be writable; written atomically",
     )
+    sim.add_argument(
+        "--plot",
+        metavar="FILE.png",
+        default=None,
+        help="draw the run (path y(x), deviation, speed and deceleration against time) to "
+        "this image file (.png, .pdf or .svg); its directory must exist",
+    )
+    add_format_option(sim)
 
 
 def _fmt_slope(s: float) -> str:
     if not math.isfinite(s) or abs(s) > 1e6:
         return f"{s:.4g} (path essentially vertical)"
     return f"{s:.4g}"
+
+
+def yaw_reading(obliquity: float, yaw: float) -> str:
+    """Which angle ``--yaw`` tilted, in words, and how to get the other reading.
+
+    ``simulate``'s yaw is the velocity angle minus the axis angle (paper Fig. 10): with
+    ``--obliquity 0``, ``--yaw Y`` tilts the velocity and leaves the axis along the
+    normal. The paper's "normal impact with yaw" (Figs 13-15) and ``pencore vci`` tilt
+    the axis: ``--obliquity Y --yaw -Y`` (velocity along the normal)."""
+    if yaw == 0.0:
+        return "none (axis and velocity along the same line)"
+    text = (
+        f"axis at {obliquity:g} deg, velocity at {obliquity + yaw:g} deg from the normal "
+        "(--yaw tilts the velocity from the axis)"
+    )
+    if obliquity == 0.0:
+        text += (
+            f"; for the paper's normal impact with yaw (axis tilted, velocity normal) "
+            f"use --obliquity {yaw:g} --yaw {-yaw:g}"
+        )
+    return text
+
+
+def summary_fields(ds: Any, args: argparse.Namespace) -> list[Field]:
+    """The summary of one run (SI units): what ``simulate`` prints."""
+    a = ds.attrs
+    slope = float(ds["final_slope"])
+    dev = float(ds["final_deviation"])
+    data = {"in_text": False}
+    fields = [
+        Field(
+            "projectile",
+            "projectile",
+            str(a["projectile"]),
+            text=f"{a['projectile']} ({a['mass_kg']:.4g} kg, "
+            f"{a['length_m']:.4g} m long, Lc/L = {a['lc_over_l']:.3f})",
+        ),
+        Field("mass", "mass", float(a["mass_kg"]), "kg", **data),
+        Field("target", "target", str(a["target"])),
+        Field(
+            "impact",
+            "impact",
+            None,
+            text=f"{args.velocity:g} m/s, obliquity {args.obliquity:g} deg, "
+            f"yaw {args.yaw:g} deg, omega {args.omega:g} rad/s",
+            in_data=False,
+        ),
+        Field("impact_velocity", "impact velocity", float(args.velocity), "m s-1", **data),
+        Field("obliquity", "obliquity", float(args.obliquity), "degree", **data),
+        Field("yaw", "yaw", float(args.yaw), "degree", **data),
+        Field("omega", "omega", float(args.omega), "rad s-1", **data),
+        Field("yaw_reading", "yaw reading", yaw_reading(args.obliquity, args.yaw)),
+        Field("penetration_depth", "penetration depth", float(ds["penetration_depth"]), "m"),
+        Field("path_length", "tip path length below surface", float(ds["path_length"]), "m"),
+        Field("outcome", "outcome", str(a["outcome"])),
+        Field("reversed", "reversed", bool(a["reversed"]), text="yes" if a["reversed"] else "no"),
+        Field("final_slope", "final slope dy/dx", slope, "1", text=_fmt_slope(slope)),
+        Field("final_deviation", "final deviation from normal", dev, "degree",
+              text=f"{dev:.4g} deg"),
+    ]  # fmt: skip
+    if "peak_deceleration_m_s2" in a:
+        fields += [
+            Field(
+                "peak_deceleration",
+                "peak deceleration (axial)",
+                float(a["peak_deceleration_m_s2"]),
+                "m s-2",
+                text=f"{a['peak_deceleration_m_s2']:.4g} m/s^2 = "
+                f"{a['peak_deceleration_g']:.4g} g at t = "
+                f"{a['time_of_peak_deceleration_s']:.4g} s",
+            ),
+            Field("peak_deceleration_g", "peak deceleration in g",
+                  float(a["peak_deceleration_g"]), "1", **data),
+            Field("time_of_peak_deceleration", "time of peak deceleration",
+                  float(a["time_of_peak_deceleration_s"]), "s", **data),
+            Field("peak_axial_force", "peak axial force", float(a["peak_axial_force_N"]), "N",
+                  text=f"{a['peak_axial_force_N']:.4g} N"),
+            Field("peak_lateral_force", "peak lateral force",
+                  float(a["peak_lateral_force_N"]), "N",
+                  text=f"{a['peak_lateral_force_N']:.4g} N"),
+        ]  # fmt: skip
+    if a["outcome"] == "perforated":
+        fields += [
+            Field("residual_velocity", "residual velocity", float(a["residual_velocity"]),
+                  "m s-1"),
+            Field(
+                "exit_pitch_angle_of_attack",
+                "exit pitch / angle of attack",
+                None,
+                text=f"{a['exit_pitch_deg']:.4g} / {a['exit_angle_of_attack_deg']:.4g} deg",
+                in_data=False,
+            ),
+            Field("exit_pitch", "exit pitch", float(a["exit_pitch_deg"]), "degree", **data),
+            Field("exit_angle_of_attack", "exit angle of attack",
+                  float(a["exit_angle_of_attack_deg"]), "degree", **data),
+        ]  # fmt: skip
+    fields += [
+        Field("wall_time", "run time", float(a["wall_time_s"]), "s",
+              text=f"{a['wall_time_s']:.3g} s integration"),
+        Field("steps", "steps", int(a["n_steps"]), "1", text=str(a["n_steps"])),
+    ]  # fmt: skip
+    return fields
 
 
 def run(args: argparse.Namespace) -> int:
@@ -156,7 +284,7 @@ def run(args: argparse.Namespace) -> int:
     exit_at_once_on_interrupt()
     inputs = [args.projectile, args.target]
     out = check_output(args.out, inputs) if args.out is not None else None
-    projectile = resolve("projectile", args.projectile, get_projectile)
+    projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
     target = with_windows(resolve("target", args.target, get_target), args)
     numerics = resolve_numerics(numerics_given(args.numerics))
     if numerics.v_stop >= args.velocity:
@@ -166,7 +294,7 @@ def run(args: argparse.Namespace) -> int:
             f"{args.velocity:g} m/s: the run would stop before it starts (lower v_stop)",
             2,
         )
-    t0 = time.perf_counter()
+    plot = check_plot_output(args.plot) if args.plot is not None else None
     ds = simulate(
         projectile,
         target,
@@ -178,7 +306,6 @@ def run(args: argparse.Namespace) -> int:
         stop_at_reversal=args.stop_at_reversal,
         numerics=numerics,
     )
-    total = time.perf_counter() - t0
     if out is not None:
         try:
             write_netcdf(
@@ -190,42 +317,14 @@ def run(args: argparse.Namespace) -> int:
             )
         except WriteError as exc:  # one line naming the path and the cause; nothing left
             raise CommandFailure(str(exc), 1) from None
-    a = ds.attrs
-    rows = [
-        (
-            "projectile",
-            f"{a['projectile']} ({a['mass_kg']:.4g} kg, "
-            f"{a['length_m']:.4g} m long, Lc/L = {a['lc_over_l']:.3f})",
-        ),
-        ("target", str(a["target"])),
-        (
-            "impact",
-            f"{args.velocity:g} m/s, obliquity {args.obliquity:g} deg, "
-            f"yaw {args.yaw:g} deg, omega {args.omega:g} rad/s",
-        ),
-        ("penetration depth", f"{float(ds['penetration_depth']):.6g} m"),
-        ("tip path length below surface", f"{float(ds['path_length']):.6g} m"),
-        ("outcome", str(a["outcome"])),
-        ("reversed", "yes" if a["reversed"] else "no"),
-        ("final slope dy/dx", _fmt_slope(float(ds["final_slope"]))),
-        ("final deviation from normal", f"{float(ds['final_deviation']):.4g} deg"),
-        *(
-            [
-                ("residual velocity", f"{a['residual_velocity']:.6g} m/s"),
-                (
-                    "exit pitch / angle of attack",
-                    f"{a['exit_pitch_deg']:.4g} / {a['exit_angle_of_attack_deg']:.4g} deg",
-                ),
-            ]
-            if a["outcome"] == "perforated"
-            else []
-        ),
-        ("run time", f"{a['wall_time_s']:.3g} s integration, {total:.3g} s total"),
-        ("steps", str(a["n_steps"])),
-    ]
+    if plot is not None:
+        from pencore.plotting.run import plot_run
+
+        write_plot(plot_run(ds), plot)
+    fields = summary_fields(ds, args)
     if out is not None:
-        rows.append(("output", str(out)))
-    width = max(len(k) for k, _ in rows)
-    for k, v in rows:
-        print(f"{k + ':':<{width + 1}} {v}")
+        fields.append(Field("output", "output", str(out)))
+    if args.plot is not None:
+        fields.append(Field("plot", "plot", str(args.plot)))
+    print_summary(fields, args.format)
     return 0

@@ -1,8 +1,10 @@
 """Named projectiles and targets, YAML loading, and the Table-3 geometry fit.
 
-Provenance of every shipped number is recorded in its ``source`` string:
-``paper`` (Li & Flores-Johnson 2011), ``derived`` (how), or ``assumed`` (why; to be
-replaced when the published value is at hand).
+The named media and validation projectiles are data files read here
+(``inputs/data/media.yaml``, ``inputs/data/projectiles.yaml``; the paper's p1..p4 are
+built from ``inputs/data/table3_geometry.yaml``). Provenance of every shipped number is
+recorded in its ``source`` string: ``paper`` (Li & Flores-Johnson 2011), ``derived``
+(how), or ``assumed`` (why; to be replaced when the published value is at hand).
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ import numpy as np
 from pencore.errors import InputError
 from pencore.inputs.gate import brief, brief_path, read_yaml
 from pencore.inputs.geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
+from pencore.inputs.laws import medium_from_law
 from pencore.inputs.limits import check_keys, count, number
 from pencore.inputs.target import Layer, Medium, Target
 
@@ -39,46 +42,9 @@ __all__ = [
 ]
 
 
-# ---------------------------------------------------------------- media (paper Table 1)
-
-MEDIA: dict[str, Medium] = {
-    "soil": Medium(
-        "soil",
-        (1.718 * 10e6, 0.0, 2.215 * 1860.0),
-        density=1860.0,
-        source="paper Table 1 (Forrestal & Luk 1992): A tau0 + B rho Vn^2, A=1.718, "
-        "tau0=10 MPa, B=2.215, rho=1860 kg/m3",
-    ),
-    "concrete": Medium(
-        "concrete",
-        (21.0 * 13.5e6, 0.0, 1960.0),
-        density=1960.0,
-        source="paper Table 1 (Forrestal et al. 1994): S fc + rho Vn^2, S=21, fc=13.5 MPa, "
-        "rho=1960 kg/m3",
-    ),
-    "aluminium": Medium(
-        "aluminium",
-        (5.04 * 276e6, 0.0, 0.983 * 2710.0),
-        density=2710.0,
-        source="paper Table 1 (Piekutowski et al. 1999; Forrestal & Piekutowski 2000): "
-        "A Y + B rho Vn^2, A=5.04, Y=276 MPa, B=0.983, rho=2710 kg/m3",
-    ),
-    # The law the paper's Table 1 cites, as its source writes it: three terms, the
-    # spherical cavity-expansion fit of Warren & Forrestal (1998). The paper's Table 1
-    # keeps A and puts the linear coefficient B on the quadratic term, dropping C.
-    "aluminium_3term": Medium(
-        "aluminium_3term",
-        (
-            5.04 * 276e6,
-            0.983 * 276e6 / math.sqrt(276e6 / 2710.0),
-            0.940 * 2710.0,
-        ),
-        density=2710.0,
-        source="Piekutowski et al. 1999, IJIE 23:723-734, p. 731 (constants from Warren & "
-        "Forrestal 1998): Y (A + B Vn/c + C Vn^2/c^2), c = sqrt(Y/rho), A=5.04, B=0.983, "
-        "C=0.940, Y=276 MPa, rho=2710 kg/m3",
-    ),
-}
+#: The folder of the library's data files (named media, validation projectiles, the
+#: Table-3 geometry), each with its provenance.
+LIBRARY_DATA = Path(__file__).parent / "data"
 
 # ---------------------------------------------------------------- Table 3 and its fit
 
@@ -212,47 +178,18 @@ def table3_fit() -> Table3Fit:
 # ---------------------------------------------------------------- named projectiles
 
 
-def _validation_projectiles() -> dict[str, Projectile]:
+def _validation_projectiles(
+    path: Path = LIBRARY_DATA / "projectiles.yaml",
+) -> dict[str, Projectile]:
+    """The validation projectiles of the data file ``path`` (the projectile format; a
+    ``derivation`` key says how a number the source does not print was obtained)."""
+    data = _load_yaml(path, "projectile library")
     out: dict[str, Projectile] = {}
-    # Concrete, Forrestal et al. (1994): 76.2 mm diameter, about 13 kg. Assumed: solid
-    # 4340 steel (7850 kg/m3), shank length chosen so that the mass is 13.0 kg.
-    d = 0.0762
-    for crh, tag in ((3.0, "3"), (4.25, "4p25")):
-        nose = OgiveNose(crh, 7850.0)
-        nose_mass = Projectile("n", d, nose).mass_properties().mass
-        ls = (13.0 - nose_mass) / (7850.0 * math.pi * (d / 2) ** 2)
-        out[f"concrete_crh{tag}"] = Projectile(
-            f"concrete_crh{tag}",
-            d,
-            nose,
-            (Cylinder(ls, 7850.0),),
-            source="assumed: 76.2 mm, 13.0 kg solid steel (Forrestal et al. 1994 class; "
-            "M/(rho d^3)=15.2 in Li & Chen 2003); replace with the published geometry",
-        )
-    # Aluminium: the rods of the measured shots (config/aluminium_projectiles.yaml holds
-    # every number with its page; tests/inputs check these against it).
-    d = 0.00711
-    p1999 = "Piekutowski et al. 1999, IJIE 23:723-734"
-    for steel, rho in (("var4340", 7830.0), ("aermet100", 7890.0)):
-        out[f"al_ogive_{steel}"] = Projectile(
-            f"al_ogive_{steel}",
-            d,
-            OgiveNose(3.0, rho),
-            (Cylinder(0.0593, rho),),
-            source=f"{p1999}: 2a = 7.11 mm, CRH 3.0, nose 11.8 mm, shank 59.3 mm (Fig. 1, "
-            f"p. 724; p. 731), {'VAR 4340' if steel == 'var4340' else 'AerMet 100'} steel "
-            f"{rho:g} kg/m3 (p. 731)",
-        )
-    f2000 = "Forrestal & Piekutowski 2000, IJIE 24:57-67 (manuscript SAND99-0322J)"
-    out["al_sphere_var4340"] = Projectile(
-        "al_sphere_var4340",
-        d,
-        OgiveNose(0.5, 7830.0),
-        (Cylinder(0.0711, 7830.0),),
-        source=f"{f2000}: 2a = 7.11 mm, hemispherical nose, shank 71.1 mm (Fig. 1), VAR 4340 "
-        "steel, Rc 36.6 / 39.5 / 46.2 (Tables 1-3); density 7830 kg/m3 derived (p. 10: 'a and "
-        "rho are the same' as the 1999 VAR 4340 rods)",
-    )
+    for name, entry in data.items():
+        entry = _mapping(entry, f"projectile library entry {brief(name)}")
+        fields = {k: v for k, v in entry.items() if k != "derivation"}
+        fields["source"] = " ".join(str(fields.get("source", "")).split())
+        out[name] = projectile_from_dict({"name": name, **fields})
     return out
 
 
@@ -368,6 +305,11 @@ _NOSE_KEYS = {
 def projectile_from_dict(d: dict[str, Any]) -> Projectile:
     """Build a projectile from a mapping (the YAML format of the user guide's inputs page).
 
+    Besides the outline (``diameter``, ``nose``, ``shank``), a mapping may give measured
+    ``mass`` (kg), ``centre_of_mass`` (tip distance Lc, m) and
+    ``inertia: {axial: ..., transverse: ...}`` (kg m^2, about the centre of mass); see
+    :class:`~pencore.Projectile` for what is derived from the outline when they are not.
+
     Unknown keys, booleans or text where numbers belong, and values outside
     :data:`pencore.inputs.limits.LIMITS` raise :class:`~pencore.InputError` naming the key and
     value.
@@ -376,7 +318,11 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
         raise InputError(f"projectile definition must be a mapping, got {type(d).__name__}")
     name = str(d.get("name", "projectile"))
     what = f"projectile {brief(name)}"
-    check_keys(d, ("name", "diameter", "nose", "shank", "source"), what)
+    check_keys(
+        d,
+        ("name", "diameter", "nose", "shank", "source", "mass", "centre_of_mass", "inertia"),
+        what,
+    )
     diameter = _num(d, "diameter", what)
     nd = d.get("nose")
     if not isinstance(nd, dict):
@@ -407,7 +353,25 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
         w = f"{what} shank segment {k}"
         check_keys(c, ("length", "density"), w)
         cyl.append(Cylinder(_num(c, "length", w), _num(c, "density", w)))
-    p = Projectile(name, diameter, nose, tuple(cyl), source=str(d.get("source", "user file")))
+    given: dict[str, Any] = {}
+    if "mass" in d:
+        given["mass"] = _num(d, "mass", what)
+    if "centre_of_mass" in d:
+        given["centre_of_mass"] = _num(d, "centre_of_mass", what)
+    if "inertia" in d:
+        inertia = d["inertia"]
+        if not isinstance(inertia, dict):
+            raise InputError(
+                f"{what}: 'inertia' must be a mapping {{axial: ..., transverse: ...}} in "
+                f"kg m^2, got {brief(inertia)}"
+            )
+        check_keys(inertia, ("axial", "transverse"), f"{what} inertia")
+        given["inertia"] = tuple(
+            _num(inertia, k, f"{what} inertia", "inertia") for k in ("axial", "transverse")
+        )
+    p = Projectile(
+        name, diameter, nose, tuple(cyl), source=str(d.get("source", "user file")), **given
+    )
     p.mass_properties()  # a body with no volume fails here, not later in a run
     return p
 
@@ -435,6 +399,8 @@ def _medium_from(x: Any, what: str) -> Medium:
         raise InputError(f"{what}: medium must be a name or a mapping, got {brief(x)}")
     name = str(x.get("name", "medium"))
     w = f"{what} medium {brief(name)}"
+    if "law" in x:  # a law from material properties (pencore.inputs.laws)
+        return medium_from_law(x, w)
     check_keys(x, _MEDIUM_KEYS, w)
     coef = x.get("coefficients")
     if not isinstance(coef, list | tuple) or not coef:
@@ -500,6 +466,33 @@ def _load_yaml(path: Path, what: str) -> dict[str, Any]:
     if not isinstance(data, dict):
         raise InputError(f"{what} file {brief_path(path)} must contain a mapping")
     return data
+
+
+def _load_media(path: Path = LIBRARY_DATA / "media.yaml") -> dict[str, Medium]:
+    """The named media of the data file ``path``: coefficients, density and source of
+    each (its ``law`` parameters are provenance, checked against the coefficients by the
+    tests)."""
+    data = _load_yaml(path, "media library")
+    out: dict[str, Medium] = {}
+    for name, entry in data.items():
+        w = f"media library entry {brief(name)}"
+        entry = _mapping(entry, w)
+        check_keys(entry, ("coefficients", "density", "law", "source"), w)
+        coef = entry.get("coefficients")
+        if not isinstance(coef, list) or not coef:
+            raise InputError(f"{w}: needs a list 'coefficients', got {brief(coef)}")
+        out[name] = Medium(
+            name,
+            tuple(number(c, "coefficient", w, allow_str=True) for c in coef),
+            density=_num(entry, "density", w, "medium_density"),
+            source=" ".join(str(entry.get("source", "")).split()),
+        )
+    return out
+
+
+#: The named media (paper Table 1 and its aluminium source's three-term law), read from
+#: ``inputs/data/media.yaml``.
+MEDIA: dict[str, Medium] = _load_media()
 
 
 def _from_yaml_file(spec: str, what: str, build: Any) -> Any:

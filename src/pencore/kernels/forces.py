@@ -26,7 +26,7 @@ import numpy as np
 from pencore.inputs.geometry import Projectile, Rings
 from pencore.inputs.models import SHANK_CAVITY, SURFACE_PANELS, Emulation, ShankModel
 from pencore.kernels.cache import use_kernel_cache
-from pencore.kernels.contact_points import point_loads
+from pencore.kernels.contact_points import point_loads, push_path, tip_position
 from pencore.kernels.crater import (
     crater_depth_and_speed,
     crater_factor,
@@ -37,7 +37,7 @@ from pencore.kernels.crater import (
 from pencore.kernels.dynamics import contact_loads, equations_of_motion, quat_to_matrix
 from pencore.kernels.panels import N_COLUMNS, panel_points, ring_points
 
-__all__ = ["rhs_model", "model_loads", "kernel_model", "default_model"]
+__all__ = ["rhs_model", "model_loads", "loads_along", "kernel_model", "default_model"]
 
 
 @nb.njit(cache=True)
@@ -110,6 +110,44 @@ def rhs_model(y, mass, inertia, gravity, rings, bounds, coef, fric, eps, n_gauss
     Ctrl-C is taken while it runs (:mod:`pencore.integrators.driver`)."""
     fb, mb, clear = model_loads(y, rings, bounds, coef, fric, eps, n_gauss, model)
     return equations_of_motion(y, fb, mb, mass, inertia, gravity), clear
+
+
+@nb.njit(cache=True)
+def loads_along(ts, ys, rings, bounds, coef, fric, eps, n_gauss, model):
+    """Contact force and moment (body frame) at each saved state of a run: the loads of
+    :func:`rhs_model` itself, evaluated once per row of ``ys`` (no differencing).
+
+    ``ts`` (k,) and ``ys`` (k, 14) are a run's accepted times (s) and states. With the
+    cavity shank model the nose-tip path is rebuilt from the states as the integrator
+    built it (:func:`pencore.kernels.contact_points.push_path` after each step, the step
+    length taken as ``ts[j] - ts[j - 1]``), so each state sees the path it was integrated
+    with; ``model``'s path buffer must then hold ``k * MAX_SAMPLES_PER_STEP + 1`` rows.
+
+    Returns
+    -------
+    (k, 6) ndarray
+        Force (N, body axes 1-3; axis 1 the symmetry axis towards the nose) and moment
+        about the centre of mass (N m, body axes).
+    """
+    n = ys.shape[0]
+    out = np.empty((n, 6))
+    cavity = model[0][0] == SHANK_CAVITY
+    path, npath = model[3], model[4]
+    lc, spacing = model[1][2], model[1][3]
+    if cavity and n > 0:
+        p0 = tip_position(ys[0], lc)
+        for c in range(3):
+            path[0, c] = p0[c]
+        path[0, 3] = 0.0
+        npath[0] = 1
+    for j in range(n):
+        if cavity and j > 0:
+            push_path(path, npath, ys[j - 1], ys[j], ts[j] - ts[j - 1], lc, spacing)
+        fb, mb, _ = model_loads(ys[j], rings, bounds, coef, fric, eps, n_gauss, model)
+        for c in range(3):
+            out[j, c] = fb[c]
+            out[j, 3 + c] = mb[c]
+    return out
 
 
 def default_model() -> tuple[np.ndarray, ...]:

@@ -13,6 +13,8 @@ module             figures
 ``perforation``    beyond the paper: ballistic limit, residual velocity, measured vs predicted
 ``attribution``    why the numbers differ from the paper: one panel per disputed number
 ``ensemble``       Monte Carlo ensembles: distributions and convergence against N
+``run``            one :func:`pencore.simulate` result (:func:`~pencore.plot_run`)
+``search``         one threshold search's history
 =================  =====================================================================
 
 Each ``plot_*`` function takes the study's dataset and returns a
@@ -38,6 +40,8 @@ from pencore.plotting.perforation import (
     plot_measurements,
     plot_residual_velocity,
 )
+from pencore.plotting.run import plot_run
+from pencore.plotting.search import plot_search
 from pencore.plotting.style import STYLE, new_figure, save_figure, styled
 from pencore.plotting.trajectories import (
     plot_fig7,
@@ -73,6 +77,8 @@ __all__ = [
     "plot_measurements",
     "plot_attribution",
     "plot_ensemble",
+    "plot_run",
+    "plot_search",
     "PLOTS",
 ]
 

@@ -69,8 +69,11 @@ def new_figure(width: float = 6.4, height: float = 4.4) -> Figure:
     return fig
 
 
-def save_figure(fig: Figure, *paths: str | os.PathLike[str], dpi: int = 150) -> list[Path]:
-    """Save ``fig`` to every path (format from the suffix, e.g. ``.png``, ``.pdf``).
+def save_figure(
+    fig: Figure, *paths: str | os.PathLike[str], dpi: int = 150, fmt: str | None = None
+) -> list[Path]:
+    """Save ``fig`` to every path (format from the suffix, e.g. ``.png``, ``.pdf``, or
+    ``fmt`` when given: a temporary file without a suffix).
 
     Parent directories are created. Returns the paths written.
     """
@@ -81,7 +84,8 @@ def save_figure(fig: Figure, *paths: str | os.PathLike[str], dpi: int = 150) -> 
         p = Path(p)
         p.parent.mkdir(parents=True, exist_ok=True)
         with matplotlib.rc_context(STYLE):
-            fig.savefig(p, dpi=dpi, metadata=_metadata(p))
+            kind = Path(f"x.{fmt}") if fmt else p
+            fig.savefig(p, dpi=dpi, metadata=_metadata(kind), format=fmt)
         out.append(p)
     return out
 

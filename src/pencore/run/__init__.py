@@ -18,6 +18,7 @@ __getattr__, __dir__, __all__ = attach(
         "initial_state": "initial",
         "trajectory_dataset": "dataset",
         "final_slope": "dataset",
+        "body_loads": "loads",
     },
 )
 del attach

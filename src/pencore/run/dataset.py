@@ -16,7 +16,11 @@ from pencore.inputs.target import Target
 from pencore.integrators.driver import RunResult
 from pencore.version import __version__
 
-__all__ = ["VERTICAL_RATIO", "final_slope", "trajectory_dataset"]
+__all__ = ["VERTICAL_RATIO", "final_slope", "trajectory_dataset", "load_variables"]
+
+#: Standard acceleration of gravity g0 (m/s^2), the unit of a deceleration "in g"
+#: (3rd CGPM, 1901; exact by definition).
+STANDARD_GRAVITY = 9.80665
 
 #: Largest ``|vx| / |vy|`` at which :func:`final_slope` takes the motion as vertical:
 #: 16 units in the last place of ``|vy|`` (``16 * 2**-52``, 3.6e-15).
@@ -53,6 +57,9 @@ def _target_dict(t: Target) -> dict[str, Any]:
 def _projectile_dict(p: Projectile) -> dict[str, Any]:
     d = asdict(p)
     d["nose"]["kind"] = type(p.nose).__name__
+    for key in ("mass", "centre_of_mass", "inertia"):  # recorded only when given
+        if d[key] is None:
+            del d[key]
     return d
 
 
@@ -65,6 +72,68 @@ def _axes(q: np.ndarray) -> np.ndarray:
     return np.stack(
         [w * w + x * x - y * y - z * z, 2 * (x * y + w * z), 2 * (x * z - w * y)], axis=1
     )
+
+
+def load_variables(
+    loads: np.ndarray, mass: float, time: np.ndarray
+) -> tuple[dict[str, tuple], dict[str, float]]:
+    """The load histories of a trajectory and their peaks.
+
+    Parameters
+    ----------
+    loads : (k, 6) ndarray
+        Contact force (N) and moment (N m) in body axes at those states
+        (:func:`pencore.run.loads.body_loads`).
+    mass : float
+        Mass of the projectile (kg).
+    time : (k,) ndarray
+        The saved times (s).
+
+    Returns
+    -------
+    variables : dict
+        ``axial_force`` (N, positive resisting: towards the tail), ``lateral_force`` (N,
+        magnitude across the axis), ``deceleration``
+        (m s-2: ``axial_force / mass``, what an axial accelerometer at the centre of mass
+        reads) and ``deceleration_g`` (the same in units of g0 = 9.80665 m s-2), on
+        ``time``.
+    peaks : dict
+        ``peak_axial_force_N``, ``peak_lateral_force_N``, ``peak_deceleration_m_s2``,
+        ``peak_deceleration_g`` (largest magnitudes) and ``time_of_peak_deceleration_s``.
+    """
+    fb = loads[:, 0:3]
+    axial = -fb[:, 0]
+    lateral = np.hypot(fb[:, 1], fb[:, 2])
+    decel = axial / mass
+
+    def var(data, units, long_name):
+        return ("time", np.asarray(data), {"units": units, "long_name": long_name})
+
+    variables = {
+        "axial_force": var(
+            axial, "N", "axial contact force on the body (positive: towards the tail, resisting)"
+        ),
+        "lateral_force": var(lateral, "N", "contact force across the projectile axis (magnitude)"),
+        "deceleration": var(
+            decel, "m s-2", "axial deceleration by the contact stresses (axial force / mass)"
+        ),
+        "deceleration_g": var(
+            decel / STANDARD_GRAVITY,
+            "1",
+            "axial deceleration in units of standard gravity g0 = 9.80665 m s-2",
+        ),
+    }
+    if len(time) == 0:
+        return variables, {}
+    i = int(np.argmax(np.abs(decel)))
+    peaks = {
+        "peak_axial_force_N": float(np.abs(axial).max()),
+        "peak_lateral_force_N": float(lateral.max()),
+        "peak_deceleration_m_s2": float(abs(decel[i])),
+        "peak_deceleration_g": float(abs(decel[i]) / STANDARD_GRAVITY),
+        "time_of_peak_deceleration_s": float(time[i]),
+    }
+    return variables, peaks
 
 
 def _path_below(tip: np.ndarray, below: np.ndarray) -> float:
@@ -120,6 +189,7 @@ def trajectory_dataset(
     run: RunResult,
     wall: float,
     inputs: dict[str, Any],
+    loads: np.ndarray | None = None,
 ) -> xr.Dataset:
     """The Dataset of one integrated trajectory.
 
@@ -136,6 +206,10 @@ def trajectory_dataset(
         Wall time of the integration (s).
     inputs : dict
         The impact conditions (velocity m/s, angles deg, omega rad/s, start m).
+    loads : (k, 6) ndarray, optional
+        Contact force (N) and moment (N m), body frame, at the saved states
+        (:func:`pencore.run.loads.body_loads`): adds the load histories and their peaks
+        (:func:`load_variables`).
 
     Returns
     -------
@@ -164,6 +238,7 @@ def trajectory_dataset(
     depth = float(max(0.0, -tip[:, 1].min()))
     path = _path_below(tip, below)
     v0 = inputs["velocity"]
+    load_vars, peaks = ({}, {}) if loads is None else load_variables(loads, mass, ts)
 
     def var(data, units, long_name, **extra):
         return ("time", np.asarray(data), {"units": units, "long_name": long_name, **extra})
@@ -221,6 +296,7 @@ def trajectory_dataset(
                 float(deviation[-1]),
                 {"units": "degree", "long_name": "velocity angle from the normal at the end"},
             ),
+            **load_vars,
         },
         coords={"time": ("time", ts, {"units": "s", "long_name": "time since start"})},
         attrs={
@@ -240,6 +316,9 @@ def trajectory_dataset(
             "lc_m": lc,
             "length_m": projectile.length,
             "lc_over_l": lc / projectile.length,
+            "i_axial_kg_m2": mp.i_axial,
+            "i_transverse_kg_m2": mp.i_transverse,
+            **{f"{k}_source": v for k, v in projectile.mass_provenance().items()},
             "inputs_json": json.dumps(
                 {
                     "impact": inputs,
@@ -255,6 +334,7 @@ def trajectory_dataset(
             "wall_time_s": float(wall),
             "pencore_version": __version__,
             "Conventions": "CF-1.8",
+            **peaks,
         },
     )
     if run.outcome == "perforated":

@@ -50,6 +50,7 @@ from pencore.run.initial import (
     _check_reaches_target,
     initial_state,
 )
+from pencore.run.loads import body_loads
 
 __all__ = ["prepare", "simulate", "run_impact", "COMPILE_NOTICE", "compiled_in_cache"]
 
@@ -161,6 +162,7 @@ def simulate(
     shank: ShankModel | Mapping[str, Any] | str | None = None,
     emulation: Emulation | Mapping[str, Any] | None = None,
     spin_about: str = "cm",
+    loads: bool = True,
     **overrides: Any,
 ) -> xr.Dataset:
     """Simulate one impact: the trajectory of a rigid projectile in a target.
@@ -211,6 +213,12 @@ def simulate(
         Paper-emulation numerics (:class:`~pencore.Emulation`): panels, explicit integrator.
     spin_about : {"cm", "tip"}, default "cm"
         The point ``omega`` turns the body about at t = 0.
+    loads : bool, default True
+        Add the loads on the body at each saved state (``axial_force``, ``lateral_force``
+        in N, ``deceleration`` in m/s^2 and ``deceleration_g`` in g, their peaks in the
+        attributes; :mod:`pencore.run.loads`). They are the solver's own contact force,
+        evaluated once per saved state after the run (about a fifth of a run's time);
+        ``False`` skips them, for loops that read only the path.
     **overrides
         Fields of :class:`~pencore.Numerics` by name.
 
@@ -248,6 +256,11 @@ def simulate(
     >>> ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0)
     >>> print(ds.attrs["outcome"], f"{pencore.final_deviation(ds):.0f} deg")
     stopped 46 deg
+
+    The loads: the peak axial deceleration, in g:
+
+    >>> print(f"{ds.attrs['peak_deceleration_g']:.0f} g")
+    13754 g
     """
     pr, run, wall, (velocity, obliquity, yaw, omega, azimuth, start) = _impact(locals())
     ds = trajectory_dataset(
@@ -265,6 +278,7 @@ def simulate(
             start=None if start is None else list(start),
             stop_at_reversal=bool(stop_at_reversal),
         ),
+        loads=body_loads(pr, run) if loads else None,
     )
     return _record_model(ds, pr, spin_about)
 
@@ -311,6 +325,7 @@ def _impact(a: Mapping[str, Any]) -> tuple[Problem, RunResult, float, tuple]:
     velocity, obliquity, yaw, omega, azimuth, start = _check_inputs(
         a["velocity"], a["obliquity"], a["yaw"], a["omega"], a["azimuth"], a["start"]
     )
+    flag(a["loads"], "loads")
     stop_at_reversal = flag(stop_at_reversal, "stop_at_reversal")
     if prepared is not None and not isinstance(prepared, Problem):
         raise InputError(f"prepared must come from pencore.run.impact.prepare, got {prepared!r}")

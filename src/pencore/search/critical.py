@@ -322,6 +322,7 @@ def vci(
                 omega,
                 stop_at_reversal=True,
                 prepared=pr,
+                loads=False,  # the verdict reads the path only
                 **sim,
             )
             rev = int(ds.attrs["reversed"]) == 1

@@ -1,0 +1,281 @@
+"""The sweep subcommands: ``depth-curve`` (depth, deceleration and forces against impact
+speed), ``residual-velocity`` (residual speed against impact speed on a finite target)
+and ``ballistic-table`` (ballistic limit over slab thickness and obliquity)
+(:mod:`pencore.studies.sweeps`).
+
+Each writes its table as netCDF or CSV (``--out``), prints a summary (``--format``) and
+one progress line per point on stderr (``--quiet``: none).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+from typing import Any
+
+import numpy as np
+
+from pencore.cli.options import (
+    add_mass_options,
+    add_window_options,
+    exit_at_once_on_interrupt,
+    number_type,
+    numerics_given,
+    numerics_option,
+    obliquity,
+    resolve,
+    velocity,
+    with_mass,
+    with_windows,
+)
+from pencore.cli.summary import (
+    NOT_FOUND,
+    Field,
+    Progress,
+    add_format_option,
+    check_plot_output,
+    check_table_output,
+    print_summary,
+    write_plot,
+    write_table,
+)
+
+__all__ = ["add_parsers", "run_sweep"]
+
+
+def _speeds(p: argparse.ArgumentParser) -> None:
+    g = p.add_mutually_exclusive_group(required=True)
+    g.add_argument(
+        "--velocities", type=velocity, nargs="+", metavar="M_S", help="impact speeds in m/s"
+    )
+    g.add_argument("--range", type=number_type("velocity"), nargs=3,
+                   metavar=("LO", "HI", "N"),
+                   help="N impact speeds evenly from LO to HI m/s")  # fmt: skip
+
+
+def _outputs(p: argparse.ArgumentParser, plot: bool) -> None:
+    add_mass_options(p)
+    add_window_options(p)
+    p.add_argument(
+        "--numerics",
+        type=numerics_option,
+        action="append",
+        default=[],
+        metavar="KEY=VALUE",
+        help="numerical parameter override (repeatable)",
+    )
+    p.add_argument(
+        "--out",
+        metavar="FILE.nc|FILE.csv",
+        default=None,
+        help="write the table as netCDF or CSV (SI units, units in the headers)",
+    )
+    if plot:
+        p.add_argument(
+            "--plot", metavar="FILE.png", default=None, help="draw the curve to this image file"
+        )
+    p.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
+    add_format_option(p)  # fmt: skip
+
+
+def add_parsers(sub: argparse._SubParsersAction) -> None:
+    """Register ``depth-curve``, ``residual-velocity`` and ``ballistic-table``."""
+    p = sub.add_parser(
+        "depth-curve",
+        help="penetration depth (m) and peak deceleration (g) against impact speed",
+        description="Run one impact per speed and tabulate the penetration depth and path "
+        "length (m), final deviation (deg), peak axial deceleration (m/s^2 and g) and "
+        "peak axial and lateral forces (N) against impact speed (m/s).",
+    )
+    p.add_argument("--projectile", required=True, metavar="NAME|FILE", help="projectile")
+    p.add_argument("--target", required=True, metavar="NAME|FILE", help="target")
+    _speeds(p)
+    p.add_argument(
+        "--obliquity",
+        type=obliquity,
+        default=0.0,
+        metavar="DEG",
+        help="obliquity in deg (default 0)",
+    )
+    p.add_argument(
+        "--yaw",
+        type=number_type("yaw"),
+        default=0.0,
+        metavar="DEG",
+        help="velocity angle minus axis angle in deg, as for 'simulate' (default 0)",
+    )
+    _outputs(p, plot=False)  # fmt: skip
+
+    p = sub.add_parser(
+        "residual-velocity",
+        help="residual speed (m/s) against impact speed on a finite target",
+        description="Run one impact per speed on a finite target (a YAML file whose layers "
+        "all have a thickness) and tabulate the residual speed (m/s; 0 when it does not "
+        "perforate) and exit pitch (deg), with the Recht-Ipson curve fitted when three or "
+        "more runs perforate.",
+    )
+    p.add_argument("--projectile", required=True, metavar="NAME|FILE", help="projectile")
+    p.add_argument("--target", required=True, metavar="FILE", help="finite target YAML file")
+    _speeds(p)
+    p.add_argument(
+        "--obliquity",
+        type=obliquity,
+        default=0.0,
+        metavar="DEG",
+        help="obliquity in deg (default 0)",
+    )
+    _outputs(p, plot=True)  # fmt: skip
+
+    p = sub.add_parser(
+        "ballistic-table",
+        help="ballistic limit (m/s) over slab thickness (m) and obliquity (deg)",
+        description="Search the ballistic limit (m/s) of a slab of one medium for each "
+        "thickness (m) and obliquity (deg). Exit status 3 if a cell's search found no "
+        "threshold in [--lo, --hi] (its value is NaN in the table).",
+    )
+    p.add_argument("--projectile", required=True, metavar="NAME|FILE", help="projectile")
+    p.add_argument(
+        "--medium",
+        required=True,
+        metavar="NAME",
+        help="medium of the slab (a target name: concrete, aluminium...)",
+    )
+    p.add_argument(
+        "--thicknesses",
+        type=number_type("thickness"),
+        nargs="+",
+        required=True,
+        metavar="M",
+        help="slab thicknesses in m",
+    )
+    p.add_argument(
+        "--obliquities",
+        type=obliquity,
+        nargs="+",
+        default=[0.0],
+        metavar="DEG",
+        help="obliquities in deg (default 0)",
+    )
+    p.add_argument(
+        "--lo",
+        type=velocity,
+        default=50.0,
+        metavar="M_S",
+        help="lowest speed searched (default 50)",
+    )
+    p.add_argument(
+        "--hi",
+        type=velocity,
+        default=3000.0,
+        metavar="M_S",
+        help="highest speed searched (default 3000)",
+    )
+    p.add_argument(
+        "--tol",
+        type=number_type("velocity", "tolerance"),
+        default=5.0,
+        metavar="M_S",
+        help="width of the final bracket (default 5)",
+    )
+    _outputs(p, plot=True)  # fmt: skip
+
+
+def _velocities(args: argparse.Namespace) -> np.ndarray:
+    from pencore.errors import InputError
+
+    if args.velocities is not None:
+        return np.array(args.velocities, dtype=float)
+    lo, hi, n = args.range
+    if not (0.0 < lo < hi) or n != int(n) or int(n) < 2:
+        raise InputError(
+            f"--range LO HI N needs 0 < LO < HI (m/s) and a whole N >= 2, got {lo:g} {hi:g} {n:g}"
+        )
+    return np.linspace(lo, hi, int(n))
+
+
+def run_sweep(args: argparse.Namespace) -> int:
+    """Run a sweep: table, plot, summary; exit 3 when a ballistic-table cell was not found."""
+    from pencore.inputs.library import get_projectile, get_target
+    from pencore.inputs.numerics import resolve_numerics
+    from pencore.studies import sweeps
+
+    exit_at_once_on_interrupt()
+    out = check_table_output(args.out) if args.out is not None else None
+    plot_path = getattr(args, "plot", None)
+    plot = check_plot_output(plot_path) if plot_path is not None else None
+    projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
+    num = resolve_numerics(numerics_given(args.numerics))
+    status = 0
+    fields: list[Field]
+    if args.command == "ballistic-table":
+        from pencore.errors import InputError
+
+        if not args.lo < args.hi:
+            raise InputError(f"--lo {args.lo:g} must be below --hi {args.hi:g} (m/s)")
+        if any(h <= 0.0 for h in args.thicknesses):
+            raise InputError(f"--thicknesses must be > 0 m, got {args.thicknesses}")
+        get_target(args.medium)  # a bad name is one line before any run
+        n = len(args.thicknesses) * len(args.obliquities)
+        ds = sweeps.ballistic_table(
+            projectile, args.medium, args.thicknesses, args.obliquities, lo=args.lo,
+            hi=args.hi, tol=args.tol, numerics=num, progress=Progress(n, args.quiet),
+        )  # fmt: skip
+        found = np.isfinite(ds["v_bl"].values)
+        status = 0 if found.all() else NOT_FOUND
+        fields = [
+            Field("cells", "cells", int(found.size), "1", text=str(found.size)),
+            Field("cells_not_found", "cells without a threshold in the range",
+                  int((~found).sum()), "1", text=str(int((~found).sum()))),
+            Field("v_bl_min", "lowest ballistic limit", _min(ds["v_bl"].values), "m s-1"),
+            Field("v_bl_max", "highest ballistic limit", _max(ds["v_bl"].values), "m s-1"),
+        ]  # fmt: skip
+    else:
+        target = with_windows(resolve("target", args.target, get_target), args)
+        v = _velocities(args)
+        progress = Progress(v.size, args.quiet)
+        if args.command == "depth-curve":
+            ds = sweeps.depth_curve(projectile, target, v, args.obliquity, args.yaw,
+                                    numerics=num, progress=progress)  # fmt: skip
+            d = ds["penetration_depth"].values
+            g = ds["peak_deceleration_g"].values
+            fields = [
+                Field("points", "points", int(v.size), "1", text=str(v.size)),
+                Field("depth_max", "deepest", _max(d), "m"),
+                Field("peak_deceleration_g_max", "highest peak deceleration", _max(g), "1",
+                      text=f"{_max(g):.4g} g"),
+            ]  # fmt: skip
+        else:
+            ds = sweeps.residual_curve(projectile, target, v, args.obliquity, numerics=num,
+                                       progress=progress)  # fmt: skip
+            a = ds.attrs
+            fields = [
+                Field("points", "points", int(v.size), "1", text=str(v.size)),
+                Field("perforated", "runs that perforate",
+                      int((ds["residual_velocity"].values > 0).sum()), "1"),
+                Field("v_bl_fit", "Recht-Ipson v_bl (fitted)", a["v_bl_m_s"], "m s-1"),
+                Field("recht_ipson_a", "Recht-Ipson a", a["recht_ipson_a"], "1"),
+                Field("recht_ipson_p", "Recht-Ipson p", a["recht_ipson_p"], "1"),
+            ]  # fmt: skip
+    if out is not None:
+        write_table(ds, out, args, f"cli/{args.command}")
+    if plot is not None:
+        from pencore.plotting.perforation import plot_ballistic_limit, plot_residual_velocity
+
+        draw = plot_ballistic_limit if args.command == "ballistic-table" else plot_residual_velocity
+        write_plot(draw(ds), plot)
+    if out is not None:
+        fields.append(Field("output", "output", str(out)))
+    if plot is not None:
+        fields.append(Field("plot", "plot", str(plot)))
+    print_summary(fields, args.format)
+    return status
+
+
+def _min(a: Any) -> float:
+    a = np.asarray(a, dtype=float)
+    return float(np.nanmin(a)) if np.isfinite(a).any() else math.nan
+
+
+def _max(a: Any) -> float:
+    a = np.asarray(a, dtype=float)
+    return float(np.nanmax(a)) if np.isfinite(a).any() else math.nan

@@ -1,0 +1,248 @@
+"""Sweeps over impact speed or target for one projectile, as the command line's
+``depth-curve``, ``residual-velocity`` and ``ballistic-table`` write them.
+
+* :func:`depth_curve`: for each impact speed, the penetration depth, path length, final
+  deviation and the peak loads (deceleration in m/s^2 and g, axial and lateral force);
+* :func:`residual_curve`: for each impact speed on a finite target, the residual speed
+  and exit pitch, with the Recht-Ipson curve fitted when three or more runs perforate;
+* :func:`ballistic_table`: the ballistic limit of a slab of one medium over thickness and
+  obliquity (:func:`pencore.ballistic_limit` per cell).
+
+Each takes ``progress``, called with a short text after every point (the command line
+prints ``[i/n] ...`` on stderr), so a long sweep shows where it is.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from pencore.errors import InputError
+from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.run.impact import prepare, simulate
+from pencore.search.perforation import ballistic_limit, fit_recht_ipson, recht_ipson
+from pencore.search.threshold import VELOCITY_TOL
+from pencore.studies.common import STRING_DTYPE, axis_values, search_variables, var_attrs
+from pencore.studies.perforation.slabs import slab_target
+
+__all__ = ["depth_curve", "residual_curve", "ballistic_table"]
+
+Progress = Callable[[str], None] | None
+
+
+def _velocity_coord(v: np.ndarray) -> dict[str, tuple]:
+    return {"velocity": ("velocity", v, var_attrs("m s-1", "impact speed"))}
+
+
+def depth_curve(
+    projectile: Any,
+    target: Any,
+    velocities: Sequence[float],
+    obliquity: float = 0.0,
+    yaw: float = 0.0,
+    *,
+    numerics: Numerics | Mapping[str, Any] | None = None,
+    progress: Progress = None,
+) -> xr.Dataset:
+    """Depth and peak loads against impact speed.
+
+    Parameters
+    ----------
+    projectile, target
+        As for :func:`pencore.simulate`.
+    velocities : sequence of float
+        Impact speeds (m/s).
+    obliquity, yaw : float
+        As for :func:`pencore.simulate` (deg).
+    numerics : Numerics or mapping, optional
+    progress : callable, optional
+        Called with a text after each run.
+
+    Returns
+    -------
+    xarray.Dataset
+        On ``velocity`` (m/s): ``penetration_depth``, ``path_length`` (m),
+        ``final_deviation`` (deg), ``peak_deceleration`` (m s-2), ``peak_deceleration_g``,
+        ``peak_axial_force``, ``peak_lateral_force`` (N), ``outcome``.
+
+    Examples
+    --------
+    >>> from pencore.studies.sweeps import depth_curve
+    >>> ds = depth_curve("p2", "soil", [200.0, 300.0])
+    >>> [f"{d:.2f}" for d in ds.penetration_depth.values]
+    ['2.68', '4.50']
+    """
+    v = axis_values(velocities, "velocities")
+    pr = prepare(projectile, target, resolve_numerics(numerics))
+    names = ["penetration_depth", "path_length", "final_deviation"]
+    peaks = {
+        "peak_deceleration": ("peak_deceleration_m_s2", "m s-2", "peak axial deceleration"),
+        "peak_deceleration_g": ("peak_deceleration_g", "1", "peak axial deceleration in g0"),
+        "peak_axial_force": ("peak_axial_force_N", "N", "peak axial contact force"),
+        "peak_lateral_force": ("peak_lateral_force_N", "N", "peak lateral contact force"),
+    }
+    cols: dict[str, np.ndarray] = {k: np.full(v.size, np.nan) for k in [*names, *peaks]}
+    outcome = np.empty(v.size, dtype=STRING_DTYPE)
+    attrs: dict[str, dict] = {}
+    for k, vi in enumerate(v):
+        ds = simulate(pr.projectile, pr.target, float(vi), obliquity, yaw, prepared=pr)
+        for n in names:
+            cols[n][k] = float(ds[n])
+            attrs[n] = dict(ds[n].attrs)
+        for n, (a, _, _) in peaks.items():
+            cols[n][k] = ds.attrs.get(a, math.nan)
+        outcome[k] = ds.attrs["outcome"]
+        if progress is not None:
+            progress(f"{vi:g} m/s: depth {cols['penetration_depth'][k]:.4g} m, peak "
+                     f"{cols['peak_deceleration_g'][k]:.4g} g ({outcome[k]})")  # fmt: skip
+    data = {n: ("velocity", cols[n], attrs[n]) for n in names}
+    for n, (_, units, long_name) in peaks.items():
+        data[n] = ("velocity", cols[n], var_attrs(units, long_name))
+    data["outcome"] = ("velocity", outcome, {"units": "1", "long_name": "outcome of the run"})
+    return xr.Dataset(
+        data,
+        coords=_velocity_coord(v),
+        attrs={
+            "title": "pencore depth and peak loads against impact speed",
+            "projectile": pr.projectile.name,
+            "target": pr.target.name,
+            "obliquity_deg": float(obliquity),
+            "yaw_deg": float(yaw),
+            "Conventions": "CF-1.8",
+        },
+    )
+
+
+def residual_curve(
+    projectile: Any,
+    target: Any,
+    velocities: Sequence[float],
+    obliquity: float = 0.0,
+    yaw: float = 0.0,
+    *,
+    numerics: Numerics | Mapping[str, Any] | None = None,
+    progress: Progress = None,
+) -> xr.Dataset:
+    """Residual speed against impact speed on a finite target, with the Recht-Ipson fit.
+
+    Returns
+    -------
+    xarray.Dataset
+        On ``velocity`` (m/s): ``residual_velocity`` (m/s, 0 when the run does not
+        perforate), ``recht_ipson`` (the fitted curve, m/s; NaN without a fit),
+        ``exit_pitch`` (deg), ``outcome``; attributes ``recht_ipson_a``, ``_p`` and
+        ``v_bl_m_s`` (fitted, all three free; NaN with fewer than three perforating runs)
+        as :func:`pencore.plotting.perforation.plot_residual_velocity` draws them.
+    """
+    v = axis_values(velocities, "velocities")
+    pr = prepare(projectile, target, resolve_numerics(numerics))
+    if not math.isfinite(pr.target.levels[-1][1]):
+        raise InputError(
+            f"target {pr.target.name!r} has no rear face (its last layer is a half-space): "
+            "a residual velocity needs a finite target (a thickness on every layer)"
+        )
+    vr = np.zeros(v.size)
+    pitch = np.full(v.size, np.nan)
+    outcome = np.empty(v.size, dtype=STRING_DTYPE)
+    for k, vi in enumerate(v):
+        ds = simulate(pr.projectile, pr.target, float(vi), obliquity, yaw, prepared=pr,
+                      loads=False)  # fmt: skip
+        outcome[k] = ds.attrs["outcome"]
+        if outcome[k] == "perforated":
+            vr[k] = ds.attrs["residual_velocity"]
+            pitch[k] = ds.attrs["exit_pitch_deg"]
+        if progress is not None:
+            progress(f"{vi:g} m/s: residual {vr[k]:.4g} m/s ({outcome[k]})")
+    fit = {"a": math.nan, "p": math.nan, "v_bl": math.nan, "rms": math.nan}
+    if (vr > 0).sum() >= 3:
+        fit = fit_recht_ipson(v, vr)
+    curve = recht_ipson(v, fit["v_bl"], fit["a"], fit["p"])
+    return xr.Dataset(
+        {
+            "residual_velocity": (
+                "velocity",
+                vr,
+                var_attrs(
+                    "m s-1", "centre-of-mass speed when clear of the target (0: no perforation)"
+                ),
+            ),
+            "recht_ipson": (
+                "velocity",
+                curve,
+                var_attrs("m s-1", "Recht-Ipson curve a (v^p - v_bl^p)^(1/p) fitted to the runs"),
+            ),
+            "exit_pitch": (
+                "velocity",
+                pitch,
+                var_attrs("degree", "axis angle from the normal at exit (NaN: no perforation)"),
+            ),
+            "outcome": ("velocity", outcome, {"units": "1", "long_name": "outcome of the run"}),
+        },  # fmt: skip
+        coords=_velocity_coord(v),
+        attrs={
+            "title": "pencore residual velocity against impact velocity",
+            "projectile": pr.projectile.name,
+            "medium": pr.target.name,
+            "obliquity_deg": float(obliquity),
+            "yaw_deg": float(yaw),
+            "v_bl_m_s": float(fit["v_bl"]),
+            "recht_ipson_a": float(fit["a"]),
+            "recht_ipson_p": float(fit["p"]),
+            "recht_ipson_rms_m_s": float(fit["rms"]),
+            "Conventions": "CF-1.8",
+        },
+    )
+
+
+def ballistic_table(
+    projectile: Any,
+    medium: str,
+    thicknesses: Sequence[float],
+    obliquities: Sequence[float],
+    *,
+    lo: float = 50.0,
+    hi: float = 3000.0,
+    tol: float = VELOCITY_TOL,
+    scan: int | None = 5,
+    numerics: Numerics | Mapping[str, Any] | None = None,
+    progress: Progress = None,
+) -> xr.Dataset:
+    """Ballistic limit (m/s) of a slab of ``medium`` on ``(thickness m, obliquity deg)``,
+    as :func:`pencore.studies.perforation.slabs.ballistic_limit_map` with progress."""
+    th = axis_values(thicknesses, "thicknesses")
+    obl = axis_values(obliquities, "obliquities")
+    num = resolve_numerics(numerics)
+    res = np.empty((th.size, obl.size), dtype=object)
+    for i, h in enumerate(th):
+        t = slab_target(medium, h)
+        for j, o in enumerate(obl):
+            r = ballistic_limit(projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan,
+                                numerics=num)  # fmt: skip
+            res[i, j] = r
+            if progress is not None:
+                shown = f"{r.value:.5g} m/s" if r.converged else f"not found ({r.status})"
+                progress(f"{h:g} m at {o:g} deg: v_bl {shown}")
+    dims = ("thickness", "obliquity")
+    ds = xr.Dataset(
+        search_variables(
+            res, "v_bl", "m s-1", "ballistic limit (lowest speed that perforates)", dims
+        ),
+        coords={
+            "thickness": ("thickness", th, var_attrs("m", "slab thickness")),
+            "obliquity": ("obliquity", obl, var_attrs("degree", "obliquity of the axis")),
+        },
+        attrs={
+            "title": "pencore ballistic limit against slab thickness and obliquity",
+            "projectile": str(getattr(projectile, "name", projectile)),
+            "medium": medium,
+            "search_lo_m_s": float(lo),
+            "search_hi_m_s": float(hi),
+            "search_tol_m_s": float(tol),
+            "Conventions": "CF-1.8",
+        },
+    )
+    return ds

@@ -1,0 +1,64 @@
+"""depth-curve, residual-velocity and ballistic-table on the command line: the table
+round trips through CSV and netCDF, a progress line per point, exit 3 for a cell with no
+threshold."""
+
+import json
+
+import numpy as np
+import xarray as xr
+
+import pencore
+from pencore.cli.main import main
+from pencore.cli.summary import read_csv
+
+
+def test_depth_curve_csv_round_trip_and_progress(tmp_path, capsys):
+    out = tmp_path / "depth.csv"
+    argv = ["depth-curve", "--projectile", "p2", "--target", "soil", "--velocities", "200",
+            "300", "--out", str(out), "--format", "json"]  # fmt: skip
+    assert main(argv) == 0
+    cap = capsys.readouterr()
+    assert json.loads(cap.out)["depth_max"]["units"] == "m"
+    assert cap.err.splitlines()[0].startswith("[1/2] 200 m/s: depth")
+    frame = read_csv(out)
+    assert frame.attrs["units"]["penetration_depth"] == "m"
+    assert frame.attrs["units"]["peak_deceleration"] == "m s-2"
+    for k, v in enumerate((200.0, 300.0)):
+        ds = pencore.simulate("p2", "soil", v)
+        assert frame.velocity[k] == v
+        assert frame.penetration_depth[k] == float(ds.penetration_depth)
+        assert frame.peak_deceleration_g[k] == ds.attrs["peak_deceleration_g"]
+
+
+def test_residual_velocity_netcdf_and_plot(tmp_path, capsys):
+    plate = tmp_path / "plate.yaml"
+    plate.write_text("name: plate\nlayers:\n  - medium: aluminium\n    thickness: 0.02\n")
+    out, png = tmp_path / "rv.nc", tmp_path / "rv.png"
+    argv = ["residual-velocity", "--projectile", "p2", "--target", str(plate), "--range",
+            "150", "450", "4", "--out", str(out), "--plot", str(png), "--quiet"]  # fmt: skip
+    assert main(argv) == 0
+    assert capsys.readouterr().err == ""
+    with xr.open_dataset(out) as ds:
+        np.testing.assert_array_equal(ds.velocity.values, [150.0, 250.0, 350.0, 450.0])
+        assert ds.residual_velocity.attrs["units"] == "m s-1"
+        assert (ds.residual_velocity.values > 0).all()
+        assert ds.attrs["recht_ipson_p"] > 0
+    assert png.stat().st_size > 0
+
+
+def test_residual_velocity_needs_a_finite_target(capsys):
+    argv = ["residual-velocity", "--projectile", "p2", "--target", "soil", "--velocities", "300"]
+    assert main(argv) == 2
+    assert "no rear face" in capsys.readouterr().err
+
+
+def test_ballistic_table_exit_3_when_a_cell_is_not_found(tmp_path, capsys):
+    out = tmp_path / "bt.csv"
+    argv = ["ballistic-table", "--projectile", "p2", "--medium", "aluminium", "--thicknesses",
+            "0.01", "--obliquities", "0", "--lo", "50", "--hi", "60", "--out", str(out),
+            "--format", "json", "--quiet"]  # fmt: skip
+    assert main(argv) == 3
+    s = json.loads(capsys.readouterr().out)
+    assert s["cells_not_found"]["value"] == 1
+    frame = read_csv(out)
+    assert frame.status[0] == "above_range" and np.isnan(frame.v_bl[0])
