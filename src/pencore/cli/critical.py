@@ -16,8 +16,8 @@ from typing import Any
 
 from pencore.cli.options import (
     exit_at_once_on_interrupt,
-    numerics_given,
     number_type,
+    numerics_given,
     obliquity,
     resolve,
     velocity,
