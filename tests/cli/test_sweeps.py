@@ -37,7 +37,10 @@ def test_residual_velocity_netcdf_and_plot(tmp_path, capsys):
     argv = ["residual-velocity", "--projectile", "p2", "--target", str(plate), "--range",
             "150", "450", "4", "--out", str(out), "--plot", str(png), "--quiet"]  # fmt: skip
     assert main(argv) == 0
-    assert capsys.readouterr().err == ""
+    # a 2 cm plate is 0.21 calibres of #2 on the half-space law: one plausibility line
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1 and err[0].startswith("pencore: warning: target 'plate' layer 0: ")
+    assert "plate thickness 0.210592 calibres" in err[0]
     with xr.open_dataset(out) as ds:
         np.testing.assert_array_equal(ds.velocity.values, [150.0, 250.0, 350.0, 450.0])
         assert ds.residual_velocity.attrs["units"] == "m s-1"

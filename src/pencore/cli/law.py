@@ -5,10 +5,6 @@ coefficients a target file takes, with their units and provenance."""
 from __future__ import annotations
 
 import argparse
-import sys
-import warnings
-
-from pencore.cli.options import one_line
 
 __all__ = ["add_parser", "run"]
 
@@ -94,11 +90,8 @@ def run(args: argparse.Namespace) -> int:
         if args.inertia == "compressible":
             kwargs["max_speed"] = args.max_speed
         kwargs["finite_sphere"] = args.finite_sphere
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        medium = laws.LAWS[args.law][0](**kwargs)
-    for w in caught:
-        print(f"pencore: warning: {one_line(str(w.message))}", file=sys.stderr)
+    # a plausibility warning: one line on stderr (pencore.cli.main), the usual filters apply
+    medium = laws.LAWS[args.law][0](**kwargs)
     a = medium.coefficients
     units = ("Pa", "Pa s/m", "Pa s^2/m^2")
     print(f"law:     {args.law}")
