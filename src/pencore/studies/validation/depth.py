@@ -33,9 +33,9 @@ from pencore.inputs.geometry import OgiveNose
 from pencore.inputs.library import get_projectile, get_target
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.target import Medium
+from pencore.paper.shots import read_shot_table
 from pencore.run.impact import prepare, simulate
 from pencore.studies.common import var_attrs
-from pencore.studies.validation.measurements import read_shot_table
 
 __all__ = [
     "fig5",
@@ -229,7 +229,7 @@ def fig5(
         ``[v_min, v_max]``, the rest are NaN.
     numerics : Numerics or mapping, optional
     shots : sequence of paths
-        Shot tables (:func:`pencore.studies.validation.measurements.read_shot_table`); every shot's
+        Shot tables (:func:`pencore.paper.shots.read_shot_table`); every shot's
         projectile must be the projectile of at least one case. The shots are drawn, not
         run here: :func:`pencore.studies.validation.measurements.measured_vs_predicted` runs each at
         its measured impact.
