@@ -228,6 +228,29 @@ def _validation_projectiles() -> dict[str, Projectile]:
             source="assumed: 76.2 mm, 13.0 kg solid steel (Forrestal et al. 1994 class; "
             "M/(rho d^3)=15.2 in Li & Chen 2003); replace with the published geometry",
         )
+    # Grout (paper Fig. 5's concrete points, very probably): the measured rods of the 13.5 MPa
+    # grout shots, 12.9 mm, 88.9 mm long, 0.064 kg (config/concrete_ogive_shots.csv, a
+    # secondary compilation of Forrestal et al. 1996). A solid steel body of that outline
+    # weighs about 0.08 kg: the outline's steel is scaled to the measured mass (the same Lc,
+    # inertias in proportion).
+    d, length, mass = 0.0129, 0.0889, 0.064
+    for crh, tag in ((3.0, "3"), (4.25, "4p25")):
+        shank = length - d / 2 * math.sqrt(4 * crh - 1)
+
+        def rod(rho: float, crh: float = crh, shank: float = shank, tag: str = tag) -> Projectile:
+            return Projectile(
+                f"grout_crh{tag}",
+                d,
+                OgiveNose(crh, rho),
+                (Cylinder(shank, rho),),
+                source="Forrestal, Frew, Hanchak & Brar 1996, IJIE 18:465-476, via the "
+                "secondary compilation DavidZyh-0319/Concrete-Penetration-Failure-Response-"
+                f"Dataset (config/concrete_ogive_shots.csv): d 12.9 mm, length 88.9 mm, CRH "
+                f"{crh:g}, measured mass 0.064 kg; outline steel scaled to that mass",
+            )
+
+        outline = rod(7850.0).mass_properties().mass
+        out[f"grout_crh{tag}"] = rod(7850.0 * mass / outline)
     # Aluminium: the rods of the measured shots (config/aluminium_projectiles.yaml holds
     # every number with its page; tests/inputs check these against it).
     d = 0.00711

@@ -65,9 +65,10 @@ from pencore.inputs.library import get_projectile, get_target
 from pencore.inputs.limits import check_keys
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.target import Target
-from pencore.paper.shots import SHOT_COLUMNS, read_data_csv, shot_table
+from pencore.paper.shots import BODY_SHOT_COLUMNS, SHOT_COLUMNS, read_data_csv, shot_table
 from pencore.run.impact import prepare, simulate
 from pencore.studies.perforation.slabs import slab_target
+from pencore.studies.validation.bodies import body_rows
 
 __all__ = [
     "QUANTITIES",
@@ -90,13 +91,23 @@ QUANTITIES: dict[str, tuple[str, str, str]] = {
 }
 REQUIRED = ("test", "velocity_m_s", "obliquity_deg", "yaw_deg", "source")
 DEPTH_MEASURES = {"path_length": "path_length", "vertical_depth": "penetration_depth"}
-ENTRY_KEYS = ("name", "csv", "projectile", "target", "targets", "depth_measure", "label")
+ENTRY_KEYS = (
+    "name",
+    "csv",
+    "projectile",
+    "target",
+    "targets",
+    "laws",
+    "depth_measure",
+    "label",
+)
 
 #: Predictions compared with each depth shot in :func:`summary`: variable -> label.
 MODELS = {
     "predicted": "pencore (3-D, measured angles)",
     "closedform_depth": "closed form, exact nose entry",
     "cavity_form_depth": "closed form, full nose force from contact",
+    "forrestal_form_depth": "Forrestal's closed form, crater of 2 calibers",
 }
 
 
@@ -129,6 +140,16 @@ def _entry(entry: Mapping[str, Any]) -> dict[str, Any]:
             f"{', '.join(DEPTH_MEASURES)}, got {e['depth_measure']!r}"
         )
     return e
+
+
+def _is_body_table(e: Mapping[str, Any]) -> bool:
+    """Whether the entry's file is a body shot table (:data:`BODY_SHOT_COLUMNS`): shots
+    whose rods and targets are given by measured properties."""
+    df = read_data_csv(e["csv"], (), f"measurements {e['name']}")
+    body = set(BODY_SHOT_COLUMNS) <= set(df.columns)
+    if not body and "laws" in e:
+        raise InputError(f"measurements {e['name']}: laws apply to a body shot table only")
+    return body
 
 
 def _read_rows(e: Mapping[str, Any]) -> pd.DataFrame:
@@ -175,6 +196,8 @@ def load_measurements(entry: Mapping[str, Any]) -> pd.DataFrame:
         or non-finite number, or a row with no source; the message names the row.
     """
     e = _entry(entry)
+    if _is_body_table(e):
+        return body_rows(e)
     df = _read_rows(e)
     qcols = [c for c in QUANTITIES if c in df.columns]
     targets = e.get("targets") or [None]
@@ -247,13 +270,19 @@ def _slab(target: str, thickness: float, options: Mapping[str, float] | None = N
 def _predict(
     row: pd.Series, num: Numerics, cache: dict, options: Mapping[str, float] | None = None
 ) -> tuple[float, str]:
-    key = (row["projectile"], row["target"], row["thickness_m"])
+    body = _body(row)
+    key = (row["projectile"], row["target_key"] if body else row["target"], row["thickness_m"])
     if key not in cache:
-        target = _slab(row["target"], row["thickness_m"], options)
-        cache[key] = (target, prepare(row["projectile"], target, num))
+        if body:
+            t = row["target_body"]
+            target = t.with_windows(**options) if options else t
+        else:
+            target = _slab(row["target"], row["thickness_m"], options)
+        proj = row["projectile_body"] if body else row["projectile"]
+        cache[key] = (target, prepare(proj, target, num))
     target, pr = cache[key]
     ds = simulate(
-        row["projectile"],
+        row["projectile_body"] if body else row["projectile"],
         target,
         row["velocity_m_s"],
         row["obliquity_deg"],
@@ -266,24 +295,37 @@ def _predict(
     return float(ds[DEPTH_MEASURES[row["depth_measure"]]]), outcome
 
 
-def _closed_forms(row: pd.Series, cache: dict) -> tuple[float, float]:
-    """The two closed-form depths (m) of a depth shot into a half-space at its striking
-    speed (normal incidence, no yaw): exact nose entry, and full nose force from contact.
-    NaN for other quantities, finite targets, or laws the closed forms do not cover."""
+def _body(row: pd.Series) -> bool:
+    """Whether the row is a body shot (its projectile and target built, not named)."""
+    return isinstance(row.get("target_body"), Target)
+
+
+def _closed_forms(row: pd.Series, cache: dict) -> tuple[float, float, float]:
+    """The closed-form depths (m) of a depth shot into a half-space at its striking speed
+    (normal incidence, no yaw): exact nose entry, full nose force from contact, and (body
+    shots only) Forrestal's form with its crater region of two calibers
+    (:func:`pencore.closedform.forrestal_crater_depth`, k = 2). NaN for other quantities,
+    finite targets, or laws the closed forms do not cover."""
+    nan3 = (math.nan, math.nan, math.nan)
     if row["quantity"] != "penetration_depth" or math.isfinite(row["thickness_m"]):
-        return math.nan, math.nan
-    key = (row["projectile"], row["target"])
-    if key not in cache:
-        layers = get_target(row["target"]).layers
-        cache[key] = (get_projectile(row["projectile"]), layers[0].medium, len(layers) == 1)
-    proj, medium, single = cache[key]
+        return nan3
+    body = _body(row)
+    if body:
+        proj, medium, single = row["projectile_body"], row["target_body"].layers[0].medium, True
+    else:
+        key = (row["projectile"], row["target"])
+        if key not in cache:
+            layers = get_target(row["target"]).layers
+            cache[key] = (get_projectile(row["projectile"]), layers[0].medium, len(layers) == 1)
+        proj, medium, single = cache[key]
     if not single:
-        return math.nan, math.nan
+        return nan3
     try:
         v = row["velocity_m_s"]
-        return closedform.depth(proj, medium, v), closedform.tunnel_depth(proj, medium, v)
+        crater = closedform.forrestal_crater_depth(proj, medium, v) if body else math.nan
+        return closedform.depth(proj, medium, v), closedform.tunnel_depth(proj, medium, v), crater
     except ValueError:  # friction, higher terms, near-surface options: no closed form
-        return math.nan, math.nan
+        return nan3
 
 
 def measured_vs_predicted(
@@ -323,6 +365,7 @@ def measured_vs_predicted(
     closed = [_closed_forms(r, cf_cache) for _, r in df.iterrows()]
     df["closedform_depth"] = [c[0] for c in closed]
     df["cavity_form_depth"] = [c[1] for c in closed]
+    df["forrestal_form_depth"] = [c[2] for c in closed]
 
     def a(units: str, long_name: str) -> dict[str, str]:
         return {"units": units, "long_name": long_name}
@@ -390,6 +433,11 @@ def measured_vs_predicted(
         (
             "cavity_form_depth",
             "closed-form depth, full nose force from contact (pencore.closedform.tunnel_depth)",
+        ),
+        (
+            "forrestal_form_depth",
+            "Forrestal's closed-form depth with a crater of two calibers "
+            "(pencore.closedform.forrestal_crater_depth; NaN: not a body shot)",
         ),
     ):
         values = df[var].to_numpy(dtype=float)
