@@ -60,7 +60,7 @@ import xarray as xr
 
 from pencore import closedform
 from pencore.analysis.errors import relative_errors, sample_statistics, summary_statistics
-from pencore.errors import InputError
+from pencore.errors import InputError, TargetError
 from pencore.inputs.library import get_projectile, get_target
 from pencore.inputs.limits import check_keys
 from pencore.inputs.numerics import Numerics, resolve_numerics
@@ -275,12 +275,20 @@ def _predict(
     if key not in cache:
         if body:
             t = row["target_body"]
-            target = t.with_windows(**options) if options else t
+            try:
+                target = t.with_windows(**options) if options else t
+                cache[key] = (target, prepare(row["projectile_body"], target, num))
+            except TargetError as err:
+                if not options:
+                    raise
+                # an option this rod cannot take (a crater shorter than its nose)
+                cache[key] = (None, f"option not applicable: {err}")
         else:
             target = _slab(row["target"], row["thickness_m"], options)
-        proj = row["projectile_body"] if body else row["projectile"]
-        cache[key] = (target, prepare(proj, target, num))
+            cache[key] = (target, prepare(row["projectile"], target, num))
     target, pr = cache[key]
+    if target is None:
+        return math.nan, pr
     ds = simulate(
         row["projectile_body"] if body else row["projectile"],
         target,
@@ -612,7 +620,9 @@ def statistics_by_option(
     Every shot of every data file is run once per option set (``options``: name ->
     settings of :data:`NEAR_SURFACE_KEYS` applied to every medium of the target; ``{}``
     is the paper's model). Groups are ``material`` (the target's name) and ``quantity``
-    (:data:`QUANTITIES`).
+    (:data:`QUANTITIES`). A body shot whose rod an option cannot apply to (a crater shorter
+    than its nose) has no prediction under that option (NaN) and is left out of that
+    option's statistics.
 
     Returns
     -------
@@ -650,7 +660,8 @@ def statistics_by_option(
     stats: dict[str, np.ndarray] = {}
     for i in range(len(names)):
         for g, grp in enumerate(groups):
-            sel = (key == grp) & rigid & np.isfinite(measured)
+            # a shot the option cannot apply to (NaN) is left out of that option's group
+            sel = (key == grp) & rigid & np.isfinite(measured) & np.isfinite(pred[i])
             for k, v in sample_statistics(measured[sel], pred[i, sel]).items():
                 stats.setdefault(k, np.full((len(names), len(groups)), np.nan))[i, g] = v
     ds = xr.Dataset(
