@@ -328,12 +328,18 @@ def _closed_forms(row: pd.Series, cache: dict) -> tuple[float, float, float]:
         proj, medium, single = cache[key]
     if not single:
         return nan3
+    v = row["velocity_m_s"]
     try:
-        v = row["velocity_m_s"]
-        crater = closedform.forrestal_crater_depth(proj, medium, v) if body else math.nan
-        return closedform.depth(proj, medium, v), closedform.tunnel_depth(proj, medium, v), crater
+        exact = closedform.depth(proj, medium, v), closedform.tunnel_depth(proj, medium, v)
     except ValueError:  # friction, higher terms, near-surface options: no closed form
         return nan3
+    crater = math.nan
+    if body:
+        try:
+            crater = closedform.forrestal_crater_depth(proj, medium, v)
+        except ValueError:  # a nose longer than the crater's two calibers (CRH > 4.25)
+            pass
+    return (*exact, crater)
 
 
 def measured_vs_predicted(
