@@ -479,12 +479,13 @@ def measurements_table() -> str:
 
 
 def _concrete_summary():  # noqa: ANN202 (pandas.DataFrame)
-    """The validation summary's rows of the body shot sets (the concrete family): those
-    whose shots have Forrestal's closed form."""
+    """The validation summary's rows of the body shot sets (the concrete family): the data
+    sets named after a set of their file, not after the file's entry (the shot's prefix)."""
     t = _validation_summary()
     with open_archive(ARCHIVE / "validation" / "measurements.nc", "validation/measurements") as m:
-        body = m["dataset"].values[m["forrestal_form_depth"].notnull().values]
-    return t[t["data_set"].isin(set(body.astype(str)))]
+        entry = [str(s).split(":", 1)[0] for s in m["shot"].values]
+        body = {str(d) for d, e in zip(m["dataset"].values, entry, strict=True) if str(d) != e}
+    return t[t["data_set"].isin(body)]
 
 
 def concrete_table() -> str:

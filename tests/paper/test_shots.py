@@ -151,6 +151,14 @@ def test_concrete_table_fig5_grout_shots(concrete):
     assert 0.064 / (1960 * 0.0129**3) == pytest.approx(15.2, abs=0.05)
 
 
+def test_concrete_table_strengths(concrete):
+    # the docs: O'Neil et al.'s 155-163 MPa lie beyond the 13.5-108 MPa of every other set
+    oneil = concrete["reference_key"] == "O’Neil[55]"
+    fc = concrete["fc_pa"] / 1e6
+    assert (fc[oneil].min(), fc[oneil].max()) == (155.0, 163.0)
+    assert fc[~oneil].min() == 13.5 and 108 <= fc[~oneil].max() < 109
+
+
 def test_concrete_table_li_chen_shot(concrete):
     # the 26.9 mm shot Li & Chen (2003) quote: 277 m/s, 173 mm
     row = concrete.set_index("row").loc["52"]
