@@ -7,6 +7,7 @@ import argparse
 import math
 
 from pencore.cli.options import (
+    add_mass_options,
     add_window_options,
     exit_at_once_on_interrupt,
     number_type,
@@ -14,6 +15,7 @@ from pencore.cli.options import (
     obliquity,
     resolve,
     velocity,
+    with_mass,
     with_windows,
 )
 from pencore.inputs.numerics import resolve_numerics
@@ -61,6 +63,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         metavar="M_S",
         help="width of the final bracket in m/s (default: 5)",
     )
+    add_mass_options(p)
     add_window_options(p)
     p.add_argument(
         "--numerics",
@@ -81,7 +84,7 @@ def run(args: argparse.Namespace) -> int:
     exit_at_once_on_interrupt()
     if not args.lo < args.hi:
         raise InputError(f"--lo {args.lo:g} must be below --hi {args.hi:g} (m/s)")
-    projectile = resolve("projectile", args.projectile, get_projectile)
+    projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
     target = with_windows(resolve("target", args.target, get_target), args)
     r = ballistic_limit(
         projectile,

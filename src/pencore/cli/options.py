@@ -40,6 +40,8 @@ __all__ = [
     "numerics_option",
     "add_window_options",
     "with_windows",
+    "add_mass_options",
+    "with_mass",
     "check_output",
     "resolve",
     "cli_inputs",
@@ -256,6 +258,71 @@ def with_windows(target: Any, args: argparse.Namespace) -> Any:
     if args.crater_depth is None and args.free_surface_depth is None and ratio is None:
         return target
     return target.with_windows(args.crater_depth, args.free_surface_depth, ratio)
+
+
+def add_mass_options(p: argparse.ArgumentParser) -> None:
+    """Add ``--mass KG``, ``--centre-of-mass M`` and ``--inertia AXIAL TRANSVERSE`` to a
+    subcommand: measured mass properties that override the projectile's (see
+    :class:`pencore.Projectile` for what is derived from the outline when not given).
+
+    Parameters
+    ----------
+    p : argparse.ArgumentParser
+        The subcommand's parser; each option defaults to ``None`` (the projectile's own).
+    """
+    p.add_argument(
+        "--mass",
+        type=number_type("mass"),
+        default=None,
+        metavar="KG",
+        help="measured projectile mass in kg (default: the projectile's own; the outline's "
+        "distribution is scaled to it: same Lc, inertias scaled)",
+    )
+    p.add_argument(
+        "--centre-of-mass",
+        type=number_type("centre_of_mass"),
+        default=None,
+        metavar="M",
+        help="measured tip-to-centre-of-mass distance Lc in m, inside the body (default: "
+        "the projectile's own)",
+    )
+    p.add_argument(
+        "--inertia",
+        type=number_type("inertia"),
+        nargs=2,
+        default=None,
+        metavar=("AXIAL", "TRANSVERSE"),
+        help="measured moments of inertia about the centre of mass in kg m^2 (default: "
+        "from the outline)",
+    )
+
+
+def with_mass(projectile: Any, args: argparse.Namespace) -> Any:
+    """Apply the mass options of :func:`add_mass_options` to a projectile.
+
+    Parameters
+    ----------
+    projectile : pencore.Projectile
+        The resolved projectile.
+    args : argparse.Namespace
+        Parsed arguments with ``mass``, ``centre_of_mass`` and ``inertia`` (or ``None``).
+
+    Returns
+    -------
+    pencore.Projectile
+        ``projectile`` with the given values, or ``projectile`` itself when none is given.
+
+    Raises
+    ------
+    pencore.errors.GeometryError
+        A value no body of this outline can have (one line naming it).
+    """
+    mass = getattr(args, "mass", None)
+    lc = getattr(args, "centre_of_mass", None)
+    inertia = getattr(args, "inertia", None)
+    if mass is None and lc is None and inertia is None:
+        return projectile
+    return projectile.with_mass(mass, lc, None if inertia is None else tuple(inertia))
 
 
 def check_output(out: str, inputs: Sequence[str] = ()) -> Path:

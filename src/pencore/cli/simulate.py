@@ -10,6 +10,7 @@ import time
 
 from pencore.cli.options import (
     CommandFailure,
+    add_mass_options,
     add_window_options,
     check_output,
     cli_inputs,
@@ -19,6 +20,7 @@ from pencore.cli.options import (
     obliquity,
     resolve,
     velocity,
+    with_mass,
     with_windows,
 )
 from pencore.inputs.numerics import resolve_numerics
@@ -35,6 +37,9 @@ simulate options (all SI, angles in degrees):
   --yaw DEG               velocity angle minus axis angle (deg)
   --omega RAD_S           initial angular velocity about +z (rad/s)
   --start X Y Z           initial nose-tip position (m)
+  --mass KG               measured projectile mass (outline distribution scaled)
+  --centre-of-mass M      measured tip-to-centre-of-mass distance Lc (m)
+  --inertia IA IT         measured axial, transverse inertia about the c.m. (kg m^2)
   --stop-at-reversal      end the run at the first trajectory reversal
   --crater-depth K        Forrestal's crater region (F = c z) over K calibers
   --free-surface-depth K  resistance ramp within K calibers of a free face
@@ -118,6 +123,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         help="end the run at the first reversal of the trajectory (dy/dx "
         "changes sign; outcome 'reversed')",
     )
+    add_mass_options(sim)
     add_window_options(sim)
     sim.add_argument(
         "--numerics",
@@ -155,7 +161,7 @@ def run(args: argparse.Namespace) -> int:
     exit_at_once_on_interrupt()
     inputs = [args.projectile, args.target]
     out = check_output(args.out, inputs) if args.out is not None else None
-    projectile = resolve("projectile", args.projectile, get_projectile)
+    projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
     target = with_windows(resolve("target", args.target, get_target), args)
     numerics = resolve_numerics(dict(args.numerics))
     if numerics.v_stop >= args.velocity:

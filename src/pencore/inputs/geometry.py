@@ -20,7 +20,7 @@ Conventions
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -332,12 +332,42 @@ class Projectile:
         Cylindrical segments from front to back.
     source : str
         Provenance of the numbers (``paper``, ``derived: ...``, ``assumed: ...``).
+    mass : float, optional
+        Measured mass (kg). Default: the outline's mass (segment densities times volumes).
+    centre_of_mass : float, optional
+        Measured tip-to-centre-of-mass distance ``Lc`` (m), inside the body's length.
+    inertia : (float, float), optional
+        Measured moments of inertia ``(i_axial, i_transverse)`` about the centre of mass
+        (kg m^2).
+
+    Notes
+    -----
+    What the solver uses (:meth:`mass_properties`, the one place every path reads the
+    mass, ``Lc`` and the inertias from; the surface bands are placed relative to ``Lc``):
+
+    * nothing given: the outline's distribution (segment densities), as computed;
+    * ``mass`` only: the outline's distribution scaled by ``f = mass / m_outline``: the same
+      ``Lc``, both inertias times ``f`` (a hollow or fuzed body taken as the solid outline
+      made lighter or heavier everywhere in proportion);
+    * ``centre_of_mass`` without ``inertia``: the (scaled) outline's axial inertia, and its
+      transverse inertia moved from the outline's centre of mass to the given one by the
+      parallel-axis theorem, ``f I_t + m (Lc - Lc_outline)^2`` (the scaled outline's inertia
+      about the given point: the choice adds no distribution the user did not give);
+    * ``inertia`` given: used as given.
+
+    A given value is checked against the body's outline: ``mass`` at most the outline
+    filled with osmium (the densest element), ``Lc`` strictly inside ``(0, L)``, and the
+    inertias of a body of revolution of radius ``a`` and length ``L`` with its centre of
+    mass at ``Lc``: ``0 < I_axial <= m a^2`` (all mass within radius ``a``),
+    ``I_axial <= 2 I_transverse`` (``I_t = I_axial / 2 + integral x^2 dm``) and
+    ``I_transverse <= I_axial / 2 + m max(Lc, L - Lc)^2``.
 
     Raises
     ------
     GeometryError
         A value out of its range, a nose or segment of the wrong type, a name that is not
-        text (the one-line message names it).
+        text, a mass, centre of mass or inertia no body of this outline can have (the
+        one-line message names it).
 
     Examples
     --------
@@ -355,6 +385,20 @@ class Projectile:
     Traceback (most recent call last):
     ...
     pencore.errors.GeometryError: diameter must be in [0.0001, 10] m, got -0.03
+
+    The same outline with a measured mass of 1 kg (a hollow body): the outline's
+    distribution scaled, so the same ``Lc`` and inertias times 1 / 1.261:
+
+    >>> light = pencore.Projectile(
+    ...     "light", 0.03, pencore.OgiveNose(crh=3.0, density=7850.0),
+    ...     (pencore.Cylinder(0.2, 7850.0),), mass=1.0,
+    ... )
+    >>> ml = light.mass_properties()
+    >>> ratio = ml.i_transverse / mp.i_transverse
+    >>> print(f"{ml.mass:.3f} kg, Lc {ml.lc:.4f} m, I_t ratio {ratio:.4f}")
+    1.000 kg, Lc 0.1359 m, I_t ratio 0.7932
+    >>> light.mass_provenance()["inertia"]
+    'derived: outline distribution scaled by the given mass'
     """
 
     name: str
@@ -362,6 +406,9 @@ class Projectile:
     nose: Nose
     shank: tuple[Cylinder, ...] = field(default_factory=tuple)
     source: str = ""
+    mass: float | None = None
+    centre_of_mass: float | None = None
+    inertia: tuple[float, float] | None = None
 
     def __post_init__(self) -> None:
         _check("diameter", self.diameter)
@@ -383,6 +430,37 @@ class Projectile:
                 f"{LIMITS['length'].hi:g} m (the segment-length guard); a cone half-angle "
                 "this small is a typo"
             )
+        self._check_given(what)
+
+    def _check_given(self, what: str) -> None:
+        """Check the given mass, centre of mass and inertias (types and ranges here; the
+        bounds that need the outline in :meth:`mass_properties`, called at once)."""
+        if self.mass is not None:
+            object.__setattr__(self, "mass", _given("mass", self.mass, what))
+        if self.centre_of_mass is not None:
+            lc = _given("centre_of_mass", self.centre_of_mass, what)
+            object.__setattr__(self, "centre_of_mass", lc)
+        if self.inertia is not None:
+            pair = self.inertia
+            if isinstance(pair, dict):
+                raise GeometryError(
+                    f"{what}: inertia must be a pair (i_axial, i_transverse) in kg m^2, "
+                    f"got {brief(pair)}"
+                )
+            try:
+                n = len(pair)
+            except TypeError:
+                n = -1
+            if isinstance(pair, str) or n != 2:
+                raise GeometryError(
+                    f"{what}: inertia must be a pair (i_axial, i_transverse) in kg m^2, "
+                    f"got {brief(pair)}"
+                )
+            ia = _given("inertia", pair[0], what, "axial moment of inertia")
+            it = _given("inertia", pair[1], what, "transverse moment of inertia")
+            object.__setattr__(self, "inertia", (ia, it))
+        if self.given:
+            self.mass_properties()  # the bounds that need the outline, now
 
     @property
     def radius(self) -> float:
@@ -396,16 +474,192 @@ class Projectile:
     def length(self) -> float:
         return self.nose_length + sum(c.length for c in self.shank)
 
-    def mass_properties(self) -> MassProperties:
-        """Mass, centre of mass and inertia by Gauss-Legendre quadrature over thin discs.
+    @property
+    def given(self) -> bool:
+        """Whether any of ``mass``, ``centre_of_mass``, ``inertia`` is given."""
+        return not (self.mass is None and self.centre_of_mass is None and self.inertia is None)
 
-        Each disc of radius ``r`` and thickness ``ds`` contributes ``dm = rho pi r^2 ds``,
-        ``dI_axial = dm r^2 / 2`` and ``dI_transverse = dm (r^2/4 + (s - s_c)^2)``.
-        Computed once per (immutable) projectile and kept: every trajectory asks for it.
+    def with_mass(
+        self,
+        mass: float | None = None,
+        centre_of_mass: float | None = None,
+        inertia: tuple[float, float] | None = None,
+    ) -> Projectile:
+        """This body with measured mass properties (``None`` keeps what it has).
+
+        Parameters
+        ----------
+        mass : float, optional
+            Measured mass (kg).
+        centre_of_mass : float, optional
+            Tip-to-centre-of-mass distance ``Lc`` (m).
+        inertia : (float, float), optional
+            ``(i_axial, i_transverse)`` about the centre of mass (kg m^2).
+
+        Returns
+        -------
+        Projectile
+            A new projectile; see the class Notes for what is derived.
+
+        Examples
+        --------
+        >>> import pencore
+        >>> p = pencore.get_projectile("p2").with_mass(mass=20.0)
+        >>> print(f"{p.mass_properties().mass:.1f} kg")
+        20.0 kg
+        """
+        return replace(
+            self,
+            mass=self.mass if mass is None else mass,
+            centre_of_mass=self.centre_of_mass if centre_of_mass is None else centre_of_mass,
+            inertia=self.inertia if inertia is None else inertia,
+        )
+
+    def mass_provenance(self) -> dict[str, str]:
+        """Where :meth:`mass_properties` takes each quantity from.
+
+        Returns
+        -------
+        dict of str to str
+            Keys ``mass``, ``centre_of_mass``, ``inertia``; values ``"given"`` or
+            ``"derived: ..."`` saying how (see the class Notes).
+        """
+        scaled = self.mass is not None
+        if self.inertia is not None:
+            inertia = "given"
+        elif self.centre_of_mass is not None:
+            inertia = (
+                "derived: axial from the outline"
+                + (" scaled by the given mass" if scaled else "")
+                + "; transverse moved to the given centre of mass (parallel-axis theorem)"
+            )
+        elif scaled:
+            inertia = "derived: outline distribution scaled by the given mass"
+        else:
+            inertia = "derived: outline (segment densities)"
+        return {
+            "mass": "given" if scaled else "derived: outline (segment densities)",
+            "centre_of_mass": "given"
+            if self.centre_of_mass is not None
+            else "derived: outline (segment densities)",
+            "inertia": inertia,
+        }
+
+    def mass_properties(self) -> MassProperties:
+        """Mass, centre of mass and inertias the solver uses (the class Notes say how given
+        and derived values combine; without given values, the outline's).
+
+        Returns
+        -------
+        MassProperties
+            Computed once per (immutable) projectile and kept: every trajectory asks.
+
+        Raises
+        ------
+        GeometryError
+            A given value no body of this outline can have (see the class Notes).
         """
         cached = self.__dict__.get("_mass_properties")
         if cached is not None:
             return cached
+        mo = self.outline_mass_properties()
+        if not self.given:
+            object.__setattr__(self, "_mass_properties", mo)
+            return mo
+        what = f"projectile {brief(self.name)}"
+        length = mo.length
+        a = self.radius
+        if self.mass is not None:
+            rho_max = LIMITS["density"].hi
+            m_max = self.volume() * rho_max
+            if self.mass > m_max:
+                raise GeometryError(
+                    f"{what}: mass must be at most {m_max:.4g} kg (the outline filled with "
+                    f"osmium, {rho_max:g} kg/m^3), got {brief(self.mass)}"
+                )
+            m = self.mass
+        else:
+            m = mo.mass
+        f = m / mo.mass
+        if self.centre_of_mass is not None:
+            lc = self.centre_of_mass
+            if not 0.0 < lc < length:
+                raise GeometryError(
+                    f"{what}: centre of mass (tip distance Lc) must be inside the body, in "
+                    f"(0, {length:.6g}) m, got {brief(lc)}"
+                )
+        else:
+            lc = mo.lc
+        if self.inertia is not None:
+            i_ax, i_tr = self.inertia
+            arm = max(lc, length - lc)
+            bounds = (
+                (
+                    i_ax <= m * a * a,
+                    f"axial moment of inertia must be at most m a^2 = "
+                    f"{m * a * a:.4g} kg m^2 (all mass within the radius), got {brief(i_ax)}",
+                ),
+                (
+                    i_ax <= 2.0 * i_tr,
+                    f"axial moment of inertia must be at most twice the "
+                    f"transverse one ({2.0 * i_tr:.4g} kg m^2; a body of revolution), got "
+                    f"{brief(i_ax)}",
+                ),
+                (
+                    i_tr <= 0.5 * i_ax + m * arm * arm,
+                    f"transverse moment of inertia must be "
+                    f"at most I_axial / 2 + m max(Lc, L - Lc)^2 = "
+                    f"{0.5 * i_ax + m * arm * arm:.4g} kg m^2 (all mass within the length), got "
+                    f"{brief(i_tr)}",
+                ),
+            )
+            for ok, msg in bounds:
+                if not ok:
+                    raise GeometryError(f"{what}: {msg}")
+        else:
+            i_ax = f * mo.i_axial
+            i_tr = f * mo.i_transverse + m * (lc - mo.lc) ** 2
+        mp = MassProperties(float(m), float(lc), float(length), float(i_ax), float(i_tr))
+        object.__setattr__(self, "_mass_properties", mp)  # a cache, not a field
+        return mp
+
+    def outline_mass_properties(self) -> MassProperties:
+        """Mass, centre of mass and inertia of the outline with its segment densities, by
+        Gauss-Legendre quadrature over thin discs (whatever mass properties are given).
+
+        Each disc of radius ``r`` and thickness ``ds`` contributes ``dm = rho pi r^2 ds``,
+        ``dI_axial = dm r^2 / 2`` and ``dI_transverse = dm (r^2/4 + (s - s_c)^2)``.
+        Computed once per (immutable) projectile and kept.
+
+        Returns
+        -------
+        MassProperties
+        """
+        cached = self.__dict__.get("_outline_mass_properties")
+        if cached is not None:
+            return cached
+        m = m1 = i_ax = m2 = i_disc = 0.0
+        for s, (r, ds), rho in self._discs():
+            dm = rho * np.pi * r * r * ds
+            m += dm.sum()
+            m1 += (dm * s).sum()
+            m2 += (dm * s * s).sum()
+            i_ax += (0.5 * dm * r * r).sum()
+            i_disc += (0.25 * dm * r * r).sum()
+        if m <= 0.0:
+            raise GeometryError("the body has no volume (a flat nose needs a shank)")
+        lc = m1 / m
+        i_tr = i_disc + m2 - m * lc * lc
+        mp = MassProperties(float(m), float(lc), float(self.length), float(i_ax), float(i_tr))
+        object.__setattr__(self, "_outline_mass_properties", mp)  # a cache, not a field
+        return mp
+
+    def volume(self) -> float:
+        """Volume of the outline (m^3), by the quadrature of :meth:`outline_mass_properties`."""
+        return float(sum((np.pi * r * r * ds).sum() for _, (r, ds), _ in self._discs()))
+
+    def _discs(self) -> list[tuple[np.ndarray, np.ndarray, float]]:
+        """Gauss-Legendre thin discs per segment: ``(s, [r, ds], rho)`` (m, m, m, kg/m^3)."""
         a = self.radius
         parts: list[tuple[np.ndarray, np.ndarray, float]] = []  # s, r*ds-weights, rho
         ln = self.nose_length
@@ -419,21 +673,7 @@ class Projectile:
             ds = 0.5 * cyl.length * _GL_W
             parts.append((s, np.stack([np.full_like(s, a), ds]), cyl.density))
             s0 += cyl.length
-        m = m1 = i_ax = m2 = i_disc = 0.0
-        for s, (r, ds), rho in parts:
-            dm = rho * np.pi * r * r * ds
-            m += dm.sum()
-            m1 += (dm * s).sum()
-            m2 += (dm * s * s).sum()
-            i_ax += (0.5 * dm * r * r).sum()
-            i_disc += (0.25 * dm * r * r).sum()
-        if m <= 0.0:
-            raise GeometryError("the body has no volume (a flat nose needs a shank)")
-        lc = m1 / m
-        i_tr = i_disc + m2 - m * lc * lc
-        mp = MassProperties(float(m), float(lc), float(self.length), float(i_ax), float(i_tr))
-        object.__setattr__(self, "_mass_properties", mp)  # a cache, not a field
-        return mp
+        return parts
 
     def rings(self, n_nose: int = 48, n_shank: int = 24, n_face: int = 4) -> Rings:
         """Surface bands: ``n_nose`` on the nose, ``n_shank`` per metre-ish of shank
@@ -518,6 +758,14 @@ class Projectile:
     def nose_factor(self) -> float:
         """Nose factor N* of the frictionless DAFL axial force (see :func:`nose_factor`)."""
         return nose_factor(self.nose)
+
+
+def _given(key: str, value: float, what: str, label: str = "") -> float:
+    """A given mass property as a float in ``LIMITS[key]``, else :class:`GeometryError`."""
+    try:
+        return number(value, key, what, label=label)
+    except InputError as exc:
+        raise GeometryError(str(exc)) from None
 
 
 def nose_factor(nose: Nose) -> float:

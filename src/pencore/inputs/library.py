@@ -253,9 +253,16 @@ def _validation_projectiles() -> dict[str, Projectile]:
         out[f"grout_crh{tag}"] = rod(7850.0 * mass / outline)
     # Aluminium: the rods of the measured shots (config/aluminium_projectiles.yaml holds
     # every number with its page; tests/inputs check these against it).
+    # Each rod's mass is the mean of the per-shot masses its tables print (the shot files'
+    # mass_kg column; tests/inputs/test_library.py checks the means): the outline gives
+    # 20.440 g (VAR 4340 ogive), 20.597 g (AerMet 100 ogive: 1.4 % light) and 22.840 g
+    # (sphere) against the measured 20.438, 20.892 and 22.827 g.
     d = 0.00711
     p1999 = "Piekutowski et al. 1999, IJIE 23:723-734"
-    for steel, rho in (("var4340", 7830.0), ("aermet100", 7890.0)):
+    for steel, rho, mass, table in (
+        ("var4340", 7830.0, 0.0204379, "Table 1 (p. 725), 20 shots"),
+        ("aermet100", 7890.0, 0.0208919, "Table 2 (p. 726), 14 shots"),
+    ):
         out[f"al_ogive_{steel}"] = Projectile(
             f"al_ogive_{steel}",
             d,
@@ -263,7 +270,9 @@ def _validation_projectiles() -> dict[str, Projectile]:
             (Cylinder(0.0593, rho),),
             source=f"{p1999}: 2a = 7.11 mm, CRH 3.0, nose 11.8 mm, shank 59.3 mm (Fig. 1, "
             f"p. 724; p. 731), {'VAR 4340' if steel == 'var4340' else 'AerMet 100'} steel "
-            f"{rho:g} kg/m3 (p. 731)",
+            f"{rho:g} kg/m3 (p. 731); mass {mass * 1e3:.4f} g measured (mean of {table}), "
+            "outline distribution scaled",
+            mass=mass,
         )
     f2000 = "Forrestal & Piekutowski 2000, IJIE 24:57-67 (manuscript SAND99-0322J)"
     out["al_sphere_var4340"] = Projectile(
@@ -273,7 +282,9 @@ def _validation_projectiles() -> dict[str, Projectile]:
         (Cylinder(0.0711, 7830.0),),
         source=f"{f2000}: 2a = 7.11 mm, hemispherical nose, shank 71.1 mm (Fig. 1), VAR 4340 "
         "steel, Rc 36.6 / 39.5 / 46.2 (Tables 1-3); density 7830 kg/m3 derived (p. 10: 'a and "
-        "rho are the same' as the 1999 VAR 4340 rods)",
+        "rho are the same' as the 1999 VAR 4340 rods); mass 22.8271 g measured (mean of "
+        "Tables 1-3, pp. 14-15, 31 shots), outline distribution scaled",
+        mass=0.0228271,
     )
     return out
 
@@ -389,6 +400,11 @@ _NOSE_KEYS = {
 def projectile_from_dict(d: dict[str, Any]) -> Projectile:
     """Build a projectile from a mapping (the YAML format of the user guide's inputs page).
 
+    Besides the outline (``diameter``, ``nose``, ``shank``), a mapping may give measured
+    ``mass`` (kg), ``centre_of_mass`` (tip distance Lc, m) and
+    ``inertia: {axial: ..., transverse: ...}`` (kg m^2, about the centre of mass); see
+    :class:`~pencore.Projectile` for what is derived from the outline when they are not.
+
     Unknown keys, booleans or text where numbers belong, and values outside
     :data:`pencore.inputs.limits.LIMITS` raise :class:`~pencore.InputError` naming the key and
     value.
@@ -397,7 +413,11 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
         raise InputError(f"projectile definition must be a mapping, got {type(d).__name__}")
     name = str(d.get("name", "projectile"))
     what = f"projectile {brief(name)}"
-    check_keys(d, ("name", "diameter", "nose", "shank", "source"), what)
+    check_keys(
+        d,
+        ("name", "diameter", "nose", "shank", "source", "mass", "centre_of_mass", "inertia"),
+        what,
+    )
     diameter = _num(d, "diameter", what)
     nd = d.get("nose")
     if not isinstance(nd, dict):
@@ -428,7 +448,25 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
         w = f"{what} shank segment {k}"
         check_keys(c, ("length", "density"), w)
         cyl.append(Cylinder(_num(c, "length", w), _num(c, "density", w)))
-    p = Projectile(name, diameter, nose, tuple(cyl), source=str(d.get("source", "user file")))
+    given: dict[str, Any] = {}
+    if "mass" in d:
+        given["mass"] = _num(d, "mass", what)
+    if "centre_of_mass" in d:
+        given["centre_of_mass"] = _num(d, "centre_of_mass", what)
+    if "inertia" in d:
+        inertia = d["inertia"]
+        if not isinstance(inertia, dict):
+            raise InputError(
+                f"{what}: 'inertia' must be a mapping {{axial: ..., transverse: ...}} in "
+                f"kg m^2, got {brief(inertia)}"
+            )
+        check_keys(inertia, ("axial", "transverse"), f"{what} inertia")
+        given["inertia"] = tuple(
+            _num(inertia, k, f"{what} inertia", "inertia") for k in ("axial", "transverse")
+        )
+    p = Projectile(
+        name, diameter, nose, tuple(cyl), source=str(d.get("source", "user file")), **given
+    )
     p.mass_properties()  # a body with no volume fails here, not later in a run
     return p
 

@@ -165,6 +165,33 @@ LIMITS: dict[str, Limit] = {
     "half_angle_deg": Limit(
         "cone half-angle", "deg", 0.0, 90.0, True, True, why="a cone must close"
     ),
+    "mass": Limit(
+        "mass",
+        "kg",
+        0.0,
+        1e5,
+        lo_open=True,
+        kind="physical / guard",
+        why="> 0 (measured mass); 100 t is a typo guard; also at most the outline full of osmium",
+    ),
+    "centre_of_mass": Limit(
+        "centre of mass (tip distance Lc)",
+        "m",
+        0.0,
+        100.0,
+        lo_open=True,
+        kind="physical / guard",
+        why="> 0 and inside the body's length",
+    ),
+    "inertia": Limit(
+        "moment of inertia",
+        "kg m^2",
+        0.0,
+        1e6,
+        lo_open=True,
+        kind="physical / guard",
+        why="> 0; a body of revolution also has I_axial <= m a^2 and I_axial <= 2 I_transverse",
+    ),
     # target
     "coefficient": Limit(
         "resistance coefficient",

@@ -53,6 +53,9 @@ def _target_dict(t: Target) -> dict[str, Any]:
 def _projectile_dict(p: Projectile) -> dict[str, Any]:
     d = asdict(p)
     d["nose"]["kind"] = type(p.nose).__name__
+    for key in ("mass", "centre_of_mass", "inertia"):  # recorded only when given
+        if d[key] is None:
+            del d[key]
     return d
 
 
@@ -240,6 +243,9 @@ def trajectory_dataset(
             "lc_m": lc,
             "length_m": projectile.length,
             "lc_over_l": lc / projectile.length,
+            "i_axial_kg_m2": mp.i_axial,
+            "i_transverse_kg_m2": mp.i_transverse,
+            **{f"{k}_source": v for k, v in projectile.mass_provenance().items()},
             "inputs_json": json.dumps(
                 {
                     "impact": inputs,
