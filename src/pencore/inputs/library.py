@@ -231,26 +231,20 @@ def _validation_projectiles() -> dict[str, Projectile]:
     # Grout (paper Fig. 5's concrete points, very probably): the measured rods of the 13.5 MPa
     # grout shots, 12.9 mm, 88.9 mm long, 0.064 kg (config/concrete_ogive_shots.csv, a
     # secondary compilation of Forrestal et al. 1996). A solid steel body of that outline
-    # weighs about 0.08 kg: the outline's steel is scaled to the measured mass (the same Lc,
-    # inertias in proportion).
-    d, length, mass = 0.0129, 0.0889, 0.064
+    # weighs about 0.08 kg: the measured mass is given (the outline's distribution scaled).
+    d, length = 0.0129, 0.0889
     for crh, tag in ((3.0, "3"), (4.25, "4p25")):
-        shank = length - d / 2 * math.sqrt(4 * crh - 1)
-
-        def rod(rho: float, crh: float = crh, shank: float = shank, tag: str = tag) -> Projectile:
-            return Projectile(
-                f"grout_crh{tag}",
-                d,
-                OgiveNose(crh, rho),
-                (Cylinder(shank, rho),),
-                source="Forrestal, Frew, Hanchak & Brar 1996, IJIE 18:465-476, via the "
-                "secondary compilation DavidZyh-0319/Concrete-Penetration-Failure-Response-"
-                f"Dataset (config/concrete_ogive_shots.csv): d 12.9 mm, length 88.9 mm, CRH "
-                f"{crh:g}, measured mass 0.064 kg; outline steel scaled to that mass",
-            )
-
-        outline = rod(7850.0).mass_properties().mass
-        out[f"grout_crh{tag}"] = rod(7850.0 * mass / outline)
+        out[f"grout_crh{tag}"] = Projectile(
+            f"grout_crh{tag}",
+            d,
+            OgiveNose(crh, 7850.0),
+            (Cylinder(length - d / 2 * math.sqrt(4 * crh - 1), 7850.0),),
+            source="Forrestal, Frew, Hanchak & Brar 1996, IJIE 18:465-476, via the secondary "
+            "compilation DavidZyh-0319/Concrete-Penetration-Failure-Response-Dataset "
+            f"(config/concrete_ogive_shots.csv): d 12.9 mm, length 88.9 mm, CRH {crh:g}; mass "
+            "0.064 kg measured, outline distribution scaled",
+            mass=0.064,
+        )
     # Aluminium: the rods of the measured shots (config/aluminium_projectiles.yaml holds
     # every number with its page; tests/inputs check these against it).
     # Each rod's mass is the mean of the per-shot masses its tables print (the shot files'

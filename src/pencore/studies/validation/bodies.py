@@ -7,10 +7,10 @@ unconfined compressive strength ``fc``. This module turns each row into a
 common form of :func:`pencore.studies.validation.measurements.load_measurements`.
 
 The rod: a tangent ogive of the CRH ``psi`` (nose length ``a sqrt(4 psi - 1)``) and one
-cylinder making up the total length, steel of 7850 kg/m3, then scaled to the measured mass
-(:func:`body_projectile`): the outline's mass distribution scaled, so ``Lc`` is the
-outline's and the inertias scale with the mass (at normal incidence and no yaw only the
-mass acts). The compilation's rods weigh 0.77 to 1.0 of a solid steel body of their outline
+cylinder making up the total length, given its measured mass (:func:`body_projectile`,
+:class:`~pencore.Projectile`'s ``mass``): the outline's mass distribution scaled, so ``Lc``
+is the outline's and the inertias scale with the mass (at normal incidence and no yaw only
+the mass acts). The compilation's rods weigh 0.77 to 1.0 of a solid steel body of their outline
 (``config/concrete_ogive_shots.csv`` header), so the measured mass is the input.
 
 The concrete laws (Forrestal's form ``sigma_n = S fc + rho Vn^2``, no friction, no crater:
@@ -51,7 +51,7 @@ from pencore.paper.shots import read_body_shot_table
 
 __all__ = ["LAWS", "STEEL_DENSITY", "s_of_fc", "body_projectile", "concrete_target", "body_rows"]
 
-#: Nominal steel density (kg/m3) of the outline before it is scaled to the measured mass.
+#: Nominal steel density (kg/m3) of the outline, whose distribution the measured mass scales.
 STEEL_DENSITY = 7850.0
 
 #: Concrete laws a body shot table is run with (see the module notes): name -> description.
@@ -75,7 +75,7 @@ def s_of_fc(fc: float) -> float:
 
 def body_projectile(row: Mapping[str, Any], name: str) -> Projectile:
     """The tangent-ogive rod of a body shot row (``mass_kg``, ``diameter_m``, ``length_m``,
-    ``crh``): the outline in steel of :data:`STEEL_DENSITY`, scaled to the measured mass.
+    ``crh``): the outline in steel of :data:`STEEL_DENSITY` with the measured mass given.
 
     Raises
     ------
@@ -90,20 +90,15 @@ def body_projectile(row: Mapping[str, Any], name: str) -> Projectile:
             f"{name}: a CRH {crh:g} ogive of diameter {d:g} m is {nose_length:.4g} m long, "
             f"not shorter than the rod's length {length:g} m"
         )
-    shank = length - nose_length
-
-    def rod(rho: float) -> Projectile:
-        return Projectile(
-            name,
-            d,
-            OgiveNose(crh, rho),
-            (Cylinder(shank, rho),),
-            source=f"measured: {row['mass_kg']:g} kg, d {d:g} m, length {length:g} m, CRH "
-            f"{crh:g}; outline steel scaled to the measured mass",
-        )
-
-    outline = rod(STEEL_DENSITY).mass_properties().mass
-    return rod(STEEL_DENSITY * float(row["mass_kg"]) / outline)
+    return Projectile(
+        name,
+        d,
+        OgiveNose(crh, STEEL_DENSITY),
+        (Cylinder(length - nose_length, STEEL_DENSITY),),
+        source=f"measured: {row['mass_kg']:g} kg, d {d:g} m, length {length:g} m, CRH {crh:g}; "
+        "outline distribution scaled to the measured mass",
+        mass=float(row["mass_kg"]),
+    )
 
 
 def concrete_target(row: Mapping[str, Any], law: str) -> Target | None:
