@@ -533,6 +533,9 @@ def concrete_numbers() -> dict[str, str]:
             v = m["velocity"].values[sel.values]
             out["grout_crh3_fastest_v"] = _fmt(float(v.max()), 4)
             out["grout_crh3_fastest_e"] = _pct(float(e[v.argmax()]))
+    sel = m["dataset"] == "piekutowski_1999_ogive"
+    sel = sel & (m["target"] == "aluminium") & (m["rigid"] == 1)
+    out["al_ogive_table1_bias"] = f"{100 * float(m['rel_error'].values[sel.values].mean()):+.0f} %"
     return out
 
 
