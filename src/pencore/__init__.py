@@ -64,6 +64,9 @@ _EXPORTS = {
     "Medium": "inputs.target",
     "Layer": "inputs.target",
     "Target": "inputs.target",
+    "concrete_law": "inputs.laws",
+    "metal_law": "inputs.laws",
+    "soil_law": "inputs.laws",
     "Numerics": "inputs.numerics",
     "ShankModel": "inputs.models",
     "Emulation": "inputs.models",
@@ -80,6 +83,7 @@ _EXPORTS = {
     "SolverError": "errors",
     "WriteError": "errors",
     "ResultError": "errors",
+    "PlausibilityWarning": "errors",
 }
 
 __getattr__, __dir__, __all__ = attach(__name__, _EXPORTS, defined=("__version__",))
@@ -104,12 +108,14 @@ if TYPE_CHECKING:  # for type checkers and editors: the names as if imported eag
         ConfigError,
         GeometryError,
         InputError,
+        PlausibilityWarning,
         ResultError,
         SolverError,
         TargetError,
         WriteError,
     )
     from pencore.inputs.geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
+    from pencore.inputs.laws import concrete_law, metal_law, soil_law
     from pencore.inputs.library import (
         get_projectile,
         get_target,

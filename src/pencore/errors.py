@@ -15,6 +15,9 @@ SolverError        an integration could not finish
 WriteError         a file could not be written (nothing was left behind)
 ResultError        a result file cannot be read (corrupt or truncated)
 =================  ==========================================================
+
+:class:`PlausibilityWarning` is a warning, not an error: a value that is allowed but lies
+where a law is extrapolated or looks like a slip.
 """
 
 from __future__ import annotations
@@ -28,6 +31,7 @@ __all__ = [
     "SolverError",
     "WriteError",
     "ResultError",
+    "PlausibilityWarning",
 ]
 
 #: What the command line says when Ctrl-C ends it (exit status 130).
@@ -170,5 +174,22 @@ class ResultError(RuntimeError):
     ...         pencore.read_netcdf(bad)
     ...     except pencore.ResultError as exc:
     ...         print("cannot be read" in str(exc))
+    True
+    """
+
+
+class PlausibilityWarning(UserWarning):
+    """A value that is allowed but implausible: outside the range a law was built on
+    (extrapolated), or of a size that suggests a unit slip. The run goes on; the message
+    is one line naming the value and the range.
+
+    Examples
+    --------
+    >>> import warnings
+    >>> import pencore
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     _ = pencore.concrete_law(fc=150e6, density=2500.0)
+    >>> issubclass(caught[0].category, pencore.PlausibilityWarning)
     True
     """

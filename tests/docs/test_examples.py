@@ -174,7 +174,7 @@ def test_yaml_block_passes_its_gate(block, tmp_path):
 
     data = load_yaml_text(block.text, str(block))
     first = block.text.splitlines()[0]
-    if first.startswith("# projectile"):
+    if first.startswith("# projectile") or (ex.SHOWN_FILE.match(first) and "nose" in data):
         projectile_from_dict(data)
     elif first.startswith("# target") or ex.SHOWN_FILE.match(first):
         target_from_dict(data)

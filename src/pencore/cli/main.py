@@ -17,7 +17,7 @@ import os
 import sys
 from collections.abc import Callable, Sequence
 
-from pencore.cli import ballistic, library, simulate
+from pencore.cli import ballistic, law, library, simulate
 from pencore.cli.options import INTERRUPTED, PROG, CommandFailure, Parser, one_line
 from pencore.errors import InputError, SolverError
 from pencore.io.atomic import describe_os_error
@@ -31,6 +31,7 @@ COMMANDS: dict[str, Callable[[argparse.Namespace], int]] = {
     "ballistic-limit": ballistic.run,
     "fit-table3": library.fit_table3,
     "list": library.list_library,
+    "law": law.run,
 }
 
 
@@ -40,7 +41,8 @@ def build_parser() -> argparse.ArgumentParser:
     Returns
     -------
     argparse.ArgumentParser
-        Parser with the ``simulate``, ``fit-table3`` and ``list`` subcommands.
+        Parser with the ``simulate``, ``ballistic-limit``, ``fit-table3``, ``list`` and
+        ``law`` subcommands.
     """
     parser = Parser(
         prog=PROG,
@@ -61,6 +63,7 @@ def build_parser() -> argparse.ArgumentParser:
     simulate.add_parser(sub)
     ballistic.add_parser(sub)
     library.add_parsers(sub)
+    law.add_parser(sub)
     return parser
 
 

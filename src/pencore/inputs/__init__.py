@@ -6,6 +6,7 @@ module             contents
 ``limits``         the valid range of every quantity (:data:`~pencore.inputs.limits.LIMITS`), checks
 ``geometry``       projectile bodies of revolution, mass properties, surface rings
 ``target``         media (resistance and friction laws, depth windows), layers
+``laws``           resistance laws from material properties (concrete, metal, soil)
 ``library``        the named projectiles and targets, YAML files, the Table-3 fit
 ``models``         shank contact models and paper-emulation numerics
 ``numerics``       :class:`numerics.Numerics` and :func:`numerics.resolve_numerics`
@@ -29,6 +30,13 @@ __getattr__, __dir__, __all__ = attach(
         "Medium": "target",
         "Layer": "target",
         "Target": "target",
+        "concrete_law": "laws",
+        "metal_law": "laws",
+        "soil_law": "laws",
+        "cavity_expansion": "laws",
+        "CavityExpansion": "laws",
+        "forrestal_s": "laws",
+        "medium_from_law": "laws",
         "Numerics": "numerics",
         "ShankModel": "models",
         "Emulation": "models",

@@ -18,6 +18,7 @@ import numpy as np
 from pencore.errors import InputError
 from pencore.inputs.gate import brief, brief_path, read_yaml
 from pencore.inputs.geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
+from pencore.inputs.laws import medium_from_law
 from pencore.inputs.limits import check_keys, count, number
 from pencore.inputs.target import Layer, Medium, Target
 
@@ -488,6 +489,8 @@ def _medium_from(x: Any, what: str) -> Medium:
         raise InputError(f"{what}: medium must be a name or a mapping, got {brief(x)}")
     name = str(x.get("name", "medium"))
     w = f"{what} medium {brief(name)}"
+    if "law" in x:  # a law from material properties (pencore.inputs.laws)
+        return medium_from_law(x, w)
     check_keys(x, _MEDIUM_KEYS, w)
     coef = x.get("coefficients")
     if not isinstance(coef, list | tuple) or not coef:

@@ -1,0 +1,530 @@
+"""Resistance laws computed from material properties: the polynomial
+:class:`~pencore.inputs.target.Medium` ``sigma_n = a0 + a1 Vn + a2 Vn^2`` (Pa) of a concrete,
+a metal or a soil, each a named law with its source and its valid range.
+
+=========  ===============================================  =================================
+law        normal stress on the nose                         inputs
+=========  ===============================================  =================================
+concrete   ``S fc + rho Vn^2``, ``S = 82.6 fc^-0.544``      fc (Pa), density; S if measured
+metal      ``A Y + B rho Vn^2``, spherical cavity expansion  E, nu, Y, n (power-law hardening),
+                                                              density
+soil       ``A tau0 + B rho Vn^2`` (Forrestal & Luk)         A, tau0, B, density
+=========  ===============================================  =================================
+
+Concrete and grout (:func:`concrete_law`)
+    Forrestal's form, paper Table 1's concrete law: ``sigma_n = S fc + rho Vn^2``.
+    ``S`` is Forrestal's empirical strength factor; without a measured one it is taken
+    from the compressive strength, ``S = 82.6 fc^-0.544`` (fc in MPa; Frew, Hanchak, Green
+    & Forrestal, "Penetration of concrete targets with ogive-nose steel rods", IJIE 21
+    (1998) 489-497, as quoted by Li & Chen, IJIE 28 (2003) 93-116). At fc = 13.5 MPa this
+    gives S = 20.05, not the S = 21 of paper Table 1 (which cites Forrestal et al. 1994):
+    21 is the value fitted by Forrestal and co-authors to their own grout shots; the fitting
+    paper was not readable here, so ``S`` can be given. The crater option of the medium
+    (``crater_depth``, Forrestal's ``F = c z`` over 2 calibers) is passed through.
+Metals (:func:`metal_law`, :func:`cavity_expansion`)
+    The spherical cavity-expansion solution for an elastic-plastic solid with power-law
+    strain hardening, ``sigma = E eps`` below ``Y`` and ``sigma = Y (E eps / Y)^n`` above:
+    the radial stress at a cavity opening at constant speed V is ``Y A + B rho V^2``.
+
+    * quasi-static ``A`` by the integral of Forrestal, Okajima & Luk (J. Appl. Mech. 55,
+      1988, 755-760) with Hill's compressible elastic zone::
+
+          A = 2/3 [1 + K^n I_n],   K = E / (3 (1 - nu) Y),
+          I_n = integral_0^(1 - 1/K) (-ln x)^n / (1 - x) dx
+              = integral_0^(ln K) (-ln(1 - e^-u))^n du
+
+      At ``n = 0`` it is Hill's limit pressure, ``A = 2/3 (1 + ln K)`` (Hill, *The
+      Mathematical Theory of Plasticity*, 1950, ch. V); at ``nu = 1/2`` it is the printed
+      incompressible formula, ``K = 2E/(3Y)``; at ``n = 1``,
+      ``I_1 = pi^2/6 - Li2(1/K)`` in closed form.
+    * inertial ``B = 3/2``: for an incompressible solid the velocity field is
+      ``a^2 da/dt / r^2`` whatever the constitutive law, and the momentum balance adds
+      exactly ``rho (a d2a/dt2 + 3/2 (da/dt)^2)`` to the static stress. Compressibility
+      lowers it (Forrestal & Luk 1988; Luk, Forrestal & Amos, J. Appl. Mech. 58, 1991,
+      1-6, solve the compressible problem numerically); that solution is not computed
+      here, so the law is the incompressible one in its inertia.
+    * no strain-rate term: Piekutowski et al. (1999) use ``Y (A + B V/c + C V^2/c^2)``
+      with the constants of Warren & Forrestal (1998), whose linear term comes from the
+      strain-rate sensitivity of the target; this law has no rate sensitivity and no
+      linear term (the user guide's page "Your own projectile and target" states what
+      that costs on the aluminium rods).
+Soils (:func:`soil_law`)
+    The Forrestal-Luk form of paper Table 1's soil, ``sigma_n = A tau0 + B rho Vn^2``,
+    with its parameters as inputs (no readable source computes A and B from soil
+    properties here).
+
+Every law returns a :class:`~pencore.inputs.target.Medium` whose ``source`` names the law,
+the inputs and the constants; a value outside its range (:data:`~pencore.inputs.limits.LIMITS`)
+is refused with one line, with a hint when it looks like a unit slip (MPa or GPa given as
+Pa); a value inside it but outside the range a law was built on gives a
+:class:`~pencore.errors.PlausibilityWarning`.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Mapping
+from dataclasses import dataclass, replace
+from typing import Any
+
+from pencore.errors import InputError, PlausibilityWarning, TargetError
+from pencore.inputs.gate import brief
+from pencore.inputs.limits import LIMITS, as_float, check_keys, number
+from pencore.inputs.target import Medium
+
+__all__ = [
+    "LAWS",
+    "CavityExpansion",
+    "cavity_expansion",
+    "forrestal_s",
+    "concrete_law",
+    "metal_law",
+    "soil_law",
+    "concrete",
+    "metal",
+    "soil",
+    "medium_from_law",
+]
+
+#: Source of ``S = 82.6 fc^-0.544``.
+S_FC_SOURCE = (
+    "Frew, Hanchak, Green & Forrestal, IJIE 21 (1998) 489-497, as quoted by Li & Chen, "
+    "IJIE 28 (2003) 93-116"
+)
+#: The compressive strengths (Pa) of the Sandia/WES shots of Forrestal's family (12.9 to
+#: 76.2 mm steel rods into grout and concrete), the range the concrete form was built on:
+#: 13.5 to 108 MPa (the secondary compilation DavidZyh-0319/Concrete-Penetration-Failure-
+#: Response-Dataset, Data.xlsx); outside it S(fc) is extrapolated.
+FC_SHOTS = (13.5e6, 108e6)
+#: Densities (kg/m^3) of grouts and concretes (plausibility only).
+CONCRETE_DENSITY = (1500.0, 3000.0)
+
+
+def _value(value: Any, key: str, what: str, name: str) -> float:
+    """``value`` in ``LIMITS[key]`` (text in plain decimal accepted), else
+    :class:`~pencore.errors.TargetError` naming ``name``, with a unit hint for a value that
+    is in range once multiplied by 1e6 or 1e9 (MPa or GPa given as Pa)."""
+    try:
+        return number(value, key, what, allow_str=True, label=name)
+    except InputError as exc:
+        msg = str(exc)
+        lim = LIMITS[key]
+        v = as_float(value, allow_str=True)
+        if lim.unit == "Pa" and v is not None and 0 < v < lim.lo:
+            for factor, unit in ((1e6, "MPa"), (1e9, "GPa")):
+                if lim.contains(v * factor):
+                    msg += f" (in {unit}? {name} is in Pa: {v:g} {unit} is {v * factor:g})"
+                    break
+        raise TargetError(msg) from None
+
+
+def _plausible(value: float, lo: float, hi: float, name: str, unit: str, why: str) -> None:
+    if not lo <= value <= hi:
+        warnings.warn(
+            f"{name} = {value:g} {unit} is outside {lo:g}-{hi:g} {unit}, {why}",
+            PlausibilityWarning,
+            stacklevel=3,
+        )
+
+
+def forrestal_s(fc: float) -> float:
+    """Forrestal's strength factor from the compressive strength, ``S = 82.6 fc^-0.544``.
+
+    Parameters
+    ----------
+    fc : float
+        Unconfined compressive strength (Pa); the fit takes it in MPa.
+
+    Returns
+    -------
+    float
+        ``S`` (dimensionless). Source: :data:`S_FC_SOURCE`.
+
+    Examples
+    --------
+    >>> from pencore.inputs.laws import forrestal_s
+    >>> print(f"{forrestal_s(13.5e6):.2f}")
+    20.05
+    """
+    fc = _value(fc, "fc", "concrete law", "fc")
+    return 82.6 * (fc / 1e6) ** -0.544
+
+
+def concrete_law(
+    fc: float,
+    density: float,
+    s: float | None = None,
+    *,
+    name: str = "concrete",
+    crater_depth: float = 0.0,
+    friction: float = 0.0,
+) -> Medium:
+    """A concrete or grout by Forrestal's form, ``sigma_n = S fc + rho Vn^2``.
+
+    Parameters
+    ----------
+    fc : float
+        Unconfined compressive strength (Pa), in ``LIMITS["fc"]``.
+    density : float
+        Target density ``rho`` (kg/m^3).
+    s : float, optional
+        Forrestal's ``S`` when measured (fitted to shots); default :func:`forrestal_s`.
+    name : str
+        The medium's label.
+    crater_depth : float
+        Forrestal's crater region in calibers (0: off; Forrestal: 2), see
+        :class:`~pencore.inputs.target.Medium`.
+    friction : float
+        Constant Coulomb friction coefficient (default 0).
+
+    Returns
+    -------
+    Medium
+        Coefficients ``(S fc, 0, rho)``; the ``source`` names ``S`` and where it is from.
+
+    Raises
+    ------
+    TargetError
+        A value out of its range (one line; a hint when fc looks like MPa).
+
+    Warns
+    -----
+    PlausibilityWarning
+        fc outside the 13.5-108 MPa of the measured shots (:data:`FC_SHOTS`), or a density
+        outside 1500-3000 kg/m^3.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> c40 = pencore.concrete_law(fc=40e6, density=2300.0)
+    >>> print(f"S = {c40.coefficients[0] / 40e6:.2f}, a0 = {c40.coefficients[0]:.4g} Pa")
+    S = 11.10, a0 = 4.441e+08 Pa
+    >>> paper = pencore.concrete_law(fc=13.5e6, density=1960.0, s=21.0)
+    >>> paper.coefficients == pencore.get_target("concrete").medium.coefficients
+    True
+    >>> pencore.concrete_law(fc=40, density=2300.0)
+    Traceback (most recent call last):
+    ...
+    pencore.errors.TargetError: concrete law: fc must be in [1e+06, 5e+08] Pa, got 40 (in MPa? ...
+    """
+    what = "concrete law"
+    fc = _value(fc, "fc", what, "fc")
+    rho = _value(density, "medium_density", what, "density")
+    _plausible(
+        fc / 1e6,
+        FC_SHOTS[0] / 1e6,
+        FC_SHOTS[1] / 1e6,
+        "fc",
+        "MPa",
+        "the range of the measured shots the form was built on (S(fc) is extrapolated)",
+    )
+    _plausible(rho, *CONCRETE_DENSITY, "density", "kg/m^3", "that of grouts and concretes")
+    if s is None:
+        s_val = forrestal_s(fc)
+        s_from = f"S = 82.6 fc^-0.544 = {s_val:.4g} (fc in MPa; {S_FC_SOURCE})"
+    else:
+        s_val = _value(s, "s_factor", what, "S")
+        s_from = f"S = {s_val:g} given"
+    return Medium(
+        name,
+        (s_val * fc, 0.0, rho),
+        (0.0,),
+        (_value(friction, "friction", what, "friction"),),
+        rho,
+        f"concrete law (Forrestal): S fc + rho Vn^2, fc = {fc / 1e6:g} MPa, "
+        f"rho = {rho:g} kg/m3, {s_from}",
+        crater_depth=crater_depth,
+    )
+
+
+@dataclass(frozen=True)
+class CavityExpansion:
+    """The spherical cavity-expansion constants of an elastic-plastic, power-law hardening
+    solid (:func:`cavity_expansion`).
+
+    Attributes
+    ----------
+    a : float
+        Quasi-static radial stress at the cavity over ``Y``.
+    b : float
+        Inertial coefficient on ``rho V^2`` (3/2: incompressible).
+    k : float
+        ``E / (3 (1 - nu) Y)``; ``k^(1/3)`` is the plastic-zone over cavity radius of an
+        elastic-perfectly plastic solid (Hill).
+    integral : float
+        ``I_n`` (see the module docstring).
+    integral_error : float
+        Estimated absolute error of ``integral`` (quadrature).
+    """
+
+    a: float
+    b: float
+    k: float
+    integral: float
+    integral_error: float
+
+    @property
+    def plastic_zone_ratio(self) -> float:
+        """``c/a = k^(1/3)`` of Hill's elastic-perfectly plastic solution."""
+        return self.k ** (1.0 / 3.0)
+
+
+def cavity_expansion(
+    youngs_modulus: float,
+    poisson_ratio: float,
+    yield_strength: float,
+    hardening_exponent: float,
+) -> CavityExpansion:
+    """Quasi-static and inertial constants of the spherical cavity expansion (module
+    docstring: ``A = 2/3 [1 + K^n I_n]``, ``B = 3/2``).
+
+    Parameters
+    ----------
+    youngs_modulus : float
+        ``E`` (Pa).
+    poisson_ratio : float
+        ``nu``, 0 to 1/2.
+    yield_strength : float
+        ``Y`` (Pa), with ``E / (3 (1 - nu) Y) > 1``.
+    hardening_exponent : float
+        ``n`` of ``sigma = Y (E eps / Y)^n``, 0 (elastic-perfectly plastic) to below 1.
+
+    Returns
+    -------
+    CavityExpansion
+
+    Raises
+    ------
+    TargetError
+        A value out of its range, or a yield strength so high that no plastic zone forms.
+
+    Examples
+    --------
+    Elastic-perfectly plastic: Hill's limit pressure.
+
+    >>> import math
+    >>> from pencore.inputs.laws import cavity_expansion
+    >>> ce = cavity_expansion(200e9, 0.3, 1e9, 0.0)
+    >>> print(f"A = {ce.a:.6f}, Hill {2 / 3 * (1 + math.log(200e9 / (3 * 0.7 * 1e9))):.6f}")
+    A = 3.704253, Hill 3.704253
+    """
+    what = "metal law"
+    e = _value(youngs_modulus, "youngs_modulus", what, "E")
+    nu = _value(poisson_ratio, "poisson_ratio", what, "nu")
+    y = _value(yield_strength, "yield_strength", what, "Y")
+    n = _value(hardening_exponent, "hardening_exponent", what, "n")
+    k = e / (3.0 * (1.0 - nu) * y)
+    if not k > 1.0:
+        raise TargetError(
+            f"{what}: E / (3 (1 - nu) Y) must be > 1 for a plastic zone to form, got "
+            f"{k:.4g} (E = {e:g} Pa, nu = {nu:g}, Y = {y:g} Pa)"
+        )
+    integral, err = _hardening_integral(n, math.log(k))
+    return CavityExpansion(
+        a=2.0 / 3.0 * (1.0 + k**n * integral), b=1.5, k=k, integral=integral, integral_error=err
+    )
+
+
+def _hardening_integral(n: float, upper: float) -> tuple[float, float]:
+    """``integral_0^upper (-ln(1 - e^-u))^n du`` and its error estimate (adaptive
+    Gauss-Kronrod, QUADPACK's QAGS: its extrapolation handles the ``(-ln u)^n`` end)."""
+    if n == 0.0:
+        return upper, 0.0
+    from scipy.integrate import quad
+
+    val, err = quad(
+        lambda u: (-math.log(-math.expm1(-u))) ** n, 0.0, upper, epsabs=0.0, epsrel=1e-12, limit=200
+    )
+    return float(val), float(err)
+
+
+def metal_law(
+    youngs_modulus: float,
+    poisson_ratio: float,
+    yield_strength: float,
+    hardening_exponent: float,
+    density: float,
+    *,
+    name: str = "metal",
+    finite_sphere: bool = False,
+    friction: float = 0.0,
+) -> Medium:
+    """A metal by the spherical cavity expansion, ``sigma_n = A Y + B rho Vn^2``.
+
+    Parameters
+    ----------
+    youngs_modulus, poisson_ratio, yield_strength, hardening_exponent : float
+        ``E`` (Pa), ``nu``, ``Y`` (Pa), ``n`` (see :func:`cavity_expansion`).
+    density : float
+        Target density (kg/m^3).
+    name : str
+        The medium's label.
+    finite_sphere : bool
+        Also set the medium's free-surface reduction of a cavity in a finite sphere
+        (``plastic_zone_ratio = (E / (3 (1 - nu) Y))^(1/3)``, Hill).
+    friction : float
+        Constant Coulomb friction coefficient (default 0).
+
+    Returns
+    -------
+    Medium
+        Coefficients ``(A Y, 0, B rho)`` with ``A``, ``B`` of :func:`cavity_expansion`.
+
+    Examples
+    --------
+    6061-T6511 aluminium with handbook elastic constants (E = 68.9 GPa, nu = 0.33),
+    Y = 276 MPa and n = 0.051 (see the user guide for where these come from):
+
+    >>> import pencore
+    >>> al = pencore.metal_law(68.9e9, 0.33, 276e6, 0.051, 2710.0)
+    >>> a0, a1, a2 = al.coefficients
+    >>> print(f"A = {a0 / 276e6:.3f}, B = {a2 / 2710.0:.2f}")
+    A = 4.342, B = 1.50
+    """
+    what = "metal law"
+    ce = cavity_expansion(youngs_modulus, poisson_ratio, yield_strength, hardening_exponent)
+    e = float(youngs_modulus)
+    nu = float(poisson_ratio)
+    y = float(yield_strength)
+    n = float(hardening_exponent)
+    rho = _value(density, "medium_density", what, "density")
+    if not isinstance(finite_sphere, bool):
+        raise TargetError(
+            f"{what}: finite_sphere must be true or false, got {brief(finite_sphere)}"
+        )
+    return Medium(
+        name,
+        (ce.a * y, 0.0, ce.b * rho),
+        (0.0,),
+        (_value(friction, "friction", what, "friction"),),
+        rho,
+        f"metal law (spherical cavity expansion, power-law hardening; quasi-static A by "
+        f"Forrestal, Okajima & Luk 1988 with Hill's compressible elastic zone, inertial "
+        f"B = 3/2 of the incompressible solution, no strain-rate term): E = {e / 1e9:g} GPa, "
+        f"nu = {nu:g}, Y = {y / 1e6:g} MPa, n = {n:g}, rho = {rho:g} kg/m3; A = {ce.a:.4g}, "
+        f"B = {ce.b:g}",
+        plastic_zone_ratio=ce.plastic_zone_ratio if finite_sphere else 0.0,
+    )
+
+
+def soil_law(
+    a: float,
+    tau0: float,
+    b: float,
+    density: float,
+    *,
+    name: str = "soil",
+    friction: float = 0.0,
+) -> Medium:
+    """A soil by the Forrestal-Luk form of paper Table 1, ``sigma_n = A tau0 + B rho Vn^2``.
+
+    Parameters
+    ----------
+    a, b : float
+        Forrestal and Luk's dimensionless factors ``A`` and ``B``.
+    tau0 : float
+        Shear strength (Pa).
+    density : float
+        Soil density (kg/m^3).
+    name : str
+        The medium's label.
+    friction : float
+        Constant Coulomb friction coefficient (default 0).
+
+    Returns
+    -------
+    Medium
+        Coefficients ``(A tau0, 0, B rho)``.
+
+    Examples
+    --------
+    The paper's soil (Table 1):
+
+    >>> import pencore
+    >>> s = pencore.soil_law(a=1.718, tau0=10e6, b=2.215, density=1860.0)
+    >>> s.coefficients == pencore.get_target("soil").medium.coefficients
+    True
+    """
+    what = "soil law"
+    a_ = _value(a, "soil_factor", what, "A")
+    tau = _value(tau0, "shear_strength", what, "tau0")
+    b_ = _value(b, "soil_factor", what, "B")
+    rho = _value(density, "medium_density", what, "density")
+    return Medium(
+        name,
+        (a_ * tau, 0.0, b_ * rho),
+        (0.0,),
+        (_value(friction, "friction", what, "friction"),),
+        rho,
+        f"soil law (Forrestal & Luk 1992, paper Table 1 form): A tau0 + B rho Vn^2, A = {a_:g}, "
+        f"tau0 = {tau / 1e6:g} MPa, B = {b_:g}, rho = {rho:g} kg/m3",
+    )
+
+
+#: The short names ``pencore.inputs.laws.concrete(...)`` etc.
+concrete = concrete_law
+metal = metal_law
+soil = soil_law
+
+#: Law name -> (function, YAML keys: required, optional).
+LAWS: dict[str, tuple[Any, tuple[str, ...], tuple[str, ...]]] = {
+    "concrete": (concrete_law, ("fc", "density"), ("s", "crater_depth", "friction")),
+    "metal": (
+        metal_law,
+        ("youngs_modulus", "poisson_ratio", "yield_strength", "hardening_exponent", "density"),
+        ("finite_sphere", "friction"),
+    ),
+    "soil": (soil_law, ("a", "tau0", "b", "density"), ("friction",)),
+}
+
+#: Keys a law mapping may hold besides its law's own.
+_COMMON = ("law", "name", "free_surface_depth", "plastic_zone_ratio")
+
+
+def medium_from_law(d: Mapping[str, Any], what: str = "medium") -> Medium:
+    """A medium from a mapping ``{law: concrete | metal | soil, ...}`` (the YAML form).
+
+    Parameters
+    ----------
+    d : mapping
+        ``law`` and the law's inputs (SI: Pa, kg/m^3), as the keyword arguments of
+        :func:`concrete_law`, :func:`metal_law`, :func:`soil_law`; optionally ``name`` and
+        the depth windows of :class:`~pencore.inputs.target.Medium`
+        (``free_surface_depth``, ``plastic_zone_ratio``; ``crater_depth`` for concrete).
+    what : str
+        Where the mapping comes from, for messages.
+
+    Returns
+    -------
+    Medium
+
+    Raises
+    ------
+    InputError
+        An unknown law or key, a missing input, a value out of its range.
+
+    Examples
+    --------
+    >>> from pencore.inputs.laws import medium_from_law
+    >>> m = medium_from_law({"law": "concrete", "fc": "40.0e6", "density": 2300})
+    >>> print(f"{m.coefficients[0]:.4g} Pa")
+    4.441e+08 Pa
+    """
+    law = d.get("law")
+    if not isinstance(law, str) or law not in LAWS:
+        raise InputError(f"{what}: law must be one of {', '.join(LAWS)}, got {brief(law)}")
+    func, required, optional = LAWS[law]
+    check_keys(d, (*_COMMON, *required, *optional), f"{what} ({law} law)")
+    missing = [k for k in required if k not in d]
+    if missing:
+        raise InputError(f"{what} ({law} law): missing key {brief(missing[0])}")
+    kwargs = {k: d[k] for k in (*required, *optional) if k in d}
+    medium = func(**kwargs, name=str(d.get("name", law)))
+    windows = {}
+    for k in ("free_surface_depth", "plastic_zone_ratio"):
+        if k in d:
+            windows[k] = number(d[k], k, what, allow_str=True)
+    if windows:
+        medium = replace(medium, **windows)
+    return medium
