@@ -18,7 +18,7 @@ import numpy as np
 from pencore.errors import InputError
 from pencore.inputs.gate import brief, brief_path, read_yaml
 from pencore.inputs.geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
-from pencore.inputs.laws import medium_from_law
+from pencore.inputs.laws import medium_from_law, metal_law
 from pencore.inputs.limits import check_keys, count, number
 from pencore.inputs.target import Layer, Medium, Target
 
@@ -79,6 +79,18 @@ MEDIA: dict[str, Medium] = {
         "C=0.940, Y=276 MPa, rho=2710 kg/m3",
     ),
 }
+# The same aluminium by the law computed from its properties (pencore.inputs.laws.metal_law:
+# spherical cavity expansion, power-law hardening, no strain-rate term), judged beside the
+# two empirical laws on the measured rods. Inputs: handbook E = 68.9 GPa and nu = 0.33, the
+# source's Y = 276 MPa and rho = 2710 kg/m3 (Piekutowski et al. 1999, p. 731), and the
+# hardening exponent n = 0.051 quoted for this alloy in Forrestal's family of papers (not
+# read in its primary source here). Nothing is fitted to the shots.
+_AL_CAVITY = metal_law(68.9e9, 0.33, 276e6, 0.051, 2710.0, name="aluminium_cavity")
+MEDIA["aluminium_cavity"] = replace(
+    _AL_CAVITY,
+    source=_AL_CAVITY.source + "; E, nu handbook, Y and rho of Piekutowski et al. 1999 "
+    "(p. 731), n = 0.051 as quoted in Forrestal's family of papers",
+)
 
 # ---------------------------------------------------------------- Table 3 and its fit
 

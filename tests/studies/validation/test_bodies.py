@@ -12,13 +12,13 @@ import pytest
 import pencore
 from pencore import closedform
 from pencore.errors import InputError
+from pencore.inputs.laws import forrestal_s
 from pencore.paper.shots import read_body_shot_table
 from pencore.studies.validation.bodies import (
     LAWS,
     body_projectile,
     body_rows,
     concrete_target,
-    s_of_fc,
 )
 from pencore.studies.validation.measurements import measured_vs_predicted, summary_table
 
@@ -32,14 +32,6 @@ ROW = {
     "fc_pa": 13.5e6,
     "target_density_kg_m3": 2000.0,
 }
-
-
-def test_s_of_fc_is_frews_fit():
-    # S = 82.6 fc^-0.544 (fc in MPa): 20.05 at the paper's 13.5 MPa, not the paper's 21
-    assert s_of_fc(13.5e6) == pytest.approx(82.6 * 13.5**-0.544, rel=1e-15)
-    assert round(s_of_fc(13.5e6), 2) == 20.05
-    with pytest.raises(InputError, match="fc must be a finite number > 0"):
-        s_of_fc(-1.0)
 
 
 def test_body_projectile_has_the_measured_mass_and_the_outline():
@@ -59,7 +51,7 @@ def test_laws_apply_where_they_should():
     assert paper.medium.coefficients == pencore.get_target("concrete").medium.coefficients
     assert concrete_target({**ROW, "fc_pa": 21.6e6}, "paper_s21") is None
     fc = concrete_target(ROW, "s_of_fc").medium
-    assert fc.coefficients == pytest.approx((s_of_fc(13.5e6) * 13.5e6, 0.0, 2000.0))
+    assert fc.coefficients == pytest.approx((forrestal_s(13.5e6) * 13.5e6, 0.0, 2000.0))
     with pytest.raises(InputError, match="unknown concrete law"):
         concrete_target(ROW, "s42")
 
@@ -74,6 +66,11 @@ def test_body_rows_count_every_shot_once_per_law_that_applies():
     assert len(rows) == len(df) + n_paper
     assert set(rows["target"]) == set(LAWS)
     assert rows["shot"].is_unique
+    # S(fc) beyond the 13.5-108 MPa it was built on: said per shot (every O'Neil et al.
+    # shot, 155-163 MPa, and the one 108.3 MPa shot)
+    beyond = rows["remark"].str.contains("outside 13.5-108 MPa")
+    oneil = rows["dataset"] == "oneil1999_d26.9_crh2_fc155-163"
+    assert beyond[oneil].all() and beyond[~oneil].sum() == 1
 
 
 @pytest.mark.parametrize("velocity", [371.0, 1126.0])

@@ -21,14 +21,14 @@ the paper's model), :data:`LAWS`:
     rho = 1960 kg/m3), applied only to shots into targets of fc = 13.5 MPa, where it is
     the paper's own choice;
 ``s_of_fc``
-    ``S = 82.6 fc^-0.544`` (fc in MPa; Frew, Hanchak, Green & Forrestal, IJIE 21 (1998)
-    489-497) with the shot's fc and density: every shot. At 13.5 MPa it gives S = 20.05,
-    not the paper's 21. No constant is fitted to the shots compared here.
+    :func:`pencore.inputs.laws.concrete_law`: ``S = 82.6 fc^-0.544`` (fc in MPa; Frew,
+    Hanchak, Green & Forrestal, IJIE 21 (1998) 489-497) with the shot's fc and density:
+    every shot. At 13.5 MPa it gives S = 20.05, not the paper's 21. Beyond the 13.5-108 MPa
+    the form was built on (the O'Neil et al. 1999 shots) the law warns; the shot's remark
+    says so. No constant is fitted to the shots compared here.
 
 Examples
 --------
->>> round(s_of_fc(13.5e6), 2)
-20.05
 >>> row = {"mass_kg": 0.064, "diameter_m": 0.0129, "length_m": 0.0889, "crh": 3.0}
 >>> p = body_projectile(row, "rod")
 >>> print(f"{p.mass_properties().mass:.4f} kg, length {p.length:.4f} m")
@@ -38,18 +38,20 @@ Examples
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Mapping
 from typing import Any
 
 import pandas as pd
 
-from pencore.errors import InputError
+from pencore.errors import InputError, PlausibilityWarning
 from pencore.inputs.geometry import Cylinder, OgiveNose, Projectile
+from pencore.inputs.laws import concrete_law
 from pencore.inputs.library import get_target
-from pencore.inputs.target import Medium, Target
+from pencore.inputs.target import Target
 from pencore.paper.shots import read_body_shot_table
 
-__all__ = ["LAWS", "STEEL_DENSITY", "s_of_fc", "body_projectile", "concrete_target", "body_rows"]
+__all__ = ["LAWS", "STEEL_DENSITY", "body_projectile", "concrete_target", "body_rows"]
 
 #: Nominal steel density (kg/m3) of the outline, whose distribution the measured mass scales.
 STEEL_DENSITY = 7850.0
@@ -62,15 +64,6 @@ LAWS = {
 
 #: fc (Pa) of the targets the paper's Table 1 law is for.
 PAPER_FC = 13.5e6
-
-
-def s_of_fc(fc: float) -> float:
-    """Forrestal's dimensionless ``S`` from the unconfined compressive strength ``fc`` (Pa):
-    ``S = 82.6 fc^-0.544``, fc in MPa (Frew, Hanchak, Green & Forrestal, IJIE 21 (1998)
-    489-497)."""
-    if not (math.isfinite(fc) and fc > 0):
-        raise InputError(f"fc must be a finite number > 0 Pa, got {fc!r}")
-    return 82.6 * (fc / 1e6) ** -0.544
 
 
 def body_projectile(row: Mapping[str, Any], name: str) -> Projectile:
@@ -108,16 +101,7 @@ def concrete_target(row: Mapping[str, Any], law: str) -> Target | None:
     if law == "paper_s21":
         return get_target("concrete") if fc == PAPER_FC else None
     if law == "s_of_fc":
-        s = s_of_fc(fc)
-        return Target.half_space(
-            Medium(
-                "s_of_fc",
-                (s * fc, 0.0, rho),
-                density=rho,
-                source=f"S fc + rho Vn^2, S = 82.6 fc^-0.544 = {s:.4g} (Frew et al. 1998), "
-                f"fc = {fc / 1e6:g} MPa, rho = {rho:g} kg/m3",
-            )
-        )
+        return Target.half_space(concrete_law(fc, rho, name="s_of_fc"))
     raise InputError(f"unknown concrete law {law!r}; use one of {', '.join(LAWS)}")
 
 
@@ -140,9 +124,12 @@ def body_rows(entry: Mapping[str, Any]) -> pd.DataFrame:
         proj_name = f"{r['set']} ({r['mass_kg']:g} kg)"
         proj = body_projectile(r, proj_name)
         for law in laws:
-            target = concrete_target(r, law)
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always", PlausibilityWarning)
+                target = concrete_target(r, law)
             if target is None:
                 continue
+            notes = "; ".join(str(w.message) for w in caught)
             rows.append(
                 {
                     "shot": f"{entry['name']}:{law}:{r['row']}",
@@ -158,7 +145,7 @@ def body_rows(entry: Mapping[str, Any]) -> pd.DataFrame:
                     "yaw_measured_deg": math.nan,
                     "rigid": True,
                     "remark": "normal impact, no yaw measured; rigid assumed (the "
-                    "compilation records no deformation)",
+                    "compilation records no deformation)" + (f"; {notes}" if notes else ""),
                     "quantity": "penetration_depth",
                     "measured": float(r["depth_m"]),
                     "depth_measure": entry["depth_measure"],
