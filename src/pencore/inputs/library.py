@@ -18,7 +18,7 @@ import numpy as np
 from pencore.errors import InputError
 from pencore.inputs.gate import brief, brief_path, read_yaml
 from pencore.inputs.geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
-from pencore.inputs.laws import medium_from_law, metal_law
+from pencore.inputs.laws import medium_from_law
 from pencore.inputs.limits import check_keys, count, number
 from pencore.inputs.target import Layer, Medium, Target
 
@@ -84,12 +84,24 @@ MEDIA: dict[str, Medium] = {
 # two empirical laws on the measured rods. Inputs: handbook E = 68.9 GPa and nu = 0.33, the
 # source's Y = 276 MPa and rho = 2710 kg/m3 (Piekutowski et al. 1999, p. 731), and the
 # hardening exponent n = 0.051 quoted for this alloy in Forrestal's family of papers (not
-# read in its primary source here). Nothing is fitted to the shots.
-_AL_CAVITY = metal_law(68.9e9, 0.33, 276e6, 0.051, 2710.0, name="aluminium_cavity")
-MEDIA["aluminium_cavity"] = replace(
-    _AL_CAVITY,
-    source=_AL_CAVITY.source + "; E, nu handbook, Y and rho of Piekutowski et al. 1999 "
-    "(p. 731), n = 0.051 as quoted in Forrestal's family of papers",
+# read in its primary source here). Nothing is fitted to the shots. The coefficients are
+# metal_law's, written out so that importing the library runs no quadrature
+# (tests/inputs/test_laws.py checks them against metal_law).
+ALUMINIUM_CAVITY_INPUTS = {
+    "youngs_modulus": 68.9e9,
+    "poisson_ratio": 0.33,
+    "yield_strength": 276e6,
+    "hardening_exponent": 0.051,
+    "density": 2710.0,
+}
+MEDIA["aluminium_cavity"] = Medium(
+    "aluminium_cavity",
+    (1198326475.2874932, 0.0, 4065.0),
+    density=2710.0,
+    source="metal law (pencore.inputs.laws.metal_law: spherical cavity expansion, power-law "
+    "hardening, inertial B = 3/2, no strain-rate term): E = 68.9 GPa, nu = 0.33 (handbook), "
+    "Y = 276 MPa, rho = 2710 kg/m3 (Piekutowski et al. 1999, p. 731), n = 0.051 (as quoted "
+    "in Forrestal's family of papers); A = 4.342, B = 1.5",
 )
 
 # ---------------------------------------------------------------- Table 3 and its fit
@@ -373,7 +385,7 @@ def target_names() -> list[str]:
     --------
     >>> import pencore
     >>> pencore.target_names()
-    ['aluminium', 'aluminium_3term', 'concrete', 'soil']
+    ['aluminium', 'aluminium_3term', 'aluminium_cavity', 'concrete', 'soil']
     """
     return sorted(MEDIA)
 
