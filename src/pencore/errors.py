@@ -179,9 +179,10 @@ class ResultError(RuntimeError):
 
 
 class PlausibilityWarning(UserWarning):
-    """A value that is allowed but implausible: outside the range a law was built on
-    (extrapolated), or of a size that suggests a unit slip. The run goes on; the message
-    is one line naming the value and the range.
+    """A value that is allowed but implausible; the run goes on.
+
+    Outside the range a law was built on (extrapolated), or of a size that suggests a unit
+    slip; the message is one line naming the value and the range.
 
     Examples
     --------

@@ -280,15 +280,3 @@ def test_the_guide_page_states_what_the_laws_compute():
     assert "deeper than the source's at every speed" in page
     for v in (500.0, 1000.0, 1500.0, 2000.0):
         assert closedform.depth(rod, computed, v) > closedform.depth(rod, source, v)
-
-
-def test_library_aluminium_cavity_is_the_computed_metal_law():
-    """The library's aluminium_cavity ships metal_law's coefficients as numbers (importing
-    the library runs no quadrature): they must be what metal_law computes from the inputs
-    it names."""
-    from pencore.inputs.library import ALUMINIUM_CAVITY_INPUTS, MEDIA
-
-    computed = pencore.metal_law(**ALUMINIUM_CAVITY_INPUTS)
-    shipped = MEDIA["aluminium_cavity"]
-    assert shipped.coefficients == pytest.approx(computed.coefficients, rel=1e-12, abs=0.0)
-    assert shipped.density == ALUMINIUM_CAVITY_INPUTS["density"]

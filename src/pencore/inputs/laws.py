@@ -374,7 +374,7 @@ def metal_law(
     Examples
     --------
     6061-T6511 aluminium with handbook elastic constants (E = 68.9 GPa, nu = 0.33),
-    Y = 276 MPa and n = 0.051 (see the user guide for where these come from):
+    the source's Y = 276 MPa and an assumed n = 0.051 (see the user guide):
 
     >>> import pencore
     >>> al = pencore.metal_law(68.9e9, 0.33, 276e6, 0.051, 2710.0)

@@ -1,8 +1,10 @@
 """Named projectiles and targets, YAML loading, and the Table-3 geometry fit.
 
-Provenance of every shipped number is recorded in its ``source`` string:
-``paper`` (Li & Flores-Johnson 2011), ``derived`` (how), or ``assumed`` (why; to be
-replaced when the published value is at hand).
+The named media and validation projectiles are data files read here
+(``inputs/data/media.yaml``, ``inputs/data/projectiles.yaml``; the paper's p1..p4 are
+built from ``inputs/data/table3_geometry.yaml``). Provenance of every shipped number is
+recorded in its ``source`` string: ``paper`` (Li & Flores-Johnson 2011), ``derived``
+(how), or ``assumed`` (why; to be replaced when the published value is at hand).
 """
 
 from __future__ import annotations
@@ -39,70 +41,9 @@ __all__ = [
 ]
 
 
-# ---------------------------------------------------------------- media (paper Table 1)
-
-MEDIA: dict[str, Medium] = {
-    "soil": Medium(
-        "soil",
-        (1.718 * 10e6, 0.0, 2.215 * 1860.0),
-        density=1860.0,
-        source="paper Table 1 (Forrestal & Luk 1992): A tau0 + B rho Vn^2, A=1.718, "
-        "tau0=10 MPa, B=2.215, rho=1860 kg/m3",
-    ),
-    "concrete": Medium(
-        "concrete",
-        (21.0 * 13.5e6, 0.0, 1960.0),
-        density=1960.0,
-        source="paper Table 1 (Forrestal et al. 1994): S fc + rho Vn^2, S=21, fc=13.5 MPa, "
-        "rho=1960 kg/m3",
-    ),
-    "aluminium": Medium(
-        "aluminium",
-        (5.04 * 276e6, 0.0, 0.983 * 2710.0),
-        density=2710.0,
-        source="paper Table 1 (Piekutowski et al. 1999; Forrestal & Piekutowski 2000): "
-        "A Y + B rho Vn^2, A=5.04, Y=276 MPa, B=0.983, rho=2710 kg/m3",
-    ),
-    # The law the paper's Table 1 cites, as its source writes it: three terms, the
-    # spherical cavity-expansion fit of Warren & Forrestal (1998). The paper's Table 1
-    # keeps A and puts the linear coefficient B on the quadratic term, dropping C.
-    "aluminium_3term": Medium(
-        "aluminium_3term",
-        (
-            5.04 * 276e6,
-            0.983 * 276e6 / math.sqrt(276e6 / 2710.0),
-            0.940 * 2710.0,
-        ),
-        density=2710.0,
-        source="Piekutowski et al. 1999, IJIE 23:723-734, p. 731 (constants from Warren & "
-        "Forrestal 1998): Y (A + B Vn/c + C Vn^2/c^2), c = sqrt(Y/rho), A=5.04, B=0.983, "
-        "C=0.940, Y=276 MPa, rho=2710 kg/m3",
-    ),
-}
-# The same aluminium by the law computed from its properties (pencore.inputs.laws.metal_law:
-# spherical cavity expansion, power-law hardening, no strain-rate term), judged beside the
-# two empirical laws on the measured rods. Inputs: handbook E = 68.9 GPa and nu = 0.33, the
-# source's Y = 276 MPa and rho = 2710 kg/m3 (Piekutowski et al. 1999, p. 731), and the
-# hardening exponent n = 0.051 quoted for this alloy in Forrestal's family of papers (not
-# read in its primary source here). Nothing is fitted to the shots. The coefficients are
-# metal_law's, written out so that importing the library runs no quadrature
-# (tests/inputs/test_laws.py checks them against metal_law).
-ALUMINIUM_CAVITY_INPUTS = {
-    "youngs_modulus": 68.9e9,
-    "poisson_ratio": 0.33,
-    "yield_strength": 276e6,
-    "hardening_exponent": 0.051,
-    "density": 2710.0,
-}
-MEDIA["aluminium_cavity"] = Medium(
-    "aluminium_cavity",
-    (1198326475.2874932, 0.0, 4065.0),
-    density=2710.0,
-    source="metal law (pencore.inputs.laws.metal_law: spherical cavity expansion, power-law "
-    "hardening, inertial B = 3/2, no strain-rate term): E = 68.9 GPa, nu = 0.33 (handbook), "
-    "Y = 276 MPa, rho = 2710 kg/m3 (Piekutowski et al. 1999, p. 731), n = 0.051 (as quoted "
-    "in Forrestal's family of papers); A = 4.342, B = 1.5",
-)
+#: The folder of the library's data files (named media, validation projectiles, the
+#: Table-3 geometry), each with its provenance.
+LIBRARY_DATA = Path(__file__).parent / "data"
 
 # ---------------------------------------------------------------- Table 3 and its fit
 
@@ -236,75 +177,18 @@ def table3_fit() -> Table3Fit:
 # ---------------------------------------------------------------- named projectiles
 
 
-def _validation_projectiles() -> dict[str, Projectile]:
+def _validation_projectiles(
+    path: Path = LIBRARY_DATA / "projectiles.yaml",
+) -> dict[str, Projectile]:
+    """The validation projectiles of the data file ``path`` (the projectile format; a
+    ``derivation`` key says how a number the source does not print was obtained)."""
+    data = _load_yaml(path, "projectile library")
     out: dict[str, Projectile] = {}
-    # Concrete, Forrestal et al. (1994): 76.2 mm diameter, about 13 kg. Assumed: solid
-    # 4340 steel (7850 kg/m3), shank length chosen so that the mass is 13.0 kg.
-    d = 0.0762
-    for crh, tag in ((3.0, "3"), (4.25, "4p25")):
-        nose = OgiveNose(crh, 7850.0)
-        nose_mass = Projectile("n", d, nose).mass_properties().mass
-        ls = (13.0 - nose_mass) / (7850.0 * math.pi * (d / 2) ** 2)
-        out[f"concrete_crh{tag}"] = Projectile(
-            f"concrete_crh{tag}",
-            d,
-            nose,
-            (Cylinder(ls, 7850.0),),
-            source="assumed: 76.2 mm, 13.0 kg solid steel (Forrestal et al. 1994 class; "
-            "M/(rho d^3)=15.2 in Li & Chen 2003); replace with the published geometry",
-        )
-    # Grout (paper Fig. 5's concrete points, very probably): the measured rods of the 13.5 MPa
-    # grout shots, 12.9 mm, 88.9 mm long, 0.064 kg (config/concrete_ogive_shots.csv, a
-    # secondary compilation of Forrestal et al. 1996). A solid steel body of that outline
-    # weighs about 0.08 kg: the measured mass is given (the outline's distribution scaled).
-    d, length = 0.0129, 0.0889
-    for crh, tag in ((3.0, "3"), (4.25, "4p25")):
-        out[f"grout_crh{tag}"] = Projectile(
-            f"grout_crh{tag}",
-            d,
-            OgiveNose(crh, 7850.0),
-            (Cylinder(length - d / 2 * math.sqrt(4 * crh - 1), 7850.0),),
-            source="Forrestal, Frew, Hanchak & Brar 1996, IJIE 18:465-476, via the secondary "
-            "compilation DavidZyh-0319/Concrete-Penetration-Failure-Response-Dataset "
-            f"(config/concrete_ogive_shots.csv): d 12.9 mm, length 88.9 mm, CRH {crh:g}; mass "
-            "0.064 kg measured, outline distribution scaled",
-            mass=0.064,
-        )
-    # Aluminium: the rods of the measured shots (config/aluminium_projectiles.yaml holds
-    # every number with its page; tests/inputs check these against it).
-    # Each rod's mass is the mean of the per-shot masses its tables print (the shot files'
-    # mass_kg column; tests/inputs/test_library.py checks the means): the outline gives
-    # 20.440 g (VAR 4340 ogive), 20.597 g (AerMet 100 ogive: 1.4 % light) and 22.840 g
-    # (sphere) against the measured 20.438, 20.892 and 22.827 g.
-    d = 0.00711
-    p1999 = "Piekutowski et al. 1999, IJIE 23:723-734"
-    for steel, rho, mass, table in (
-        ("var4340", 7830.0, 0.0204379, "Table 1 (p. 725), 20 shots"),
-        ("aermet100", 7890.0, 0.0208919, "Table 2 (p. 726), 14 shots"),
-    ):
-        out[f"al_ogive_{steel}"] = Projectile(
-            f"al_ogive_{steel}",
-            d,
-            OgiveNose(3.0, rho),
-            (Cylinder(0.0593, rho),),
-            source=f"{p1999}: 2a = 7.11 mm, CRH 3.0, nose 11.8 mm, shank 59.3 mm (Fig. 1, "
-            f"p. 724; p. 731), {'VAR 4340' if steel == 'var4340' else 'AerMet 100'} steel "
-            f"{rho:g} kg/m3 (p. 731); mass {mass * 1e3:.4f} g measured (mean of {table}), "
-            "outline distribution scaled",
-            mass=mass,
-        )
-    f2000 = "Forrestal & Piekutowski 2000, IJIE 24:57-67 (manuscript SAND99-0322J)"
-    out["al_sphere_var4340"] = Projectile(
-        "al_sphere_var4340",
-        d,
-        OgiveNose(0.5, 7830.0),
-        (Cylinder(0.0711, 7830.0),),
-        source=f"{f2000}: 2a = 7.11 mm, hemispherical nose, shank 71.1 mm (Fig. 1), VAR 4340 "
-        "steel, Rc 36.6 / 39.5 / 46.2 (Tables 1-3); density 7830 kg/m3 derived (p. 10: 'a and "
-        "rho are the same' as the 1999 VAR 4340 rods); mass 22.8271 g measured (mean of "
-        "Tables 1-3, pp. 14-15, 31 shots), outline distribution scaled",
-        mass=0.0228271,
-    )
+    for name, entry in data.items():
+        entry = _mapping(entry, f"projectile library entry {brief(name)}")
+        fields = {k: v for k, v in entry.items() if k != "derivation"}
+        fields["source"] = " ".join(str(fields.get("source", "")).split())
+        out[name] = projectile_from_dict({"name": name, **fields})
     return out
 
 
@@ -580,6 +464,33 @@ def _load_yaml(path: Path, what: str) -> dict[str, Any]:
     if not isinstance(data, dict):
         raise InputError(f"{what} file {brief_path(path)} must contain a mapping")
     return data
+
+
+def _load_media(path: Path = LIBRARY_DATA / "media.yaml") -> dict[str, Medium]:
+    """The named media of the data file ``path``: coefficients, density and source of
+    each (its ``law`` parameters are provenance, checked against the coefficients by the
+    tests)."""
+    data = _load_yaml(path, "media library")
+    out: dict[str, Medium] = {}
+    for name, entry in data.items():
+        w = f"media library entry {brief(name)}"
+        entry = _mapping(entry, w)
+        check_keys(entry, ("coefficients", "density", "law", "source"), w)
+        coef = entry.get("coefficients")
+        if not isinstance(coef, list) or not coef:
+            raise InputError(f"{w}: needs a list 'coefficients', got {brief(coef)}")
+        out[name] = Medium(
+            name,
+            tuple(number(c, "coefficient", w, allow_str=True) for c in coef),
+            density=_num(entry, "density", w, "medium_density"),
+            source=" ".join(str(entry.get("source", "")).split()),
+        )
+    return out
+
+
+#: The named media (paper Table 1 and its aluminium source's three-term law), read from
+#: ``inputs/data/media.yaml``.
+MEDIA: dict[str, Medium] = _load_media()
 
 
 def _from_yaml_file(spec: str, what: str, build: Any) -> Any:
