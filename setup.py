@@ -7,6 +7,12 @@ Everything else about the build is in ``pyproject.toml``. ``build_py`` here also
 so that an installed pencore loads its kernels at first use instead of compiling them
 for about a minute (:mod:`pencore.kernels.cache` finds them by the kernel stamp).
 
+It compiles once: what it compiled is kept in the build cache outside the source tree
+(``~/.cache/pencore/build-kernels/``, ``PENCORE_BUILD_CACHE``), and a later build with the
+same kernel stamp, numba, Python and target copies it instead of compiling
+(:mod:`pencore.kernels.buildcache`; ``BUILD.json`` beside the kernels says which). pip
+shows the build step's lines only with ``pip install -v``.
+
 The kernels fit the numba, Python and architecture of the build environment; anywhere
 else they are not used and the kernels compile on first use, as without them. A build
 environment that cannot run the solver (numba or a dependency missing) or
@@ -15,15 +21,16 @@ environment that cannot run the solver (numba or a dependency missing) or
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import os
-import shutil
 import subprocess
 import sys
 import time
 from pathlib import Path
 
 from setuptools import setup
+from setuptools.command.bdist_wheel import bdist_wheel
 from setuptools.command.build_py import build_py
 
 ROOT = Path(__file__).resolve().parent
@@ -31,6 +38,11 @@ SRC = ROOT / "src"
 
 #: numba settings the build must not inherit: they would change what is compiled or where.
 _UNSET = ("NUMBA_CPU_FEATURES", "NUMBA_CACHE_DIR", "NUMBA_DISABLE_JIT", "NUMBA_OPT")
+
+NOT_COMPILED = (
+    "pencore build: the numba kernels could not be compiled here (see above); "
+    "the package is built without them and compiles them on first use"
+)
 
 BUILD_INFO = """
 import json, sys
@@ -40,44 +52,68 @@ print(json.dumps(build_info()))
 """
 
 
+def _load_buildcache():
+    """:mod:`pencore.kernels.buildcache` loaded from its file (standard library only):
+    importing it as ``pencore.kernels`` would import numba into this process."""
+    path = SRC / "pencore" / "kernels" / "buildcache.py"
+    spec = importlib.util.spec_from_file_location("_pencore_buildcache", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def _say(line: str) -> None:
+    """One line of the build step (pip shows it with ``pip install -v``)."""
+    print(line, flush=True)
+
+
 def compile_kernels(out: Path) -> bool:
-    """Compile every kernel variant for the portable target into ``out``; True when done."""
+    """Put the kernels for the portable target into ``out``: copied from the build cache
+    (:mod:`pencore.kernels.buildcache`) when an earlier build compiled them for the same
+    kernel stamp, numba, Python and target, else compiled (and kept there); True when
+    done."""
+    buildcache = _load_buildcache()
     out = out.resolve()
-    tmp = out.with_name(out.name + ".partial")
-    shutil.rmtree(tmp, ignore_errors=True)
     env = {k: v for k, v in os.environ.items() if k not in _UNSET}
     env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(SRC), env.get("PYTHONPATH")]))
     env["NUMBA_CPU_NAME"] = "generic"
-    env["PENCORE_KERNEL_BUILD"] = str(tmp)
-    t0 = time.perf_counter()
-    # the sources on sys.path explicitly: pip's isolated build environment rewrites the
-    # path of its interpreter at start-up, and PYTHONPATH alone did not reach it
-    run = (
-        f"import sys, runpy; sys.path.insert(0, {str(SRC)!r}); "
-        "runpy.run_module('pencore.warmup', run_name='__main__')"
-    )
-    done = subprocess.run([sys.executable, "-c", run], env=env, cwd=str(tmp.parent))
-    seconds = time.perf_counter() - t0
+    # the build's folder set: the kernel package imported here neither reads nor writes
+    # the local numba cache (pencore.kernels.cache)
+    env["PENCORE_KERNEL_BUILD"] = str(out.with_name(out.name + ".partial"))
     info = subprocess.run(
         [sys.executable, "-c", BUILD_INFO.format(src=str(SRC))],
         env=env,
         capture_output=True,
         text=True,
     )
-    if done.returncode != 0 or info.returncode != 0:
-        shutil.rmtree(tmp, ignore_errors=True)
-        print(
-            "pencore build: the numba kernels could not be compiled here (see above); "
-            "the package is built without them and compiles them on first use",
-            file=sys.stderr,
-        )
+    if info.returncode != 0:
+        sys.stderr.write(info.stderr)
+        print(NOT_COMPILED, file=sys.stderr)
         return False
     record = json.loads(info.stdout)
-    record["compile_s"] = round(seconds, 1)
-    (tmp / "BUILD.json").write_text(json.dumps(record, indent=1) + "\n")
-    shutil.rmtree(out, ignore_errors=True)
-    os.replace(tmp, out)
-    print(f"pencore build: numba kernels compiled for {record['target']} in {seconds:.0f} s")
+
+    def compile_into(tmp: Path) -> float | None:
+        t0 = time.perf_counter()
+        # the sources on sys.path explicitly: pip's isolated build environment rewrites
+        # the path of its interpreter at start-up, and PYTHONPATH alone did not reach it
+        run = (
+            f"import sys, runpy; sys.path.insert(0, {str(SRC)!r}); "
+            "runpy.run_module('pencore.warmup', run_name='__main__')"
+        )
+        done = subprocess.run(
+            [sys.executable, "-c", run], env={**env, "PENCORE_KERNEL_BUILD": str(tmp)}
+        )
+        return time.perf_counter() - t0 if done.returncode == 0 else None
+
+    done = buildcache.provide_kernels(out, record, compile_into, buildcache.cache_root(), say=_say)
+    if done is None:
+        print(NOT_COMPILED, file=sys.stderr)
+        return False
+    if done["build"] == "compiled":
+        _say(
+            f"pencore build: numba kernels compiled for {record['target']} "
+            f"in {done['compile_s']:.0f} s"
+        )
     return True
 
 
@@ -96,4 +132,21 @@ class build_py_with_kernels(build_py):
         compile_kernels(package / "kernels" / "compiled")
 
 
-setup(cmdclass={"build_py": build_py_with_kernels})
+class bdist_wheel_tagged(bdist_wheel):
+    """A wheel tagged for what it carries: with compiled kernels (numba cache files for one
+    CPython version and one architecture) the interpreter, ABI and platform of the build
+    (``cp311-cp311-linux_x86_64``), without them ``py3-none-any``. ``--plat-name`` still
+    sets the platform (``manylinux_2_28_x86_64`` for an index: docs/getting-started.md)."""
+
+    def run(self) -> None:
+        if not self.skip_build:
+            self.run_command("build")  # build_py compiles (or copies) the kernels, or not
+        build_lib = Path(self.get_finalized_command("build_py").build_lib)
+        kernels = (build_lib / "pencore" / "kernels" / "compiled" / "BUILD.json").is_file()
+        self.root_is_pure = not kernels
+        if kernels:  # the install step then puts the package in platlib, at the wheel's root
+            self.distribution.has_ext_modules = lambda: True
+        super().run()
+
+
+setup(cmdclass={"build_py": build_py_with_kernels, "bdist_wheel": bdist_wheel_tagged})

@@ -404,6 +404,104 @@ def open_archive(path: Path, study: str) -> Any:
     return ds
 
 
+def attribution_mass_text() -> str:
+    """The mass-distribution settings of the archived attribution study
+    (``results/archive/attribution/attribution.nc``): a table, the inverse step with its
+    out-of-fit verdicts, and the spread of the buildable bodies."""
+    from pencore.paper.claims import disputed_values
+
+    paper = disputed_values()
+    with open_archive(ARCHIVE / "attribution" / "attribution.nc", "attribution") as ds:
+        groups = [str(g) for g in ds["group"].values]
+        names = [str(n) for n in ds["setting"].values]
+        rows = [
+            i for i, g in enumerate(groups) if g == "mass distribution" or names[i] == "default"
+        ]
+        head = (
+            "| setting | body of #2 | Lc/L | I_t (kg m^2) | buildable #2 / #4 "
+            "| alpha 5 rad/s (deg) "
+            "| alpha 20 | alpha 25 | turns back at 25 | Vcr (m/s) | depth 280 (m) "
+            "| phi #4 280 / 1000 (deg) | Fig. 12 falls |"
+        )
+        lines = [head, "|" + "---|" * 13]
+        paper_row = (
+            f"| paper | | 0.525 | | | {_fmt(paper['alpha'][5.0])} | {_fmt(paper['alpha'][20.0])} "
+            f"| | yes | {_fmt(paper['vcr_bracket'][0])}-{_fmt(paper['vcr_bracket'][1])} "
+            f"| {_fmt(paper['depth_280'])} | {_fmt(paper['phi_p4'][280.0])} / "
+            f"{_fmt(paper['phi_p4'][1000.0])} | yes |"
+        )
+        lines.append(paper_row)
+        for i in rows:
+            d = ds.isel(setting=i)
+            a = d["alpha"].values
+            lines.append(
+                f"| {d['label'].item()} | {d['body_description'].item()} "
+                f"| {_fmt(float(d['body_lc_over_l']), 4)} "
+                f"| {_fmt(float(d['body_i_transverse']), 3)} "
+                f"| {'yes' if int(d['body_buildable']) else 'no'} / "
+                f"{'yes' if int(d['body_p4_buildable']) else 'no'} "
+                f"| {_fmt(a[0], 3)} | {_fmt(a[1], 3)} | {_fmt(a[2], 3)} "
+                f"| {'yes' if bool(d['turned_back'].values[2]) else 'no'} "
+                f"| {_fmt(float(d['value_vcr']), 4)} | {_fmt(float(d['value_depth_280']), 3)} "
+                f"| {_fmt(float(d['value_phi_p4_280']), 3)} / "
+                f"{_fmt(float(d['value_phi_p4_1000']), 3)} "
+                f"| {'yes' if float(d['value_fig12_falls']) else 'no'} |"
+            )
+        built = [i for i in rows if names[i] != "default" and int(ds["body_buildable"].values[i])]
+        a20 = ds["alpha"].sel(omega=20.0).values
+        back = ds["turned_back"].sel(omega=25.0).values
+        spread = (
+            f"\n\nThe {len(built)} buildable bodies give alpha at 20 rad/s from "
+            f"{_fmt(min(a20[built]), 3)} to {_fmt(max(a20[built]), 3)} deg (paper "
+            f"{_fmt(paper['alpha'][20.0])}); "
+            + (
+                "none turns back at 25 rad/s."
+                if not back[built].any()
+                else "some turn back at 25 rad/s: "
+                + ", ".join(names[i] for i in built if back[i])
+                + "."
+            )
+        )
+        fit = [i for i in range(len(names)) if str(ds["fitted_to"].values[i])]
+        text = ""
+        if fit:
+            d = ds.isel(setting=fit[0])
+            oc = d["omega_c_p2"].values
+            vel = d["omega_c_velocity"].values
+            falls_v = bool(all(oc[k + 1] < oc[k] for k in range(len(oc) - 1)))
+            oc3 = float(d["omega_c_p3_1000"])
+            oc2 = float(oc[list(vel).index(1000.0)])
+
+            def rel(key: str) -> str:
+                return f"{float(d[f'rel_{key}']):+.0%}"
+
+            text = (
+                f"\n\n**The inverse step** (`{names[fit[0]]}`, fitted to "
+                f"{str(d['fitted_to'].item()).replace(';', ' and ')}): Lc/L of #2 "
+                f"{_fmt(float(d['fitted_lc_over_l']), 4)} (Table 3: 0.525) and a transverse "
+                f"inertia {_fmt(float(d['fitted_i_transverse_factor']), 3)} times the solid "
+                f"body's ({_fmt(float(d['body_i_transverse']), 3)} kg m^2) give alpha "
+                f"{_fmt(float(d['alpha'].sel(omega=20.0)), 3)} deg at 20 rad/s and "
+                f"{'a turn-back' if bool(d['turned_back'].sel(omega=25.0)) else 'no turn-back'} "
+                f"at 25 rad/s. It is {'' if int(d['body_buildable']) else 'not '}"
+                "a body that could be built"
+                f" ({d['body_description'].item()}). On the numbers it was not fitted to: "
+                f"alpha at 5 rad/s {_fmt(float(d['value_alpha_5']), 3)} deg ({rel('alpha_5')}), "
+                f"Vcr {_fmt(float(d['value_vcr']), 4)} m/s ({rel('vcr')}), the Table 2 depth "
+                f"{_fmt(float(d['value_depth_280']), 3)} m ({rel('depth_280')}), phi of #4 "
+                f"{_fmt(float(d['value_phi_p4_280']), 3)} / "
+                f"{_fmt(float(d['value_phi_p4_1000']), 3)} deg "
+                f"({rel('phi_p4_280')} / {rel('phi_p4_1000')}), Vcr at 30 deg "
+                f"{'falls' if float(d['value_fig12_falls']) else 'does not fall'} with yaw "
+                f"(Fig. 12); omega_c {', '.join(_fmt(x, 3) for x in oc)} rad/s at "
+                f"{', '.join(_fmt(v) for v in vel)} m/s "
+                f"({'falls' if falls_v else 'does not fall'} with the speed, Figs 17-18) and "
+                f"{_fmt(oc3, 3)} rad/s for #3 with the same recipe against {_fmt(oc2, 3)} for "
+                f"#2 ({'falls' if oc3 < oc2 else 'does not fall'} with Lc/L, Fig. 18)."
+            )
+        return "\n".join(lines) + spread + text
+
+
 def ballistic_limit_table() -> str:
     """Archived ballistic limits against plate thickness and obliquity (m/s)."""
 
@@ -726,6 +824,7 @@ PAGES: dict[str, Callable[[], str]] = {
     "convergence.md": convergence_table,
     "emulation.md": emulation_table,
     "attribution.md": attribution_table,
+    "attribution_mass.md": attribution_mass_text,
     "dataset.md": dataset_table,
     "dataset_attrs.md": dataset_attrs_table,
     "ballistic_limit.md": ballistic_limit_table,

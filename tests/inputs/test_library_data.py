@@ -31,7 +31,8 @@ def test_media_coefficients_are_their_laws_exactly():
     assert list(raw) == ["soil", "concrete", "aluminium", "aluminium_3term", "aluminium_cavity"]
     # YAML 1.1 reads 10.0e6 (no exponent sign) as text: the loader's plain decimals
     law = {
-        k: {p: v if p == "form" else float(v) for p, v in e["law"].items()} for k, e in raw.items()
+        k: {p: v if p in ("form", "inertia") else float(v) for p, v in e["law"].items()}
+        for k, e in raw.items()
     }
     s, c, al, al3, alc = (law[k] for k in raw)
     assert MEDIA["soil"].coefficients == (s["A"] * s["tau0"], 0.0, s["B"] * s["rho"])
@@ -49,7 +50,10 @@ def test_media_coefficients_are_their_laws_exactly():
     assert soil_law(s["A"], s["tau0"], s["B"], s["rho"]).coefficients == MEDIA["soil"].coefficients
     assert concrete_law(c["fc"], c["rho"], s=c["S"]).coefficients == MEDIA["concrete"].coefficients
     # the computed aluminium: metal_law's coefficients from the parameters beside them
-    computed = metal_law(alc["E"], alc["nu"], alc["Y"], alc["n"], alc["rho"])
+    computed = metal_law(
+        alc["E"], alc["nu"], alc["Y"], alc["n"], alc["rho"], max_speed=alc["max_speed"]
+    )
+    assert alc["inertia"] == "compressible"
     assert MEDIA["aluminium_cavity"].coefficients == computed.coefficients
 
 

@@ -155,12 +155,22 @@ def _rewrite_index(index: Path, version=None, triple=None) -> None:
 SHIPPED_CASES = {
     "another CPU family": lambda s: _rewrite_index(_files(s, ".nbi")[0], triple="aarch64-x"),
     "another numba": lambda s: _rewrite_index(_files(s, ".nbi")[0], version="0.0.1"),
+    "another Python": lambda s: _retag_python(s),
     "an older source": lambda s: _restamp(s),
     "a truncated data file": lambda s: _truncate(_files(s, ".nbc")[0]),
     "a garbage data file": lambda s: _files(s, ".nbc")[0].write_bytes(b"\x80\x05garbage" * 9),
     "an emptied index": lambda s: _files(s, ".nbi")[0].write_bytes(b""),
     "a missing data file": lambda s: _files(s, ".nbc")[0].unlink(),
 }
+
+
+def _retag_python(folder: Path) -> None:
+    """Rename the kernel's cache files as another Python version's build names them (a
+    wheel of another interpreter's kernels)."""
+    tag = f".py{sys.version_info[0]}{sys.version_info[1]}"
+    for f in _files(folder, ""):
+        assert tag in f.name
+        f.rename(f.with_name(f.name.replace(tag, ".py30")))
 
 
 def _truncate(f: Path) -> None:

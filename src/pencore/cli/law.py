@@ -58,6 +58,19 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
             )
         if law == "metal":
             q.add_argument(
+                "--inertia",
+                choices=("compressible", "incompressible"),
+                default="compressible",
+                help="B from the compressible elastic-perfectly plastic solution fitted up "
+                "to --max-speed (default), or the incompressible 3/2",
+            )
+            q.add_argument(
+                "--max-speed",
+                default="1000",
+                metavar="M_S",
+                help="upper end of the compressible fit in m/s: your impact speeds (default: 1000)",
+            )
+            q.add_argument(
                 "--finite-sphere",
                 action="store_true",
                 help="also set Hill's finite-sphere free-surface reduction "
@@ -77,6 +90,9 @@ def run(args: argparse.Namespace) -> int:
         if getattr(args, dest) is not None
     }
     if args.law == "metal":
+        kwargs["inertia"] = args.inertia
+        if args.inertia == "compressible":
+            kwargs["max_speed"] = args.max_speed
         kwargs["finite_sphere"] = args.finite_sphere
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")

@@ -37,12 +37,25 @@ Metals (:func:`metal_law`, :func:`cavity_expansion`)
       Mathematical Theory of Plasticity*, 1950, ch. V); at ``nu = 1/2`` it is the printed
       incompressible formula, ``K = 2E/(3Y)``; at ``n = 1``,
       ``I_1 = pi^2/6 - Li2(1/K)`` in closed form.
-    * inertial ``B = 3/2``: for an incompressible solid the velocity field is
-      ``a^2 da/dt / r^2`` whatever the constitutive law, and the momentum balance adds
-      exactly ``rho (a d2a/dt2 + 3/2 (da/dt)^2)`` to the static stress. Compressibility
-      lowers it (Forrestal & Luk 1988; Luk, Forrestal & Amos, J. Appl. Mech. 58, 1991,
-      1-6, solve the compressible problem numerically); that solution is not computed
-      here, so the law is the incompressible one in its inertia.
+    * inertial ``B`` (:func:`compressible_inertia`), by default from the dynamic
+      solution for a compressible elastic-perfectly plastic solid (the formulation of
+      Forrestal & Luk, J. Appl. Mech. 55, 1988, 275-279, as derived here): a cavity opening
+      from zero radius at constant speed ``V``; all fields depend on ``xi = r / (c t)``,
+      ``c = sqrt(E / rho)``; behind the elastic-plastic boundary ``xi = gamma`` the Tresca
+      condition ``sigma_r - sigma_theta = Y`` holds with the pressure ``K eta``
+      (``K = E / (3 (1 - 2 nu))``, ``eta = 1 - rho0 / rho``), and momentum and mass
+      balance are two ordinary differential equations in ``xi``, integrated from the
+      elastic solution at ``gamma`` (``u = k c t (a^3/xi^2 - 3a + 2 xi)``, ``a`` the
+      dilatational over ``c``) inwards to the cavity wall, where the particle speed equals
+      the wall's. ``B`` is the least-squares slope of ``sigma_r / Y - A_0`` against
+      ``rho V^2 / Y`` over ``0 < V <= max_speed``. The solution tends to Hill's
+      quasi-static pressure as ``V -> 0`` (to order ``Y/E ln(E/Y)``) and to the
+      incompressible ``B = 3/2`` as ``nu -> 1/2``; for an incompressible solid the velocity
+      field is ``a^2 da/dt / r^2`` whatever the constitutive law, and the momentum balance
+      adds exactly ``rho (a d2a/dt2 + 3/2 (da/dt)^2)`` to the static stress (the
+      ``inertia="incompressible"`` choice). Strain hardening enters ``A`` only (Luk,
+      Forrestal & Amos, J. Appl. Mech. 58, 1991, 1-6, solve the hardening dynamic problem;
+      not done here).
     * no strain-rate term: Piekutowski et al. (1999) use ``Y (A + B V/c + C V^2/c^2)``
       with the constants of Warren & Forrestal (1998), whose linear term comes from the
       strain-rate sensitivity of the target; this law has no rate sensitivity and no
@@ -68,6 +81,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from typing import Any
 
+import numpy as np
+
 from pencore.errors import InputError, PlausibilityWarning, TargetError
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import LIMITS, as_float, check_keys, number
@@ -77,6 +92,8 @@ __all__ = [
     "LAWS",
     "CavityExpansion",
     "cavity_expansion",
+    "CompressibleInertia",
+    "compressible_inertia",
     "forrestal_s",
     "concrete_law",
     "metal_law",
@@ -339,6 +356,156 @@ def _hardening_integral(n: float, upper: float) -> tuple[float, float]:
     return float(val), float(err)
 
 
+@dataclass(frozen=True)
+class CompressibleInertia:
+    """The dynamic cavity expansion of a compressible elastic-perfectly plastic solid
+    (:func:`compressible_inertia`).
+
+    Attributes
+    ----------
+    b : float
+        Least-squares slope of ``sigma_r / Y - a0`` against ``rho V^2 / Y``.
+    a0 : float
+        ``sigma_r / Y`` of the solution as ``V -> 0``.
+    speeds : tuple of float
+        Cavity speeds ``V`` (m/s) of the solutions the fit uses.
+    stresses : tuple of float
+        ``sigma_r / Y`` at the cavity for each speed.
+    max_solvable_speed : float
+        The fastest cavity (m/s) this solution can open: the elastic-plastic boundary then
+        runs at the plastic bulk wave speed (beyond it a shock forms, not modelled).
+    """
+
+    b: float
+    a0: float
+    speeds: tuple[float, ...]
+    stresses: tuple[float, ...]
+    max_solvable_speed: float
+
+
+def _epp_cavity(gamma: float, e: float, nu: float, y: float, rtol: float) -> tuple[float, float]:
+    """``(V / c, sigma_r / Y)`` at the cavity wall of the similarity solution whose
+    elastic-plastic boundary runs at ``xi = gamma`` (see the module docstring)."""
+    from scipy.integrate import solve_ivp
+
+    mu = e / (2.0 * (1.0 + nu))
+    lam = e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
+    k_bulk = e / (3.0 * (1.0 - 2.0 * nu))
+    a = math.sqrt((lam + 2.0 * mu) / e)
+    amp = y * gamma / (6.0 * mu * a * (a * a / gamma**2 - 1.0))  # yield at xi = gamma
+    eta0 = 6.0 * amp * (a / gamma - 1.0)
+    s0 = (lam * eta0 + 4.0 * mu * amp * (a**3 / gamma**3 - 1.0)) / y
+    u0 = 3.0 * amp * a * (a * a / gamma**2 - 1.0)
+    e_y, y_k, e_k = e / y, y / k_bulk, e / k_bulk
+
+    def rhs(xi: float, state: np.ndarray) -> list[float]:
+        sr, u = state
+        one_eta = 1.0 - (sr - 2.0 / 3.0) * y_k
+        w = u - xi
+        ds = (-2.0 / xi + e_y * w * 2.0 * u / (xi * one_eta)) / (1.0 - e_k * w * w / one_eta**2)
+        return [ds, -2.0 * u / xi - w * y_k * ds / one_eta]
+
+    def wall(xi: float, state: np.ndarray) -> float:
+        return state[1] - xi
+
+    wall.terminal = True  # type: ignore[attr-defined]
+    sol = solve_ivp(
+        rhs,
+        (gamma, 1e-9 * gamma),
+        [s0, u0],
+        method="DOP853",
+        events=wall,
+        rtol=rtol,
+        atol=1e-14,
+    )
+    if not sol.t_events[0].size:
+        raise TargetError("metal law: the cavity-expansion solution found no cavity wall")
+    return float(sol.t_events[0][0]), float(sol.y_events[0][0][0])
+
+
+def compressible_inertia(
+    youngs_modulus: float,
+    poisson_ratio: float,
+    yield_strength: float,
+    density: float,
+    max_speed: float = 1000.0,
+    n_points: int = 16,
+    rtol: float = 1e-10,
+) -> CompressibleInertia:
+    """Inertial coefficient ``B`` of the compressible elastic-perfectly plastic spherical
+    cavity expansion (module docstring), fitted over cavity speeds up to ``max_speed``.
+
+    Parameters
+    ----------
+    youngs_modulus, poisson_ratio, yield_strength : float
+        ``E`` (Pa), ``nu`` (below 1/2), ``Y`` (Pa).
+    density : float
+        ``rho`` (kg/m^3).
+    max_speed : float
+        Upper end of the fit (m/s): the speeds of your impacts.
+    n_points : int
+        Solutions in the fit, at elastic-plastic boundary speeds evenly spaced up to the
+        one whose cavity opens at ``max_speed``.
+    rtol : float
+        Relative tolerance of the ODE integration.
+
+    Returns
+    -------
+    CompressibleInertia
+
+    Raises
+    ------
+    TargetError
+        A value out of its range, ``nu = 1/2`` (use ``inertia="incompressible"``), or a
+        ``max_speed`` beyond what the solution can open.
+
+    Examples
+    --------
+    >>> from pencore.inputs.laws import compressible_inertia
+    >>> ci = compressible_inertia(68.9e9, 0.33, 276e6, 2710.0, max_speed=1000.0)
+    >>> print(f"B = {ci.b:.3f}, A0 = {ci.a0:.3f}")
+    B = 1.147, A0 = 3.891
+    """
+    from scipy.optimize import brentq
+
+    what = "metal law"
+    e = _value(youngs_modulus, "youngs_modulus", what, "E")
+    nu = _value(poisson_ratio, "poisson_ratio", what, "nu")
+    y = _value(yield_strength, "yield_strength", what, "Y")
+    rho = _value(density, "medium_density", what, "density")
+    v_max = _value(max_speed, "velocity", what, "max_speed")
+    if nu >= 0.5:
+        raise TargetError(
+            f"{what}: the compressible solution needs nu < 0.5, got {nu:g} (an incompressible "
+            "solid: inertia='incompressible', B = 3/2)"
+        )
+    if not e / (3.0 * (1.0 - nu) * y) > 1.0:
+        raise TargetError(f"{what}: E / (3 (1 - nu) Y) must be > 1 for a plastic zone to form")
+    c = math.sqrt(e / rho)
+    a = math.sqrt((1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu)))
+    bulk = math.sqrt(1.0 / (3.0 * (1.0 - 2.0 * nu)))
+    g_cap = (1.0 - 1e-6) * min(a, bulk)
+    beta_cap = _epp_cavity(g_cap, e, nu, y, rtol)[0]
+    if v_max / c >= beta_cap:
+        raise TargetError(
+            f"{what}: max_speed must be below {beta_cap * c:.4g} m/s, the fastest cavity the "
+            f"compressible solution opens (the plastic front then runs at the bulk wave "
+            f"speed), got {v_max:g}"
+        )
+    g_hi = brentq(lambda g: _epp_cavity(g, e, nu, y, rtol)[0] - v_max / c, 1e-6, g_cap, xtol=1e-13)
+    a0 = _epp_cavity(1e-6 * g_hi, e, nu, y, rtol)[1]
+    sols = [_epp_cavity(g_hi * j / n_points, e, nu, y, rtol) for j in range(1, n_points + 1)]
+    x = np.array([e / y * b * b for b, _ in sols])
+    ds = np.array([sr - a0 for _, sr in sols])
+    return CompressibleInertia(
+        b=float(x @ ds / (x @ x)),
+        a0=a0,
+        speeds=tuple(b * c for b, _ in sols),
+        stresses=tuple(sr for _, sr in sols),
+        max_solvable_speed=beta_cap * c,
+    )
+
+
 def metal_law(
     youngs_modulus: float,
     poisson_ratio: float,
@@ -346,6 +513,8 @@ def metal_law(
     hardening_exponent: float,
     density: float,
     *,
+    inertia: str = "compressible",
+    max_speed: float = 1000.0,
     name: str = "metal",
     finite_sphere: bool = False,
     friction: float = 0.0,
@@ -358,6 +527,11 @@ def metal_law(
         ``E`` (Pa), ``nu``, ``Y`` (Pa), ``n`` (see :func:`cavity_expansion`).
     density : float
         Target density (kg/m^3).
+    inertia : {"compressible", "incompressible"}
+        ``B`` from the compressible elastic-perfectly plastic solution fitted up to
+        ``max_speed`` (:func:`compressible_inertia`), or the incompressible 3/2.
+    max_speed : float
+        Upper end (m/s) of the compressible fit: the speeds of your impacts.
     name : str
         The medium's label.
     finite_sphere : bool
@@ -369,7 +543,8 @@ def metal_law(
     Returns
     -------
     Medium
-        Coefficients ``(A Y, 0, B rho)`` with ``A``, ``B`` of :func:`cavity_expansion`.
+        Coefficients ``(A Y, 0, B rho)``: ``A`` of :func:`cavity_expansion`, ``B`` of
+        :func:`compressible_inertia` (or 3/2).
 
     Examples
     --------
@@ -377,13 +552,25 @@ def metal_law(
     the source's Y = 276 MPa and an assumed n = 0.051 (see the user guide):
 
     >>> import pencore
-    >>> al = pencore.metal_law(68.9e9, 0.33, 276e6, 0.051, 2710.0)
+    >>> al = pencore.metal_law(68.9e9, 0.33, 276e6, 0.051, 2710.0, max_speed=2000.0)
     >>> a0, a1, a2 = al.coefficients
-    >>> print(f"A = {a0 / 276e6:.3f}, B = {a2 / 2710.0:.2f}")
-    A = 4.342, B = 1.50
+    >>> print(f"A = {a0 / 276e6:.3f}, B = {a2 / 2710.0:.3f}")
+    A = 4.342, B = 1.061
     """
     what = "metal law"
     ce = cavity_expansion(youngs_modulus, poisson_ratio, yield_strength, hardening_exponent)
+    if inertia == "compressible":
+        b = compressible_inertia(
+            youngs_modulus, poisson_ratio, yield_strength, density, max_speed
+        ).b
+        b_from = f"B = {b:.4g} (compressible, fitted up to {float(max_speed):g} m/s)"
+    elif inertia == "incompressible":
+        b = ce.b
+        b_from = "B = 1.5 (incompressible)"
+    else:
+        raise TargetError(
+            f"{what}: inertia must be 'compressible' or 'incompressible', got {brief(inertia)}"
+        )
     e = float(youngs_modulus)
     nu = float(poisson_ratio)
     y = float(yield_strength)
@@ -395,15 +582,15 @@ def metal_law(
         )
     return Medium(
         name,
-        (ce.a * y, 0.0, ce.b * rho),
+        (ce.a * y, 0.0, b * rho),
         (0.0,),
         (_value(friction, "friction", what, "friction"),),
         rho,
-        f"metal law (spherical cavity expansion, power-law hardening; quasi-static A by "
-        f"Forrestal, Okajima & Luk 1988 with Hill's compressible elastic zone, inertial "
-        f"B = 3/2 of the incompressible solution, no strain-rate term): E = {e / 1e9:g} GPa, "
+        f"metal law (spherical cavity expansion; quasi-static A with power-law hardening by "
+        f"Forrestal, Okajima & Luk 1988 with Hill's compressible elastic zone, inertial B of "
+        f"the elastic-perfectly plastic solution, no strain-rate term): E = {e / 1e9:g} GPa, "
         f"nu = {nu:g}, Y = {y / 1e6:g} MPa, n = {n:g}, rho = {rho:g} kg/m3; A = {ce.a:.4g}, "
-        f"B = {ce.b:g}",
+        f"{b_from}",
         plastic_zone_ratio=ce.plastic_zone_ratio if finite_sphere else 0.0,
     )
 
@@ -473,7 +660,7 @@ LAWS: dict[str, tuple[Any, tuple[str, ...], tuple[str, ...]]] = {
     "metal": (
         metal_law,
         ("youngs_modulus", "poisson_ratio", "yield_strength", "hardening_exponent", "density"),
-        ("finite_sphere", "friction"),
+        ("inertia", "max_speed", "finite_sphere", "friction"),
     ),
     "soil": (soil_law, ("a", "tau0", "b", "density"), ("friction",)),
 }

@@ -17,6 +17,7 @@ module              contents
 ``jacobian``        closed-form velocity Jacobian of the ring loads
 ``state``           outcome codes, stopping test, LU solve, quaternion helpers
 ``cache``           where compiled code is kept, shipped and found (set up on import)
+``buildcache``      the build step's cache of compiled kernels (standard library only)
 ==================  ==============================================================
 
 Compile-time habit: a value passed to another compiled function is never a literal

@@ -194,15 +194,17 @@ def invalidate_stale_caches(package: Path = PACKAGE) -> None:
 
 
 def build_info() -> dict[str, str]:
-    """What the shipped kernels of this process's build fit: numba and Python versions,
-    the code generator key (``target``: triple, CPU name, features) and the kernel stamp
-    (written to ``BUILD.json`` beside them by the build step)."""
+    """What the shipped kernels of this process's build fit: numba and Python versions
+    (with the ABI flags, ``py313t`` for a free-threaded 3.13), the code generator key
+    (``target``: triple, CPU name, features) and the kernel stamp (written to
+    ``BUILD.json`` beside them by the build step; the key of the build cache,
+    :mod:`pencore.kernels.buildcache`)."""
     import numba
 
     triple, cpu, features = _host_magic()
     return {
         "numba": numba.__version__,
-        "python": f"py{sys.version_info[0]}{sys.version_info[1]}",
+        "python": f"py{sys.version_info[0]}{sys.version_info[1]}{getattr(sys, 'abiflags', '')}",
         "target": f"{triple}, cpu {cpu!r}, features {features!r}",
         "kernel_hash": kernel_hash(),
     }

@@ -1,7 +1,8 @@
 """Checks of the attribution study's configuration: the choices one setting fixes for
 :func:`pencore.studies.attribution.disputed.disputed_quantities` (shank model, numerics,
 the readings of the paper's yaw, spin centre and "turns back", start height, friction) and
-the list of configured settings.
+the list of configured settings, and the mass distribution of the paper's projectiles
+(:mod:`pencore.paper.bodies`, or the inverse step's fitted one, :data:`INVERSE_BODY`).
 
 Apart from :mod:`pencore.studies.attribution.disputed` so that the workflow's configuration
 check, run at every Snakemake start, names a bad choice without loading the solver.
@@ -17,8 +18,16 @@ from pencore.inputs.conventions import SPIN_CENTRES, normal_impact_angles
 from pencore.inputs.limits import check_keys, number
 from pencore.inputs.models import emulation as _emulation
 from pencore.inputs.models import shank_model
+from pencore.paper.bodies import BODY_KINDS, check_body
 
-__all__ = ["CHOICES", "REVERSALS", "SETTING_KEYS", "check_choices", "check_settings"]
+__all__ = [
+    "CHOICES",
+    "INVERSE_BODY",
+    "REVERSALS",
+    "SETTING_KEYS",
+    "check_choices",
+    "check_settings",
+]
 
 #: Allowed keys of a setting.
 CHOICES = (
@@ -30,7 +39,12 @@ CHOICES = (
     "yaw_reading",
     "reversal",
     "friction",
+    "body",
 )
+
+#: The body kind of the inverse step: the mass properties of #2 fitted to the spin numbers
+#: (:func:`pencore.studies.attribution.inverse.fit_spin_body`).
+INVERSE_BODY = "fit_spin"
 
 #: Readings of "the projectile turns back": its reversal, or its leaving the target.
 REVERSALS = ("turns_back", "exits")
@@ -72,6 +86,17 @@ def check_choices(choices: Mapping[str, Any]) -> dict[str, Any]:
     s["yaw_reading"] = s.get("yaw_reading", "axis_tilted")
     normal_impact_angles(0.1, s["yaw_reading"])  # checks the name
     s["friction"] = number(s.get("friction", 0.0), "friction", "attribution")
+    body = s.get("body")
+    kinds = (*BODY_KINDS, INVERSE_BODY)
+    if isinstance(body, Mapping) and body.get("kind") not in kinds:
+        raise InputError(
+            f"attribution body kind must be one of {', '.join(kinds)}, got {body.get('kind')!r}"
+        )
+    if isinstance(body, Mapping) and body.get("kind") == INVERSE_BODY:
+        check_keys(body, ("kind",), f"attribution body {INVERSE_BODY}")
+        s["body"] = {"kind": INVERSE_BODY}
+    else:
+        s["body"] = check_body(body)
     return s
 
 

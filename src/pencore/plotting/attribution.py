@@ -8,7 +8,7 @@ import xarray as xr
 from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator, NullFormatter
 
-from pencore.plotting.style import _c, new_figure, styled
+from pencore.plotting.style import _COLOURS, _MARKERS, _c, new_figure, styled
 
 __all__ = ["plot_attribution"]
 
@@ -39,7 +39,10 @@ def plot_attribution(ds: xr.Dataset) -> Figure:
     n = len(labels)
     y = np.arange(n)[::-1]
     tol = float(ds.attrs.get("tolerance", 0.03))
-    gcol = {g: _c(i) for i, g in enumerate(dict.fromkeys(groups))}
+    # a group past the colour cycle takes the next marker, so no two groups look alike
+    order = list(dict.fromkeys(groups))
+    gcol = {g: _c(i) for i, g in enumerate(order)}
+    gmark = {g: _MARKERS[(i // len(_COLOURS)) % len(_MARKERS)] for i, g in enumerate(order)}
     fig = new_figure(17.0, max(2.6, 1.0 + 0.27 * n))
     axes = fig.subplots(1, len(_PANELS), sharey=True, gridspec_kw={"wspace": 0.08})
     for ax, (key, title, log) in zip(axes, _PANELS, strict=True):
@@ -65,7 +68,9 @@ def plot_attribution(ds: xr.Dataset) -> Figure:
             ax.axvline(p, color="crimson", lw=1.5)
         for i in range(n):
             c = gcol[groups[i]]
-            ax.plot(v[i], y[i], "o", ms=5, mfc=c if argued[i] else "white", mec=c, mew=1.3)
+            ax.plot(
+                v[i], y[i], gmark[groups[i]], ms=5, mfc=c if argued[i] else "white", mec=c, mew=1.3
+            )
         finite = v[np.isfinite(v) & (v > 0)]
         if log and finite.size and max(finite.max(), p) / min(finite.min(), p) > 20:
             ax.set_xscale("log")

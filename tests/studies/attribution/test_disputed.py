@@ -50,6 +50,8 @@ def test_every_variable_has_units_and_the_paper_values(default):
         ({"start_height": -1.0}, "start height"),
         ({"numerics": 3}, "numerics"),
         ([("shank", "dafl")], "mapping"),
+        ({"body": {"kind": "hollow"}}, "body kind must be one of .*fit_spin"),
+        ({"body": {"kind": "fit_spin", "lc_over_l": 0.6}}, "lc_over_l"),
     ],
 )
 def test_bad_settings_are_one_line_input_errors(choices, match):

@@ -56,7 +56,12 @@ The choices (keys of the dict; all optional):
     ``"axis_tilted"`` or ``"velocity_tilted"``
     (:func:`pencore.inputs.conventions.normal_impact_angles`);
 ``friction``
-    constant Coulomb coefficient of the soil (the paper: frictionless).
+    constant Coulomb coefficient of the soil (the paper: frictionless);
+``body``
+    the mass distribution of #2 and #4 (:func:`pencore.paper.bodies.build_body`; default
+    the fitted solid bodies), or ``{"kind": "fit_spin"}``: the inverse step
+    (:func:`pencore.studies.attribution.inverse.fit_spin_body`), whose fitted values and
+    omega_c trends the result records.
 """
 
 from __future__ import annotations
@@ -75,10 +80,17 @@ from pencore.inputs.conventions import normal_impact_angles
 from pencore.inputs.library import MEDIA
 from pencore.inputs.target import Target
 from pencore.integrators.driver import RunResult
-from pencore.paper.choices import check_choices
+from pencore.paper.bodies import build_body
+from pencore.paper.choices import INVERSE_BODY, check_choices
 from pencore.paper.claims import disputed_values
 from pencore.run.impact import prepare, run_impact, simulate
 from pencore.search.threshold import VELOCITY_TOL, find_threshold
+from pencore.studies.attribution.inverse import (
+    FITTED_TO,
+    OMEGA_C_SPEEDS,
+    fit_spin_body,
+    omega_c_trends,
+)
 
 __all__ = ["disputed_quantities", "relative_differences"]
 
@@ -128,16 +140,25 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
     s = check_choices(choices or {})
     target = _target(s["friction"])
     kw = dict(shank=s["shank"], emulation=s["emulation"], **s["numerics"])
-    p2 = prepare("p2", target, **kw)
-    p4 = prepare("p4", target, **kw)
+    wall = {}
+    body, fit, trends = s["body"], None, {}
+    if body["kind"] == INVERSE_BODY:
+        t0 = time.perf_counter()
+        fit = fit_spin_body(target, **kw)
+        body = {"kind": "given", "lc_over_l": fit.lc_over_l, "i_transverse_factor": fit.factor}
+        trends = omega_c_trends(fit, target, **kw)
+        wall["fit"] = time.perf_counter() - t0
+    b2, b4 = build_body("p2", body), build_body("p4", body)
+    q2, q4 = b2.projectile, b4.projectile
+    p2 = prepare(q2, target, **kw)
+    p4 = prepare(q4, target, **kw)
     h = s["start_height"]
     start = None if h == 0.0 else (0.0, h, 0.0)
-    wall = {}
 
     t0 = time.perf_counter()
     alpha, back = [], []
     for w in OMEGAS:
-        ds = simulate("p2", target, 1000.0, omega=w, start=start, prepared=p2,
+        ds = simulate(q2, target, 1000.0, omega=w, start=start, prepared=p2,
                       spin_about=s["spin_about"])  # fmt: skip
         alpha.append(analysis.final_deviation(ds))
         back.append(_turned_back(ds, s["reversal"]))
@@ -146,7 +167,7 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
     t0 = time.perf_counter()
 
     def verdict(v: float) -> bool:
-        run = run_impact("p2", target, v, 45.0, start=VCR_START, prepared=p2,
+        run = run_impact(q2, target, v, 45.0, start=VCR_START, prepared=p2,
                          stop_at_reversal=s["reversal"] == "turns_back")  # fmt: skip
         return _turned_back(run, s["reversal"])
 
@@ -154,13 +175,13 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
     wall["vcr"] = time.perf_counter() - t0
 
     t0 = time.perf_counter()
-    depth = float(simulate("p2", target, 280.0, prepared=p2).path_length)
+    depth = float(simulate(q2, target, 280.0, prepared=p2).path_length)
     wall["depth_280"] = time.perf_counter() - t0
 
     t0 = time.perf_counter()
     ob, yw = normal_impact_angles(0.1, s["yaw_reading"])
     phi = [
-        analysis.final_deviation(simulate("p4", target, v, ob, yw, start=start, prepared=p4))
+        analysis.final_deviation(simulate(q4, target, v, ob, yw, start=start, prepared=p4))
         for v in PHI_SPEEDS
     ]
     wall["phi_p4"] = time.perf_counter() - t0
@@ -171,7 +192,7 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
 
         def verdict12(v: float, yaw: float = yaw) -> bool:
             run = run_impact(
-                "p2", target, v, FIG12_OBLIQUITY, yaw, start=VCR_START, prepared=p2,
+                q2, target, v, FIG12_OBLIQUITY, yaw, start=VCR_START, prepared=p2,
                 stop_at_reversal=s["reversal"] == "turns_back",
             )  # fmt: skip
             return _turned_back(run, s["reversal"])
@@ -192,6 +213,7 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
         {
             **{k: v for k, v in s.items() if k not in ("shank", "emulation")},
             "shank": s["shank"].describe(),
+            "body": s["body"],
             "emulation": s["emulation"].describe(),
         }
     )
@@ -226,10 +248,17 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
                 f"wall_{k}": ((), v, attrs("s", f"wall time of the {k} runs"))
                 for k, v in wall.items()
             },
+            **_body_variables(b2, fit, trends),
+            "body_p4_buildable": ((), int(b4.buildable), attrs("1", "1: #4's body could be built")),
         },
         coords={
             "omega": ("omega", np.array(OMEGAS), om_attrs),
             "phi_velocity": ("phi_velocity", np.array(PHI_SPEEDS), pv_attrs),
+            "omega_c_velocity": (
+                "omega_c_velocity",
+                np.array(OMEGA_C_SPEEDS),
+                attrs("m s-1", "impact velocity of the inverse step's omega_c trend"),
+            ),
             "fig12_yaw": (
                 "fig12_yaw",
                 np.array(FIG12_YAWS),
@@ -238,10 +267,55 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
         },
         attrs={
             "title": "pencore attribution: the paper's disputed quantities for one setting",
+            "body_description": b2.description,
+            "fitted_to": ";".join(FITTED_TO) if fit is not None else "",
             "setting_json": setting_json,
             "vcr_status": res.status,
         },
     )
+
+
+def _body_variables(b2: Any, fit: Any, trends: Mapping[str, float]) -> dict[str, Any]:
+    """The mass properties of #2's body; the inverse step's fitted values (NaN when the
+    setting fits nothing) and its omega_c trends."""
+    mp = b2.projectile.mass_properties()
+    nan = math.nan
+
+    def a(units: str, long_name: str) -> dict[str, str]:
+        return {"units": units, "long_name": long_name}
+
+    return {
+        "body_mass": ((), mp.mass, a("kg", "mass of #2's body")),
+        "body_lc_over_l": ((), mp.lc_over_l, a("1", "Lc/L of #2's body")),
+        "body_i_axial": ((), mp.i_axial, a("kg m2", "axial inertia of #2's body")),
+        "body_i_transverse": ((), mp.i_transverse, a("kg m2", "transverse inertia of #2's body")),
+        "body_buildable": ((), int(b2.buildable), a("1", "1: #2's body could be built")),
+        "fitted_lc_over_l": (
+            (),
+            fit.lc_over_l if fit else nan,
+            a("1", "inverse step: fitted Lc/L of #2 (to alpha_20, turn_back_25)"),
+        ),
+        "fitted_i_transverse_factor": (
+            (),
+            fit.factor if fit else nan,
+            a("1", "inverse step: fitted I_t / solid body's I_t (to alpha_20, turn_back_25)"),
+        ),
+        "fit_reproduced": (
+            (),
+            int(fit.reproduced) if fit else -1,
+            a("1", "inverse step: 1 the fitted numbers reproduced, 0 not, -1 no fit"),
+        ),
+        "omega_c_p2": (
+            "omega_c_velocity",
+            [trends.get(f"p2_{v:g}", nan) for v in OMEGA_C_SPEEDS],
+            a("rad s-1", "omega_c of #2's fitted body (NaN: no fit, or above the range)"),
+        ),
+        "omega_c_p3_1000": (
+            (),
+            trends.get("p3_1000", nan),
+            a("rad s-1", "omega_c of #3 with the fitted recipe at 1000 m/s"),
+        ),
+    }
 
 
 def relative_differences(ds: xr.Dataset) -> dict[str, float]:

@@ -24,6 +24,11 @@ The paper numbers (values from ``config/paper_claims.csv``):
 
 ``vcr`` is compared with the midpoint of the paper's bracket, and "within 3 %" for it
 means inside the bracket widened by 3 % of its midpoint on each side.
+
+A setting may be fitted to some of these numbers (the inverse step of the mass
+distribution, :mod:`pencore.studies.attribution.inverse`; its ``fitted_to``): the table
+never offers it as the closest setting for a number it was fitted to, and lists it there
+marked "(fitted)".
 """
 
 from __future__ import annotations
@@ -76,6 +81,16 @@ def run_setting(setting: Mapping[str, Any]) -> xr.Dataset:
     )
     ds["vcr_status"] = ("setting", np.array([ds.attrs.pop("vcr_status")]))
     ds["setting_json"] = ("setting", np.array([ds.attrs.pop("setting_json")]))
+    ds["body_description"] = (
+        "setting",
+        np.array([ds.attrs.pop("body_description")]),
+        {"long_name": "how #2's body would be built"},
+    )
+    ds["fitted_to"] = (
+        "setting",
+        np.array([ds.attrs.pop("fitted_to")]),
+        {"long_name": "paper numbers this setting is fitted to (;-separated; empty: none)"},
+    )
     return ds
 
 
@@ -160,6 +175,13 @@ def gather(parts: Sequence[xr.Dataset]) -> xr.Dataset:
     return ds
 
 
+def _fitted(ds: xr.Dataset, key: str) -> np.ndarray:
+    """Per setting: whether it was fitted to the paper number ``key``."""
+    if "fitted_to" not in ds:
+        return np.zeros(ds.sizes["setting"], dtype=bool)
+    return np.array([key in str(f).split(";") for f in ds["fitted_to"].values])
+
+
 def attribution_table(ds: xr.Dataset) -> pd.DataFrame:
     """Per paper number: the paper, the default model, the setting closest to the paper
     (and whether it is physically argued), and whether it is within the tolerance; last
@@ -172,7 +194,8 @@ def attribution_table(ds: xr.Dataset) -> pd.DataFrame:
     rows = []
     for k, (label, units) in NUMBERS.items():
         miss = ds[f"miss_{k}"].values
-        best = int(np.nanargmin(miss))
+        fitted = _fitted(ds, k)
+        best = int(np.nanargmin(np.where(fitted, np.nan, miss)))
         tol = TOLERANCE if k not in VERDICTS else 0.0
 
         def fmt(v: float, key: str = k) -> str:
@@ -180,7 +203,11 @@ def attribution_table(ds: xr.Dataset) -> pd.DataFrame:
                 return "yes" if v >= 0.5 else "no"
             return f"{v:.4g}"
 
-        within = [labels[i] for i in range(len(names)) if miss[i] <= tol]
+        within = [
+            labels[i] + (" (fitted)" if fitted[i] else "")
+            for i in range(len(names))
+            if miss[i] <= tol
+        ]
         rows.append(
             {
                 "paper number": label,

@@ -1,0 +1,315 @@
+"""The build cache: kernels the build step compiled once, reused by every later build
+with the same kernel stamp, numba, Python and target.
+
+The build step (``setup.py``) compiles the numba kernels into the package it builds
+(:mod:`pencore.kernels.cache`, ``pencore/kernels/compiled/``). Without a cache every build
+compiles them again (about a minute of CPU): an editable install, an extra added to it
+later (pip reinstalls pencore), the packaging build of the sdist and the wheel. With it,
+the first build keeps a copy of what it compiled in an entry of the build cache, outside
+the source tree, and a later build whose **key** matches copies the entry instead of
+compiling. The key is what makes the kernels fit (:func:`pencore.kernels.cache.build_info`,
+``BUILD.json``): the numba version, the Python version and ABI, the code generator target
+(triple, CPU name ``generic``, features) and the kernel stamp (SHA-256 of every compiled
+source file).
+
+Where: ``PENCORE_BUILD_CACHE`` when set (``off`` disables the cache), else the user's cache
+folder (``$XDG_CACHE_HOME`` or ``~/.cache`` on Linux, ``~/Library/Caches`` on macOS,
+``%LOCALAPPDATA%`` on Windows) ``/pencore/build-kernels/``, one folder per key
+(:func:`entry_name`).
+
+An entry is used only when it passes the damage checks of the runtime cache, made
+stricter by a manifest: it is complete (written to a ``.partial-*`` folder and renamed
+into place as a whole; a partial folder is never read), its ``BUILD.json`` equals the key
+asked for (stamp, numba, Python, target), every file of its ``MANIFEST.json`` is there
+with the SHA-256 recorded when it was stored (a truncated, emptied or garbage file fails),
+and every numba index file starts with this numba's version. An entry that fails is
+deleted (it could only fail again) and the kernels are compiled, as without a cache. A
+cache that cannot be written (a read-only home) only costs the copy for next time. The
+cache keeps the :data:`KEEP` entries used last (about 7 MB each) and the partial folders
+of builds that are still running (younger than :data:`PARTIAL_AGE_S`).
+
+This module uses the standard library only: ``setup.py`` loads it by its path, before
+numba or the package can be imported.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import pickle
+import shutil
+import sys
+import time
+import uuid
+from collections.abc import Callable
+from pathlib import Path
+
+__all__ = [
+    "CACHE_ENV",
+    "FOLDERS",
+    "KEEP",
+    "KEY_FIELDS",
+    "PARTIAL_AGE_S",
+    "cache_root",
+    "entry_name",
+    "find_entry",
+    "provide_kernels",
+    "prune",
+    "store_entry",
+    "verify_entry",
+]
+
+#: Environment variable: the build cache's folder; ``off`` disables it.
+CACHE_ENV = "PENCORE_BUILD_CACHE"
+
+#: What the kernels fit, as the build step records it in ``BUILD.json``: all must match.
+KEY_FIELDS = ("kernel_hash", "numba", "python", "target")
+
+#: The compiled folders of a kernel build (``pencore.kernels.cache.COMPILED_FOLDERS``).
+FOLDERS = ("kernels", "integrators")
+
+#: How many entries the cache keeps (the ones used last).
+KEEP = 4
+
+#: A partial folder older than this (seconds) is of a build that was stopped: deleted.
+PARTIAL_AGE_S = 3600.0
+
+#: The record of the build beside the kernels, and the manifest of a cache entry.
+BUILD_FILE = "BUILD.json"
+MANIFEST_FILE = "MANIFEST.json"
+
+
+def cache_root(environ: dict[str, str] | None = None) -> Path | None:
+    """The folder of the build cache (None: disabled by ``PENCORE_BUILD_CACHE=off``).
+
+    Examples
+    --------
+    >>> cache_root({"PENCORE_BUILD_CACHE": "/tmp/kernels"}).as_posix()
+    '/tmp/kernels'
+    >>> cache_root({"PENCORE_BUILD_CACHE": "off"}) is None
+    True
+    """
+    env = os.environ if environ is None else environ
+    given = env.get(CACHE_ENV, "").strip()
+    if given.lower() == "off":
+        return None
+    if given:
+        return Path(given).expanduser()
+    if sys.platform == "win32":
+        base = Path(env.get("LOCALAPPDATA") or Path.home() / "AppData" / "Local")
+    elif sys.platform == "darwin":
+        base = Path.home() / "Library" / "Caches"
+    else:
+        base = Path(env.get("XDG_CACHE_HOME") or Path.home() / ".cache")
+    return base / "pencore" / "build-kernels"
+
+
+def entry_name(record: dict[str, str]) -> str:
+    """The folder name of the entry for a key: the stamp's start, numba and Python
+    readable, and a digest of the whole key (the target string holds spaces and quotes).
+
+    Examples
+    --------
+    >>> key = {"kernel_hash": "ab" * 32, "numba": "0.61.0", "python": "py311",
+    ...        "target": "x86_64-unknown-linux-gnu, cpu 'generic', features ''"}
+    >>> entry_name(key)[:34]
+    'abababababababab-numba0.61.0-py311'
+    """
+    key = json.dumps({k: record[k] for k in KEY_FIELDS}, sort_keys=True)
+    digest = hashlib.sha256(key.encode()).hexdigest()[:12]
+    return f"{record['kernel_hash'][:16]}-numba{record['numba']}-{record['python']}-{digest}"
+
+
+def _sha256(path: Path) -> str:
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+def _kernel_files(folder: Path) -> list[Path]:
+    """The numba cache files (index and data) of a kernel build, sorted."""
+    return sorted(p for d in FOLDERS for p in (folder / d).glob("*.nb[ic]"))
+
+
+def verify_entry(entry: Path, record: dict[str, str]) -> str | None:
+    """Why the cache entry ``entry`` cannot serve the key ``record`` (None: it can).
+
+    The checks: ``BUILD.json`` matches every key field, ``MANIFEST.json`` lists at least
+    one index and one data file, each listed file exists with its recorded SHA-256 and
+    no kernel file is there unlisted, and every index file begins with ``record``'s numba
+    version (numba's own check before it reads an index).
+    """
+    try:
+        built = json.loads((entry / BUILD_FILE).read_text())
+        manifest = json.loads((entry / MANIFEST_FILE).read_text())
+    except (OSError, ValueError) as exc:
+        return f"no readable {BUILD_FILE} and {MANIFEST_FILE} ({type(exc).__name__})"
+    if not isinstance(built, dict) or not isinstance(manifest, dict):
+        return f"{BUILD_FILE} or {MANIFEST_FILE} is not a JSON object"
+    for field in KEY_FIELDS:
+        if built.get(field) != record[field]:
+            return f"{field} {built.get(field)!r} is not {record[field]!r}"
+    names = sorted(manifest)
+    if not any(n.endswith(".nbi") for n in names) or not any(n.endswith(".nbc") for n in names):
+        return f"{MANIFEST_FILE} lists no kernels"
+    present = {p.relative_to(entry).as_posix() for p in _kernel_files(entry)}
+    if present - set(names):
+        return f"{sorted(present - set(names))[0]} is not in {MANIFEST_FILE}"
+    for name in names:
+        path = entry / name
+        try:
+            if _sha256(path) != manifest[name]:
+                return f"{name} does not match its SHA-256 (damaged)"
+            if name.endswith(".nbi"):
+                with open(path, "rb") as f:
+                    version = pickle.load(f)  # a str: numba's own first read of an index
+                if version != record["numba"]:
+                    return f"{name} is an index of numba {version!r}"
+        except (OSError, pickle.UnpicklingError, EOFError, ValueError) as exc:
+            return f"{name} cannot be read ({type(exc).__name__})"
+    return None
+
+
+def find_entry(root: Path, record: dict[str, str]) -> tuple[Path | None, str]:
+    """The verified entry for ``record`` under ``root`` and a one-line account: (entry,
+    "") on a hit, (None, why) on a miss. A damaged entry is deleted (it would fail again)."""
+    entry = root / entry_name(record)
+    if not entry.is_dir():
+        return None, f"no entry {entry.name} in {root}"
+    why = verify_entry(entry, record)
+    if why is None:
+        try:
+            os.utime(entry)  # used now: the last to be pruned
+        except OSError:
+            pass
+        return entry, ""
+    shutil.rmtree(entry, ignore_errors=True)
+    return None, f"entry {entry} refused and deleted: {why}"
+
+
+def store_entry(root: Path, built: Path, record: dict[str, str]) -> Path:
+    """Copy the kernel build ``built`` (its compiled folders and ``BUILD.json``) into the
+    cache as the entry of ``record``, with its manifest; returns the entry.
+
+    Written to ``<entry>.partial-<id>`` and renamed into place, so a reader sees a whole
+    entry or none; when another build stored the same entry first, theirs is kept.
+
+    Raises
+    ------
+    OSError
+        when the cache cannot be written (the caller goes on without it).
+    """
+    entry = root / entry_name(record)
+    tmp = root / f"{entry.name}.partial-{os.getpid()}-{uuid.uuid4().hex[:8]}"
+    try:
+        tmp.mkdir(parents=True)
+        for d in FOLDERS:
+            if (built / d).is_dir():
+                shutil.copytree(built / d, tmp / d)
+        shutil.copy2(built / BUILD_FILE, tmp / BUILD_FILE)
+        manifest = {p.relative_to(tmp).as_posix(): _sha256(p) for p in _kernel_files(tmp)}
+        (tmp / MANIFEST_FILE).write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n")
+        if entry.is_dir() and verify_entry(entry, record) is not None:
+            shutil.rmtree(entry, ignore_errors=True)  # a damaged one: replaced
+        try:
+            os.rename(tmp, entry)
+        except OSError:
+            if not entry.is_dir():  # not a concurrent store of the same entry
+                raise
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    return entry
+
+
+def prune(root: Path, keep: int = KEEP, now: float | None = None) -> list[Path]:
+    """Delete all but the ``keep`` entries of ``root`` used last (by their folder's time,
+    renewed on each use) and the partial folders older than :data:`PARTIAL_AGE_S`;
+    returns what was deleted."""
+    now = time.time() if now is None else now
+    entries, gone = [], []
+    for d in sorted(root.iterdir()) if root.is_dir() else []:
+        if not d.is_dir():
+            continue
+        if ".partial-" in d.name:
+            if now - d.stat().st_mtime > PARTIAL_AGE_S:
+                gone.append(d)
+        else:
+            entries.append(d)
+    entries.sort(key=lambda d: d.stat().st_mtime, reverse=True)
+    gone += entries[keep:]
+    for d in gone:
+        shutil.rmtree(d, ignore_errors=True)
+    return gone
+
+
+def _copy_entry(entry: Path, dest: Path) -> str:
+    """Copy the kernels of a verified entry into ``dest`` and check the copies against its
+    manifest; returns why that failed ("" when done): an entry deleted or changed while
+    it was copied (another build pruning the cache), a full disk."""
+    try:
+        manifest = json.loads((entry / MANIFEST_FILE).read_text())
+        dest.mkdir(parents=True)
+        for d in FOLDERS:
+            if (entry / d).is_dir():
+                shutil.copytree(entry / d, dest / d)
+        copied = {p.relative_to(dest).as_posix(): _sha256(p) for p in _kernel_files(dest)}
+    except (OSError, ValueError) as exc:
+        return f"copy from {entry} failed ({type(exc).__name__})"
+    return "" if copied == manifest else f"copy from {entry} differs from its manifest"
+
+
+def provide_kernels(
+    out: Path,
+    record: dict[str, str],
+    compile_into: Callable[[Path], float | None],
+    root: Path | None,
+    say: Callable[[str], None] = print,
+) -> dict | None:
+    """Put the kernels of key ``record`` into ``out``: copied from the build cache under
+    ``root`` when it holds a verified entry, else compiled by ``compile_into(folder)``
+    (returns the seconds it took, None on failure) and stored in the cache.
+
+    ``out`` is written through ``out.partial`` and replaced as a whole. Its
+    ``BUILD.json`` is ``record`` plus ``build`` (``compiled`` or ``copied``),
+    ``compile_s`` (the seconds this build compiled: 0 when copied) and ``build_cache``
+    (the entry, or None). Returns that record, or None when the compile failed (``out``
+    is then left absent). ``say`` reports each step in one line.
+    """
+    out = Path(out)
+    tmp = out.with_name(out.name + ".partial")
+    shutil.rmtree(tmp, ignore_errors=True)
+    entry, why = (None, "disabled") if root is None else find_entry(root, record)
+    if entry is not None:
+        why = _copy_entry(entry, tmp)
+        if why:
+            shutil.rmtree(tmp, ignore_errors=True)
+            entry = None
+    if entry is not None:
+        say(f"pencore build: numba kernels copied from the build cache {entry} (no compile)")
+        done = {**record, "build": "copied", "compile_s": 0.0, "build_cache": str(entry)}
+    else:
+        say(
+            f"pencore build: compiling the numba kernels (about a minute of CPU; build cache: "
+            f"{why})"
+        )
+        seconds = compile_into(tmp)
+        if seconds is None:
+            shutil.rmtree(tmp, ignore_errors=True)
+            return None
+        done = {**record, "build": "compiled", "compile_s": round(seconds, 1)}
+        done["build_cache"] = None
+        (tmp / BUILD_FILE).write_text(json.dumps(done, indent=1) + "\n")
+        if root is not None:
+            try:
+                done["build_cache"] = str(store_entry(root, tmp, done))
+                say(f"pencore build: kept in the build cache {done['build_cache']}")
+                prune(root)
+            except OSError as exc:
+                say(f"pencore build: the build cache {root} cannot be written ({exc}): not kept")
+    (tmp / BUILD_FILE).write_text(json.dumps(done, indent=1) + "\n")
+    shutil.rmtree(out, ignore_errors=True)
+    os.replace(tmp, out)
+    return done
