@@ -223,3 +223,16 @@ def test_signature_check_catches_a_wrong_default_and_a_missing_one():
     assert _signature_mismatches("pencore.vcr", shown) == [
         "pencore.vcr: hi=3000 shown, default is 4000.0"
     ]
+
+
+def test_measurements_page_states_the_computed_aluminium_laws_inputs():
+    """The measurements page types the computed aluminium law's fit range and hardening
+    exponent: they must be the library entry's."""
+    import yaml
+
+    law = yaml.safe_load((REPO / "src/pencore/inputs/data/media.yaml").read_text())[
+        "aluminium_cavity"
+    ]["law"]
+    page = _page("results/measurements.md")
+    assert f"fitted up to {float(law['max_speed']):g} m/s" in page
+    assert f"an assumed n = {law['n']:g}" in page
