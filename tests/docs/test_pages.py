@@ -238,3 +238,16 @@ def test_commands_never_put_a_target_after_configfile():
         joined = re.sub(r"\\\s*\n\s*#?\s*", " ", text)  # continuation lines, commented or not
         for m in re.finditer(r"snakemake [^\n]*?--configfile\s+(\S+)\s+([^\s\\]+)", joined):
             assert m.group(2).startswith("-") or m.group(2) in ("```", "#"), m.group(0)
+
+
+def test_measurements_page_states_the_computed_aluminium_laws_inputs():
+    """The measurements page types the computed aluminium law's fit range and hardening
+    exponent: they must be the library entry's."""
+    import yaml
+
+    law = yaml.safe_load((REPO / "src/pencore/inputs/data/media.yaml").read_text())[
+        "aluminium_cavity"
+    ]["law"]
+    page = _page("results/measurements.md")
+    assert f"fitted up to {float(law['max_speed']):g} m/s" in page
+    assert f"an assumed n = {law['n']:g}" in page

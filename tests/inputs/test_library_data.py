@@ -11,7 +11,7 @@ import yaml
 
 from pencore.errors import InputError
 from pencore.inputs.geometry import OgiveNose, Projectile
-from pencore.inputs.laws import concrete_law, soil_law
+from pencore.inputs.laws import concrete_law, metal_law, soil_law
 from pencore.inputs.library import (
     LIBRARY_DATA,
     MEDIA,
@@ -27,12 +27,14 @@ def _raw(name: str) -> dict:
 
 def test_media_coefficients_are_their_laws_exactly():
     raw = _raw("media.yaml")
-    assert list(raw) == list(MEDIA) == ["soil", "concrete", "aluminium", "aluminium_3term"]
+    assert list(raw) == list(MEDIA)
+    assert list(raw) == ["soil", "concrete", "aluminium", "aluminium_3term", "aluminium_cavity"]
     # YAML 1.1 reads 10.0e6 (no exponent sign) as text: the loader's plain decimals
     law = {
-        k: {p: v if p == "form" else float(v) for p, v in e["law"].items()} for k, e in raw.items()
+        k: {p: v if p in ("form", "inertia") else float(v) for p, v in e["law"].items()}
+        for k, e in raw.items()
     }
-    s, c, al, al3 = (law[k] for k in raw)
+    s, c, al, al3, alc = (law[k] for k in raw)
     assert MEDIA["soil"].coefficients == (s["A"] * s["tau0"], 0.0, s["B"] * s["rho"])
     assert MEDIA["concrete"].coefficients == (c["S"] * c["fc"], 0.0, c["rho"])
     assert MEDIA["aluminium"].coefficients == (al["A"] * al["Y"], 0.0, al["B"] * al["rho"])
@@ -47,6 +49,25 @@ def test_media_coefficients_are_their_laws_exactly():
     # the laws from properties give the paper's media
     assert soil_law(s["A"], s["tau0"], s["B"], s["rho"]).coefficients == MEDIA["soil"].coefficients
     assert concrete_law(c["fc"], c["rho"], s=c["S"]).coefficients == MEDIA["concrete"].coefficients
+    # the computed aluminium: metal_law's coefficients from the parameters beside them
+    computed = metal_law(
+        alc["E"], alc["nu"], alc["Y"], alc["n"], alc["rho"], max_speed=alc["max_speed"]
+    )
+    assert alc["inertia"] == "compressible"
+    assert MEDIA["aluminium_cavity"].coefficients == computed.coefficients
+
+
+@pytest.mark.parametrize("name", ["grout_crh3", "grout_crh4p25"])
+def test_grout_rods_by_their_derivation(name):
+    # 12.9 mm, 88.9 mm overall: the shank is the length less the tangent ogive's nose,
+    # bit for bit; the measured 0.064 kg is given (a solid steel body would weigh 0.08 kg)
+    p = get_projectile(name)
+    d, crh = p.diameter, p.nose.crh
+    assert p.shank[0].length == 0.0889 - d / 2 * math.sqrt(4 * crh - 1)
+    assert p.length == pytest.approx(0.0889, rel=1e-12)
+    assert p.mass_properties().mass == pytest.approx(0.064, rel=1e-12)
+    outline = Projectile("o", d, p.nose, p.shank).mass_properties().mass
+    assert 0.078 < outline < 0.082
 
 
 @pytest.mark.parametrize("name", ["concrete_crh3", "concrete_crh4p25"])

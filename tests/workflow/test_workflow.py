@@ -100,7 +100,7 @@ def test_schema_fills_defaults_of_an_empty_config():
     assert cfg["numerics"] and all(v is None for v in cfg["numerics"].values())
     assert resolve_numerics(cfg["numerics"]) == pencore.Numerics()
     assert cfg["validation"]["table2"]["projectiles"] == ["p1", "p2", "p3", "p4"]
-    assert cfg["validation"]["fig5"]["cases"][0]["projectile"] == "concrete_crh3"
+    assert cfg["validation"]["fig5"]["cases"][0]["projectile"] == "grout_crh3"
     assert cfg["section4"]["yaw_convention"] == "axis_tilted"
     assert cfg["section4"]["fig8"]["projectiles"] == ["p1", "p2", "p3", "p4"]
 
@@ -193,8 +193,10 @@ def test_table2_csv_is_the_papers_table2():
 def test_fig5_draws_every_shipped_shot():
     cfg = yaml.safe_load((REPO / "config" / "config.yaml").read_text())
     files = cfg["validation"]["fig5"]["shots"]
-    assert files == [e["csv"] for e in cfg["validation"]["measurements"][1:]]
-    for f in files:
+    # the shot tables, and of the body shot table the grout sets of the paper's law
+    body = cfg["validation"]["fig5"]["body_shots"]
+    assert files + list(body) == [e["csv"] for e in cfg["validation"]["measurements"][1:]]
+    for f in files + list(body):
         assert not pd.read_csv(REPO / f, comment="#").empty
 
 
@@ -274,12 +276,17 @@ def test_e2e_table2(e2e):
 def test_e2e_fig5_and_verification(e2e):
     f5 = read_netcdf(e2e / "results/validation/fig5.nc")
     _check_cf(f5)
-    assert dict(f5.sizes) == {"case": 2, "velocity": 3, "experiment": 31}
+    # 31 spherical-nose shots and the 11 grout shots of the body table
+    assert dict(f5.sizes) == {"case": 3, "velocity": 3, "experiment": 42}
     pen, cf = f5["pencore_depth"], f5["closedform_depth"]
     assert ((pen > 0.5 * cf) & (pen < 2.0 * cf)).all()
     assert float(abs(f5["rel_diff"]).max()) < 1e-2
     assert (pen.diff("velocity") > 0).all(), "depth must grow with impact velocity"
-    assert set(f5["experiment_projectile"].values) == {"al_sphere_var4340"}
+    assert set(f5["experiment_projectile"].values) == {
+        "al_sphere_var4340",
+        "grout_crh3",
+        "grout_crh4p25",
+    }
 
     ver = read_netcdf(e2e / "results/validation/verification.nc")
     _check_cf(ver)

@@ -57,6 +57,7 @@ rule table2:
 rule fig5:
     input:
         shots=VALIDATION["fig5"]["shots"],
+        body_shots=list(VALIDATION["fig5"]["body_shots"]),
     output:
         nc="results/validation/fig5.nc",
     log:

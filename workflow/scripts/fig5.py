@@ -10,11 +10,13 @@ log = start_log(smk.log[0], "fig5")
 
 study = dict(smk.params.study)
 shots = list(smk.input.shots)
+body_shots = dict(study.get("body_shots", {}))
 ds = fig5(
     study["cases"],
     velocity_grid(**study["velocities_m_s"]),
     smk.params.numerics,
     shots=shots,
+    body_shots=body_shots,
 )
 log.info("%d measured shots from %s", ds.sizes["experiment"], ", ".join(shots) or "no file")
 write_netcdf(
@@ -23,7 +25,7 @@ write_netcdf(
     config_slice={
         "validation.fig5": study,
         "numerics": dict(smk.params.numerics),
-        "inputs": {f: file_sha256(f) for f in shots},
+        "inputs": {f: file_sha256(f) for f in [*shots, *body_shots]},
     },
     study="validation/fig5",
 )

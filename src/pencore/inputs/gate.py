@@ -154,9 +154,9 @@ try:
 except ImportError:  # pragma: no cover - PyYAML built without libyaml
     _CParser = None
 #: True when PyYAML has libyaml's C parser, which then scans the text. Composition stays
-#: in Python either way (:func:`_bounded_loader`), so the gate's depth and count bounds
+#: in Python either way (the bounded loader), so the gate's depth and count bounds
 #: hold for both; libyaml only makes the scanning fast. A document libyaml refuses is read
-#: again with :class:`_PyEventSource`, so that what the user is told (and which bound
+#: again with PyYAML's Python parser, so that what the user is told (and which bound
 #: refuses it) is the gate's, whatever libyaml version PyYAML bundles: libyaml 0.2.5 as
 #: bundled from PyYAML 6.0.3 on stops deep flow nesting with its own words before the
 #: gate's bound can be checked (its scanner reads ahead over every ``[``).

@@ -2,14 +2,13 @@
 :class:`~pencore.inputs.target.Medium` ``sigma_n = a0 + a1 Vn + a2 Vn^2`` (Pa) of a concrete,
 a metal or a soil, each a named law with its source and its valid range.
 
-=========  ===============================================  =================================
-law        normal stress on the nose                         inputs
-=========  ===============================================  =================================
-concrete   ``S fc + rho Vn^2``, ``S = 82.6 fc^-0.544``      fc (Pa), density; S if measured
-metal      ``A Y + B rho Vn^2``, spherical cavity expansion  E, nu, Y, n (power-law hardening),
-                                                              density
-soil       ``A tau0 + B rho Vn^2`` (Forrestal & Luk)         A, tau0, B, density
-=========  ===============================================  =================================
+=========  ==================================================  ================================
+law        normal stress on the nose                           inputs
+=========  ==================================================  ================================
+concrete   ``S fc + rho Vn^2``, ``S = 82.6 fc^-0.544``         fc (Pa), density; S if measured
+metal      ``A Y + B rho Vn^2``, spherical cavity expansion    E, nu, Y, hardening n, density
+soil       ``A tau0 + B rho Vn^2`` (Forrestal & Luk)           A, tau0, B, density
+=========  ==================================================  ================================
 
 Concrete and grout (:func:`concrete_law`)
     Forrestal's form, paper Table 1's concrete law: ``sigma_n = S fc + rho Vn^2``.
@@ -186,7 +185,8 @@ def concrete_law(
     density : float
         Target density ``rho`` (kg/m^3).
     s : float, optional
-        Forrestal's ``S`` when measured (fitted to shots); default :func:`forrestal_s`.
+        Forrestal's ``S`` when measured (fitted to shots); default
+        :func:`~pencore.inputs.laws.forrestal_s`.
     name : str
         The medium's label.
     crater_depth : float
@@ -208,8 +208,8 @@ def concrete_law(
     Warns
     -----
     PlausibilityWarning
-        fc outside the 13.5-108 MPa of the measured shots (:data:`FC_SHOTS`), or a density
-        outside 1500-3000 kg/m^3.
+        fc outside the 13.5-108 MPa of the measured shots
+        (:data:`~pencore.inputs.laws.FC_SHOTS`), or a density outside 1500-3000 kg/m^3.
 
     Examples
     --------
@@ -258,7 +258,7 @@ def concrete_law(
 @dataclass(frozen=True)
 class CavityExpansion:
     """The spherical cavity-expansion constants of an elastic-plastic, power-law hardening
-    solid (:func:`cavity_expansion`).
+    solid (:func:`~pencore.inputs.laws.cavity_expansion`).
 
     Attributes
     ----------
@@ -359,7 +359,7 @@ def _hardening_integral(n: float, upper: float) -> tuple[float, float]:
 @dataclass(frozen=True)
 class CompressibleInertia:
     """The dynamic cavity expansion of a compressible elastic-perfectly plastic solid
-    (:func:`compressible_inertia`).
+    (:func:`~pencore.inputs.laws.compressible_inertia`).
 
     Attributes
     ----------
@@ -524,12 +524,13 @@ def metal_law(
     Parameters
     ----------
     youngs_modulus, poisson_ratio, yield_strength, hardening_exponent : float
-        ``E`` (Pa), ``nu``, ``Y`` (Pa), ``n`` (see :func:`cavity_expansion`).
+        ``E`` (Pa), ``nu``, ``Y`` (Pa), ``n`` (see :func:`~pencore.inputs.laws.cavity_expansion`).
     density : float
         Target density (kg/m^3).
     inertia : {"compressible", "incompressible"}
         ``B`` from the compressible elastic-perfectly plastic solution fitted up to
-        ``max_speed`` (:func:`compressible_inertia`), or the incompressible 3/2.
+        ``max_speed`` (:func:`~pencore.inputs.laws.compressible_inertia`), or the
+        incompressible 3/2.
     max_speed : float
         Upper end (m/s) of the compressible fit: the speeds of your impacts.
     name : str
@@ -543,8 +544,9 @@ def metal_law(
     Returns
     -------
     Medium
-        Coefficients ``(A Y, 0, B rho)``: ``A`` of :func:`cavity_expansion`, ``B`` of
-        :func:`compressible_inertia` (or 3/2).
+        Coefficients ``(A Y, 0, B rho)``: ``A`` of
+        :func:`~pencore.inputs.laws.cavity_expansion`, ``B`` of
+        :func:`~pencore.inputs.laws.compressible_inertia` (or 3/2).
 
     Examples
     --------

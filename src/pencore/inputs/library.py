@@ -270,7 +270,7 @@ def target_names() -> list[str]:
     --------
     >>> import pencore
     >>> pencore.target_names()
-    ['aluminium', 'aluminium_3term', 'concrete', 'soil']
+    ['aluminium', 'aluminium_3term', 'aluminium_cavity', 'concrete', 'soil']
     """
     return sorted(MEDIA)
 

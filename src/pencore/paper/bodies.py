@@ -89,7 +89,7 @@ BALLAST_DENSITY = 18250.0
 TUBE_WALL = 0.002
 #: The ``axis`` limit's axial inertia as a fraction of the solid body's (0 is not a body).
 AXIS_FRACTION = 1e-3
-
+#: The kinds of body :func:`build_body` builds.
 BODY_KINDS = (
     "solid",
     "lc",
@@ -154,8 +154,8 @@ def _cyl(rho: float, r_out: float, r_in: float, s0: float, length: float) -> _Pa
 
 
 def check_body(spec: Mapping[str, Any] | None) -> dict[str, Any]:
-    """A body spec checked: ``kind`` in :data:`BODY_KINDS` and its keys (one-line
-    :class:`~pencore.InputError` naming the bad one). ``None``: the solid body."""
+    """A body spec checked: ``kind`` in :data:`~pencore.paper.bodies.BODY_KINDS` and its
+    keys (one-line :class:`~pencore.InputError` naming the bad one). ``None``: the solid body."""
     if spec is None:
         return {"kind": "solid"}
     if not isinstance(spec, Mapping):

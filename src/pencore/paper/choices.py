@@ -2,7 +2,8 @@
 :func:`pencore.studies.attribution.disputed.disputed_quantities` (shank model, numerics,
 the readings of the paper's yaw, spin centre and "turns back", start height, friction) and
 the list of configured settings, and the mass distribution of the paper's projectiles
-(:mod:`pencore.paper.bodies`, or the inverse step's fitted one, :data:`INVERSE_BODY`).
+(:mod:`pencore.paper.bodies`, or the inverse step's fitted one,
+:data:`~pencore.paper.choices.INVERSE_BODY`).
 
 Apart from :mod:`pencore.studies.attribution.disputed` so that the workflow's configuration
 check, run at every Snakemake start, names a bad choice without loading the solver.

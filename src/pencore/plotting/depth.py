@@ -27,7 +27,7 @@ __all__ = ["plot_table2", "plot_fig5", "plot_verification"]
 
 _ALUMINIUM = "Aluminium 6061-T6511"
 _TARGET_TITLES = {
-    "concrete": "Concrete (Forrestal et al. 1994)",
+    "concrete": "Grout, fc 13.5 MPa (Forrestal et al. 1996, via a compilation)",
     "aluminium": _ALUMINIUM,
     "aluminium_3term": _ALUMINIUM,
     "soil": "Soil (Forrestal & Luk 1992)",
@@ -159,8 +159,7 @@ def plot_fig5(ds: xr.Dataset) -> Figure:
         tgt = str(first["target"].item())
         title = _TARGET_TITLES.get(tgt, tgt)
         crh = _crh_label(float(first["crh"]))
-        assumed = " (projectile assumed)" if tgt == "concrete" else ""
-        ax.set_title(f"{title}\n{crh}{assumed}", fontsize=9)
+        ax.set_title(f"{title}\n{crh}", fontsize=9)
         ax.set_xlabel(_VI)
         ax.set_ylabel(_DEPTH)
         ax.set_xlim(left=0)

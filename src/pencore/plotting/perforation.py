@@ -8,6 +8,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
+from pencore.analysis.errors import summary_statistics
 from pencore.plotting.critical import _search_errorbars
 from pencore.plotting.style import _MARKERS, _VI, _c, _pname, new_figure, styled
 
@@ -83,19 +84,25 @@ def plot_measurements(ds: xr.Dataset) -> Figure:
     filled: a shot whose projectile stayed rigid by its authors' limits, open: one that
     deformed or eroded (left out of the statistics). The box gives, per data file and law,
     the rigid shots' number, bias (mean of predicted / measured - 1) and mean absolute
-    relative error (pencore.studies.validation.measurements.summary).
+    relative error (:func:`pencore.analysis.errors.summary_statistics`; a body shot table's
+    sets pooled, each set's in :func:`pencore.studies.validation.measurements.summary`).
     """
     quantities = list(ds["quantity"].values)
     fig = new_figure(5.6 * len(quantities), 7.0)
     rigid_all = ds["rigid"].values.astype(bool) if "rigid" in ds else None
     targets = list(dict.fromkeys(str(t) for t in ds["target"].values))
-    datasets = list(dict.fromkeys(str(d) for d in ds["dataset"].values))
+    # one marker per data file (the config entry: the shot names' prefix); a body shot
+    # table's sets share their file's marker and are pooled in the box
+    entry_all = np.array([str(s).split(":", 1)[0] for s in ds["shot"].values])
+    entries = list(dict.fromkeys(entry_all))
     for iq, q in enumerate(quantities):
         ax = fig.add_subplot(1, len(quantities), iq + 1)
         sel = (ds["quantity_of_shot"].values == q) & np.isfinite(ds["measured"].values)
         sub = ds.isel(shot=np.flatnonzero(sel))
+        entry = entry_all[sel]
         units = str(sub["measured_units"].values[0]).replace("m s-1", "m/s")
         m, p = sub["measured"].values, sub["predicted"].values
+        rel = sub["rel_error"].values
         rigid = rigid_all[sel] if rigid_all is not None else np.ones(m.shape, bool)
         pos = (m > 0) & (p > 0)
         lo, hi = 0.7 * float(min(m[pos].min(), p[pos].min())), 1.4 * float(max(m.max(), p.max()))
@@ -105,29 +112,26 @@ def plot_measurements(ds: xr.Dataset) -> Figure:
             ax.fill_between(x, x * (1 - f), x * (1 + f), color="0.5", alpha=alpha, lw=0,
                             label=f"±{f:.0%}")  # fmt: skip
         lines = []
-        for name in datasets:
+        for name in entries:
             for tgt in targets:
-                d = (sub["dataset"].values == name) & (sub["target"].values == tgt)
+                d = (entry == name) & (sub["target"].values == tgt)
                 if not d.any():
                     continue
-                mk, col = _MARKERS[datasets.index(name) % len(_MARKERS)], _c(targets.index(tgt))
+                mk, col = _MARKERS[entries.index(name) % len(_MARKERS)], _c(targets.index(tgt))
                 label = f"{sub['label'].values[d][0]}: {tgt}"
                 ax.plot(m[d & rigid], p[d & rigid], mk, color=col, ms=6, ls="none", label=label)
                 ax.plot(m[d & ~rigid], p[d & ~rigid], mk, mfc="none", color=col, ms=5,
                         ls="none", alpha=0.7)  # fmt: skip
-                g = f"{name}/{tgt}"
-                if "summary_n" in ds and g in ds["group"].values:
-                    st = ds.sel(group=g, model="predicted", subset="rigid")
-                    n = int(st["summary_n"])
-                    lines.append(
-                        f"{name}, {tgt}: "
-                        + (
-                            f"n = {n}, bias {float(st['summary_bias']):+.1%}, "
-                            f"mean |e| {float(st['summary_mean_abs_rel_error']):.1%}"
-                            if n
-                            else "no rigid shot"
-                        )
+                st = summary_statistics(rel[d & rigid])
+                n = st["n"]
+                lines.append(
+                    f"{name}, {tgt}: "
+                    + (
+                        f"n = {n}, bias {st['bias']:+.1%}, mean |e| {st['mean_abs_rel_error']:.1%}"
+                        if n
+                        else "no rigid shot"
                     )
+                )
         ax.text(0.02, 0.98, "rigid shots:\n" + "\n".join(lines), transform=ax.transAxes,
                 va="top", fontsize=6.5,
                 bbox={"facecolor": "white", "edgecolor": "0.7", "alpha": 0.9})  # fmt: skip

@@ -11,8 +11,8 @@ from typing import Any
 
 import numpy as np
 import xarray as xr
-from scipy import stats
 
+from pencore.analysis.errors import t_half_width
 from pencore.errors import InputError
 from pencore.inputs.library import get_projectile
 from pencore.inputs.numerics import Numerics
@@ -60,16 +60,6 @@ TRAJECTORY_VARIABLES = (
 
 #: dtype of string variables (netCDF variable-length strings)
 STRING_DTYPE = object
-
-
-def t_half_width(x: Any, level: float = 0.95) -> float:
-    """Half-width of the Student-t interval (``level``) of the mean of the sample ``x``,
-    in the units of ``x``; NaN for fewer than two values."""
-    x = np.asarray(x, dtype=float)
-    n = x.size
-    if n < 2:
-        return math.nan
-    return float(stats.t.ppf(0.5 + level / 2, n - 1) * x.std(ddof=1) / math.sqrt(n))
 
 
 def var_attrs(units: str, long_name: str, **extra: Any) -> dict[str, Any]:

@@ -3,23 +3,20 @@ checks, error statistics, predictions that are the solver's own results."""
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from pencore import simulate
+from pencore.analysis.errors import error_statistics
 from pencore.errors import InputError
 from pencore.inputs.library import get_target
 from pencore.inputs.target import Layer, Target
 from pencore.studies.validation.measurements import (
-    error_statistics,
     load_measurements,
     measured_vs_predicted,
-    read_shot_table,
     statistics_by_option,
-    total_angle_of_attack,
 )
 
 HEADER = "test,velocity_m_s,obliquity_deg,yaw_deg,measured_depth_m,source\n"
@@ -33,20 +30,6 @@ def _csv(tmp_path, text, name="m.csv"):
 
 def _entry(path, **kw):
     return {"name": "t", "csv": path, "projectile": "p2", "target": "soil", **kw}
-
-
-def test_error_statistics_closed_form():
-    # e = predicted / measured - 1 = +0.1 and -0.1: mean 0, RMS 0.1, largest 0.1, and the
-    # t interval of two values is mean +- t(0.975, 1) * sd / sqrt(2) with sd = 0.1 sqrt(2)
-    s = error_statistics([1.0, 2.0], [1.1, 1.8])
-    assert s["n"] == 2
-    assert s["mean_rel_error"] == pytest.approx(0.0, abs=1e-15)
-    assert s["rms_rel_error"] == pytest.approx(0.1, rel=1e-12)
-    assert s["max_abs_rel_error"] == pytest.approx(0.1, rel=1e-12)
-    assert s["ci95_hi"] == pytest.approx(12.706204736 * 0.1, rel=1e-8)
-    assert s["ci95_lo"] == pytest.approx(-s["ci95_hi"], rel=1e-12)
-    one = error_statistics([2.0], [3.0])
-    assert one["mean_rel_error"] == pytest.approx(0.5) and math.isnan(one["ci95_lo"])
 
 
 @pytest.mark.parametrize(
@@ -144,55 +127,6 @@ def test_statistics_by_option_on_the_soil_shots():
 
 REPO = Path(__file__).resolve().parents[3]
 OGIVE = str(REPO / "config" / "aluminium_ogive_shots.csv")
-SHOT_HEADER = (
-    "shot,projectile,striking_velocity_m_s,depth_m,pitch_deg,yaw_deg,rigid,table,page,source\n"
-)
-
-
-def test_total_angle_of_attack():
-    assert total_angle_of_attack(2.0, 0.0) == pytest.approx(2.0, rel=1e-14)
-    assert total_angle_of_attack(0.0, -3.0) == pytest.approx(3.0, rel=1e-14)
-    # tan^2 delta = tan^2 pitch + tan^2 yaw
-    d = math.radians(total_angle_of_attack(3.0, 4.0))
-    assert math.tan(d) ** 2 == pytest.approx(
-        math.tan(math.radians(3.0)) ** 2 + math.tan(math.radians(4.0)) ** 2, rel=1e-12
-    )
-
-
-def test_shot_table_maps_angles_to_a_normal_velocity():
-    df = read_shot_table(OGIVE)
-    assert len(df) == 34
-    # the velocity is along the normal: obliquity + yaw = 0, the axis tilted by delta
-    assert np.allclose(df["obliquity_deg"] + df["yaw_deg"], 0.0, atol=1e-14)
-    row = df.set_index("test").loc["4-1805"]  # pitch 3.0 U, yaw 2.0 R
-    assert row["obliquity_deg"] == pytest.approx(total_angle_of_attack(3.0, 2.0))
-    # "---" (not measured) is no angle; the shot is kept
-    assert df.set_index("test").loc["1-0412", "obliquity_deg"] == 0.0
-    # the three shots with only a channel length are kept, with no measured depth
-    assert sorted(df.loc[df["unmeasured"], "test"]) == ["4-1810", "8-0117", "8-0118"]
-    assert df.loc[df["unmeasured"], "measured_depth_m"].isna().all()
-    assert df["source"].str.contains(r"Table [12], p\. 72[56]").all()
-
-
-@pytest.mark.parametrize(
-    "row, needle",
-    [
-        ("1,p2,300,0.1,0,0,maybe,1,5,src", "rigid must be true or false"),
-        ("1,p2,300,0.1,50,0,true,1,5,src", "pitch_deg must be a number in"),
-        ("1,p2,-300,0.1,0,0,true,1,5,src", "striking_velocity_m_s must be a finite number > 0"),
-        ("1,p2,300,0.1,0,0,true,,5,src", "no table"),
-    ],
-)
-def test_shot_table_refusals_name_the_row(tmp_path, row, needle):
-    with pytest.raises(InputError, match=needle) as e:
-        read_shot_table(_csv(tmp_path, SHOT_HEADER + row + "\n"))
-    assert "row 1 (shot 1)" in str(e.value)
-
-
-def test_duplicate_shots_refused(tmp_path):
-    text = SHOT_HEADER + "1,p2,300,0.1,0,0,true,1,5,s\n1,p2,310,0.1,0,0,true,1,5,s\n"
-    with pytest.raises(InputError, match="duplicate shots"):
-        read_shot_table(_csv(tmp_path, text))
 
 
 def test_targets_and_target_are_exclusive(tmp_path):

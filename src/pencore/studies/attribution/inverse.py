@@ -52,6 +52,7 @@ FITTED_TO = ("alpha_20", "turn_back_25")
 REFINE_STEPS = 10
 #: Speeds (m/s) and projectiles of the omega_c trends (Figs 17-18).
 OMEGA_C_SPEEDS = (800.0, 1000.0, 1200.0)
+#: The omega_c search range (rad/s) of the trends.
 OMEGA_C_RANGE = (0.0, 200.0)
 
 
@@ -126,7 +127,7 @@ def fit_spin_body(target: Target, **kw: Any) -> SpinFit:
 
 
 def omega_c_trends(fit: SpinFit, target: Target, **kw: Any) -> dict[str, float]:
-    """omega_c (rad/s, NaN above :data:`OMEGA_C_RANGE`) of the fitted body of #2 at
+    """omega_c (rad/s, NaN above ``OMEGA_C_RANGE``) of the fitted body of #2 at
     :data:`OMEGA_C_SPEEDS`, and of #3 with the same recipe (its ``Lc/L`` moved by the same
     amount, the same inertia factor) at 1000 m/s: the Figs 17-18 trends the fit was not
     fitted to (the paper: omega_c falls with the impact speed and with ``Lc/L``)."""

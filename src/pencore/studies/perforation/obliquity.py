@@ -17,7 +17,7 @@ plates or projectiles is in pencore's library (6082, 2060, 6055, 7017, 7085 alum
 and a steel; APM2 bullets and cores), so pencore's ratio is that of an analog -- the
 library's 7.11 mm CRH-3 steel rod in the library aluminium law -- and the comparison is of
 the shape of ``V_bl(theta)``, not of its level. Statistics per material class and per
-option (:func:`pencore.studies.validation.measurements.error_statistics` on the ratio).
+option (:func:`pencore.analysis.errors.error_statistics` on the ratio).
 """
 
 from __future__ import annotations
@@ -32,15 +32,16 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
+from pencore.analysis.errors import error_statistics
 from pencore.errors import InputError, SolverError
 from pencore.inputs.library import get_projectile
 from pencore.inputs.limits import half_space_plates
 from pencore.inputs.numerics import Numerics, resolve_numerics
+from pencore.paper.shots import read_data_csv
 from pencore.search.perforation import ballistic_limit
 from pencore.search.threshold import CriticalResult
 from pencore.studies.common import search_variables, var_attrs
 from pencore.studies.perforation.slabs import slab_target
-from pencore.studies.validation.measurements import error_statistics, read_data_csv
 
 __all__ = [
     "OPTION_KEYS",

@@ -33,9 +33,9 @@ from pencore.inputs.geometry import OgiveNose
 from pencore.inputs.library import get_projectile, get_target
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.target import Medium
+from pencore.paper.shots import read_body_shot_table, read_shot_table
 from pencore.run.impact import prepare, simulate
 from pencore.studies.common import var_attrs
-from pencore.studies.validation.measurements import read_shot_table
 
 __all__ = [
     "fig5",
@@ -217,6 +217,7 @@ def fig5(
     numerics: Numerics | Mapping[str, Any] | None = None,
     *,
     shots: Sequence[str | Path] = (),
+    body_shots: Mapping[str | Path, Mapping[str, str]] | None = None,
 ) -> xr.Dataset:
     """Penetration depth against impact velocity (paper Fig. 5), with the measured shots.
 
@@ -229,10 +230,14 @@ def fig5(
         ``[v_min, v_max]``, the rest are NaN.
     numerics : Numerics or mapping, optional
     shots : sequence of paths
-        Shot tables (:func:`pencore.studies.validation.measurements.read_shot_table`); every shot's
+        Shot tables (:func:`pencore.paper.shots.read_shot_table`); every shot's
         projectile must be the projectile of at least one case. The shots are drawn, not
         run here: :func:`pencore.studies.validation.measurements.measured_vs_predicted` runs each at
         its measured impact.
+    body_shots : mapping, optional
+        Body shot tables (:func:`pencore.paper.shots.read_body_shot_table`): path -> {set:
+        library projectile of the case that draws the set's shots}. Drawn, not run here
+        (:func:`pencore.studies.validation.measurements.measured_vs_predicted` runs them).
 
     Returns
     -------
@@ -274,9 +279,11 @@ def fig5(
     ds = ds.assign_coords(
         target_density=("case", density, var_attrs("kg m-3", "target density (NaN: not given)"))
     )
+    tables = [read_shot_table(f) for f in shots]
+    tables += [_body_shots(f, sets) for f, sets in (body_shots or {}).items()]
     table = (
-        pd.concat([read_shot_table(f) for f in shots], ignore_index=True)
-        if shots
+        pd.concat(tables, ignore_index=True)
+        if tables
         else pd.DataFrame(columns=["test", "projectile", "velocity_m_s", "measured_depth_m"])
     )
     drawn = {c["projectile"] for c in cs}
@@ -327,10 +334,32 @@ def fig5(
         n_experiments=int(table.shape[0]),
         note="Aluminium: the measured rods and shots of Piekutowski et al. (1999) and "
         "Forrestal & Piekutowski (2000); the paper's Table 1 law ('aluminium') and its "
-        "source's three-term law ('aluminium_3term'). Concrete: projectiles assumed (the "
-        "source's shots and projectiles were not found).",
+        "source's three-term law ('aluminium_3term'). Concrete: the paper's Table 1 law "
+        "and the measured 12.9 mm, 0.064 kg rods into 13.5 MPa grout (Forrestal et al. 1996 "
+        "via a secondary compilation, config/concrete_ogive_shots.csv).",
     )
     return ds
+
+
+def _body_shots(path: str | Path, sets: Mapping[str, str]) -> pd.DataFrame:
+    """The shots of ``sets`` (set -> library projectile) of a body shot table, in the form
+    of :func:`pencore.paper.shots.read_shot_table` (normal impact, rigid as compiled)."""
+    df = read_body_shot_table(path)
+    unknown = sorted(set(sets) - set(df["set"]))
+    if unknown:
+        raise InputError(f"Fig. 5 body shots: no set(s) {unknown} in {str(path)!r}")
+    df = df[df["set"].isin(list(sets))]
+    return pd.DataFrame(
+        {
+            "test": df["row"].to_numpy(),
+            "projectile": df["set"].map(dict(sets)).to_numpy(),
+            "velocity_m_s": df["striking_velocity_m_s"].to_numpy(),
+            "measured_depth_m": df["depth_m"].to_numpy(),
+            "rigid": True,
+            "remark": "normal impact; rigid as compiled (no deformation recorded)",
+            "source": (df["reference"] + "; compilation row " + df["row"]).to_numpy(),
+        }
+    )
 
 
 # ----------------------------------------------------------------------------- verification

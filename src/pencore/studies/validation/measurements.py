@@ -17,18 +17,11 @@ neither when its source does not), or from optional ``projectile`` / ``target`` 
 An entry may name several targets (``targets``: the same medium under different laws);
 every shot is then run once per target, and the statistics are kept per law.
 
-A *shot table* (:data:`SHOT_COLUMNS`) is the other accepted form: the shots of a
-penetration paper as it prints them, at normal incidence (the target face normal to the
-line of flight), with ``striking_velocity_m_s``, ``depth_m``, the angles of attack
-``pitch_deg`` and ``yaw_deg`` read from the X-rays, the authors' remark, a ``rigid`` flag
-set by the authors' stated limits, and the table and page. The two angles of attack
-combine into the total angle between axis and velocity,
-``delta = atan(sqrt(tan^2 pitch + tan^2 yaw))``; an axisymmetric body at normal
-incidence is rotated about the target normal so that this angle lies in pencore's x-y
-plane, which is exact, and run with the axis tilted by ``delta`` and the velocity along
-the normal (:func:`pencore.inputs.conventions.normal_impact_angles`, ``axis_tilted``:
-``obliquity = delta``, ``yaw = -delta``). Shots flagged not rigid are run and kept,
-but left out of the statistics (the model is of a rigid body).
+A *shot table* (:data:`pencore.paper.shots.SHOT_COLUMNS`, read by
+:func:`pencore.paper.shots.read_shot_table`, which maps the measured angles of attack to
+pencore's impact angles) is the other accepted form: the shots of a penetration paper as it
+prints them, at normal incidence. Shots flagged not rigid are run and kept, but left out of
+the statistics (the model is of a rigid body).
 
 Beside pencore's 3-D run, every depth shot gets two closed forms of the same law at the
 striking speed, normal incidence, no yaw: :func:`pencore.closedform.depth` (the model's
@@ -46,11 +39,11 @@ paper quotes them (``config/table2.csv``), and the aluminium shots of Piekutowsk
 (``config/aluminium_*_shots.csv``). A user who has another table adds a file in one of
 these forms and an entry in the config.
 
-Error statistics (:func:`error_statistics`): relative error ``e = predicted / measured - 1``
-per shot (shots measured at 0, e.g. no perforation, have only an absolute error); mean,
-RMS and largest ``|e|``, and the mean with a 95 % Student-t interval. The validation
-summary (:func:`summary`) gives, per data set and law, the rigid shots' mean ``|e|``,
-bias (mean ``e``) and worst ``e`` of pencore and of both closed forms.
+Error statistics (:func:`pencore.analysis.errors.error_statistics`): relative error
+``e = predicted / measured - 1`` per shot (shots measured at 0, e.g. no perforation, have
+only an absolute error); mean, RMS and largest ``|e|``, and the mean with a 95 % Student-t
+interval. The validation summary (:func:`summary`) gives, per data set and law, the rigid
+shots' mean ``|e|``, bias (mean ``e``) and worst ``e`` of pencore and of both closed forms.
 """
 
 from __future__ import annotations
@@ -59,7 +52,6 @@ import json
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import asdict
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -67,28 +59,23 @@ import pandas as pd
 import xarray as xr
 
 from pencore import closedform
-from pencore.errors import InputError
-from pencore.inputs.conventions import normal_impact_angles
-from pencore.inputs.gate import decimal
+from pencore.analysis.errors import relative_errors, sample_statistics, summary_statistics
+from pencore.errors import InputError, TargetError
 from pencore.inputs.library import get_projectile, get_target
-from pencore.inputs.limits import check_keys, half_space_plates, plausible
+from pencore.inputs.limits import check_keys, half_space_plates
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.target import Target
-from pencore.paper.tables import read_csv
+from pencore.paper.shots import BODY_SHOT_COLUMNS, SHOT_COLUMNS, read_data_csv, shot_table
 from pencore.run.impact import prepare, simulate
-from pencore.studies.common import t_half_width
 from pencore.studies.perforation.slabs import slab_target
+from pencore.studies.validation.bodies import body_rows
 
 __all__ = [
     "QUANTITIES",
     "NEAR_SURFACE_KEYS",
-    "SHOT_COLUMNS",
     "MODELS",
     "load_measurements",
-    "read_shot_table",
-    "total_angle_of_attack",
     "measured_vs_predicted",
-    "error_statistics",
     "summary",
     "summary_table",
     "statistics_by_option",
@@ -104,20 +91,15 @@ QUANTITIES: dict[str, tuple[str, str, str]] = {
 }
 REQUIRED = ("test", "velocity_m_s", "obliquity_deg", "yaw_deg", "source")
 DEPTH_MEASURES = {"path_length": "path_length", "vertical_depth": "penetration_depth"}
-ENTRY_KEYS = ("name", "csv", "projectile", "target", "targets", "depth_measure", "label")
-
-#: Columns of a shot table (a penetration paper's shots as printed; see the module notes).
-SHOT_COLUMNS = (
-    "shot",
+ENTRY_KEYS = (
+    "name",
+    "csv",
     "projectile",
-    "striking_velocity_m_s",
-    "depth_m",
-    "pitch_deg",
-    "yaw_deg",
-    "rigid",
-    "table",
-    "page",
-    "source",
+    "target",
+    "targets",
+    "laws",
+    "depth_measure",
+    "label",
 )
 
 #: Predictions compared with each depth shot in :func:`summary`: variable -> label.
@@ -125,6 +107,7 @@ MODELS = {
     "predicted": "pencore (3-D, measured angles)",
     "closedform_depth": "closed form, exact nose entry",
     "cavity_form_depth": "closed form, full nose force from contact",
+    "forrestal_form_depth": "Forrestal's closed form, crater of 2 calibers",
 }
 
 
@@ -159,122 +142,19 @@ def _entry(entry: Mapping[str, Any]) -> dict[str, Any]:
     return e
 
 
-def read_data_csv(path: str | Path, columns: Sequence[str], label: str) -> pd.DataFrame:
-    """A data file (CSV, ``#`` comments) that exists, has ``columns`` and has rows.
-
-    Raises
-    ------
-    InputError
-        One line starting with ``label``: no such file, the columns it lacks, or no rows.
-    """
-    path = Path(path)
-    if not path.is_file():
-        raise InputError(f"{label}: no such file {str(path)!r}")
-    df = read_csv(path, "data", label=label, comment="#")
-    missing = [c for c in columns if c not in df.columns]
-    if missing:
-        raise InputError(f"{label}: {path} lacks column(s) {missing}")
-    if df.empty:
-        raise InputError(f"{label}: {path} has no rows")
-    return df
-
-
-def total_angle_of_attack(pitch_deg: float, yaw_deg: float) -> float:
-    """Angle (deg) between axis and velocity from the pitch and yaw angles of attack (deg)
-    measured in two perpendicular planes: ``atan(sqrt(tan^2 pitch + tan^2 yaw))``."""
-    tp, ty = math.tan(math.radians(pitch_deg)), math.tan(math.radians(yaw_deg))
-    return math.degrees(math.atan(math.hypot(tp, ty)))
-
-
-def _cell(v: Any) -> Any:
-    """A numeric cell as a number: one text cell turns a whole column into text, so each
-    row's text is read back as a plain decimal number (the gate's notation) when it is
-    one, and kept as text (refused by the row's check, naming it) when it is not."""
-    if isinstance(v, str):
-        f = decimal(v.strip())
-        return v if f is None else f
-    return v
-
-
-def _shot_row(r: pd.Series, where: str) -> dict[str, Any]:
-    """One row of a shot table in the common form (impact angles mapped, see the notes)."""
-    r = r.copy()
-    for c in ("striking_velocity_m_s", "depth_m", "pitch_deg", "yaw_deg"):
-        r[c] = _cell(r[c])
-    for c in ("table", "page", "source", "projectile"):
-        if pd.isna(r[c]) or not str(r[c]).strip():
-            raise InputError(f"{where}: no {c}")
-    for c in ("striking_velocity_m_s", "depth_m"):
-        v = r[c]
-        if c == "depth_m" and pd.isna(v):
-            continue  # no depth printed (e.g. a channel length only): kept, compared with nothing
-        if not isinstance(v, (int, float, np.number)) or not math.isfinite(float(v)) or v <= 0:
-            raise InputError(f"{where}: {c} must be a finite number > 0, got {v!r}")
-        plausible(float(v), "velocity" if c == "striking_velocity_m_s" else "depth", where)
-    angles = []
-    for c in ("pitch_deg", "yaw_deg"):
-        v = r[c]
-        if pd.isna(v):
-            angles.append(0.0)  # not measured: taken as none, recorded as NaN below
-            continue
-        if not isinstance(v, (int, float, np.number)) or not abs(float(v)) < 45.0:
-            raise InputError(f"{where}: {c} must be a number in (-45, 45) deg, got {v!r}")
-        angles.append(float(v))
-    rigid = r["rigid"]
-    if isinstance(rigid, str) and rigid.strip().lower() in ("true", "false"):
-        rigid = rigid.strip().lower() == "true"
-    if not isinstance(rigid, (bool, np.bool_)):
-        raise InputError(f"{where}: rigid must be true or false, got {rigid!r}")
-    obliquity, yaw = normal_impact_angles(total_angle_of_attack(*angles), "axis_tilted")
-    remark = r.get("remark", "")
-    return {
-        "test": r["shot"],
-        "projectile": str(r["projectile"]),
-        "velocity_m_s": float(r["striking_velocity_m_s"]),
-        "obliquity_deg": obliquity,
-        "yaw_deg": yaw,
-        "measured_depth_m": float(r["depth_m"]),
-        "unmeasured": bool(pd.isna(r["depth_m"])),
-        "pitch_measured_deg": float(r["pitch_deg"]),
-        "yaw_measured_deg": float(r["yaw_deg"]),
-        "rigid": bool(rigid),
-        "remark": "" if pd.isna(remark) else str(remark),
-        "source": f"{r['source']}, Table {r['table']}, p. {r['page']}",
-    }
-
-
-def read_shot_table(path: str | Path, label: str | None = None) -> pd.DataFrame:
-    """A shot table (:data:`SHOT_COLUMNS`) in the common form of :func:`load_measurements`'s
-    files: ``test``, ``projectile``, ``velocity_m_s``, ``obliquity_deg`` and ``yaw_deg``
-    (mapped from the angles of attack, see the module notes), ``measured_depth_m`` (NaN
-    where the source prints none; ``unmeasured`` is then true), the measured angles, the
-    ``rigid`` flag, the ``remark`` and the ``source`` with its table and page.
-
-    Raises
-    ------
-    InputError
-        One line naming the file and row: a missing column, a duplicate shot, a value out
-        of range, a row with no table, page or source.
-    """
-    label = label or f"shot table {str(path)!r}"
-    return _shot_table(read_data_csv(path, SHOT_COLUMNS, label), label)
-
-
-def _shot_table(df: pd.DataFrame, label: str) -> pd.DataFrame:
-    """The rows of a shot table already read, each mapped by :func:`_shot_row`."""
-    # a shot id is compared as written without its blanks: " 12" repeats "12"
-    ids = df["shot"].astype(str).str.strip()
-    dup = ids.duplicated()
-    if dup.any():
-        raise InputError(f"{label}: duplicate shots {sorted(set(ids[dup]))}")
-    return pd.DataFrame(
-        [_shot_row(r, f"{label} row {i + 1} (shot {r['shot']!r})") for i, r in df.iterrows()]
-    )
+def _is_body_table(e: Mapping[str, Any]) -> bool:
+    """Whether the entry's file is a body shot table (:data:`BODY_SHOT_COLUMNS`): shots
+    whose rods and targets are given by measured properties."""
+    df = read_data_csv(e["csv"], (), f"measurements {e['name']}")
+    body = set(BODY_SHOT_COLUMNS) <= set(df.columns)
+    if not body and "laws" in e:
+        raise InputError(f"measurements {e['name']}: laws apply to a body shot table only")
+    return body
 
 
 def _read_rows(e: Mapping[str, Any]) -> pd.DataFrame:
-    """The entry's file in the common form (a shot table by :func:`_shot_table`), read
-    once."""
+    """The entry's file in the common form (a shot table by
+    :func:`pencore.paper.shots.shot_table`), read once."""
     label = f"measurements {e['name']}"
     df = read_data_csv(e["csv"], (), label)
     shots = "striking_velocity_m_s" in df.columns
@@ -282,7 +162,7 @@ def _read_rows(e: Mapping[str, Any]) -> pd.DataFrame:
     if missing:
         raise InputError(f"{label}: {e['csv']} lacks column(s) {missing}")
     if shots:
-        return _shot_table(df, label)
+        return shot_table(df, label)
     return df.assign(
         pitch_measured_deg=np.nan,
         yaw_measured_deg=np.nan,
@@ -316,6 +196,8 @@ def load_measurements(entry: Mapping[str, Any]) -> pd.DataFrame:
         or non-finite number, or a row with no source; the message names the row.
     """
     e = _entry(entry)
+    if _is_body_table(e):
+        return body_rows(e)
     df = _read_rows(e)
     qcols = [c for c in QUANTITIES if c in df.columns]
     targets = e.get("targets") or [None]
@@ -388,14 +270,28 @@ def _slab(target: str, thickness: float, options: Mapping[str, float] | None = N
 def _predict(
     row: pd.Series, num: Numerics, cache: dict, options: Mapping[str, float] | None = None
 ) -> tuple[float, str]:
-    key = (row["projectile"], row["target"], row["thickness_m"])
+    body = _body(row)
+    key = (row["projectile"], row["target_key"] if body else row["target"], row["thickness_m"])
     if key not in cache:
-        target = _slab(row["target"], row["thickness_m"], options)
-        with half_space_plates():  # the measured plates, with each option and with none
-            cache[key] = (target, prepare(row["projectile"], target, num))
+        if body:
+            t = row["target_body"]
+            try:
+                target = t.with_windows(**options) if options else t
+                cache[key] = (target, prepare(row["projectile_body"], target, num))
+            except TargetError as err:
+                if not options:
+                    raise
+                # an option this rod cannot take (a crater shorter than its nose)
+                cache[key] = (None, f"option not applicable: {err}")
+        else:
+            target = _slab(row["target"], row["thickness_m"], options)
+            with half_space_plates():  # the measured plates, with each option and with none
+                cache[key] = (target, prepare(row["projectile"], target, num))
     target, pr = cache[key]
+    if target is None:
+        return math.nan, pr
     ds = simulate(
-        row["projectile"],
+        row["projectile_body"] if body else row["projectile"],
         target,
         row["velocity_m_s"],
         row["obliquity_deg"],
@@ -408,84 +304,43 @@ def _predict(
     return float(ds[DEPTH_MEASURES[row["depth_measure"]]]), outcome
 
 
-def _closed_forms(row: pd.Series, cache: dict) -> tuple[float, float]:
-    """The two closed-form depths (m) of a depth shot into a half-space at its striking
-    speed (normal incidence, no yaw): exact nose entry, and full nose force from contact.
-    NaN for other quantities, finite targets, or laws the closed forms do not cover."""
+def _body(row: pd.Series) -> bool:
+    """Whether the row is a body shot (its projectile and target built, not named)."""
+    return isinstance(row.get("target_body"), Target)
+
+
+def _closed_forms(row: pd.Series, cache: dict) -> tuple[float, float, float]:
+    """The closed-form depths (m) of a depth shot into a half-space at its striking speed
+    (normal incidence, no yaw): exact nose entry, full nose force from contact, and (body
+    shots only) Forrestal's form with its crater region of two calibers
+    (:func:`pencore.closedform.forrestal_crater_depth`, k = 2). NaN for other quantities,
+    finite targets, or laws the closed forms do not cover."""
+    nan3 = (math.nan, math.nan, math.nan)
     if row["quantity"] != "penetration_depth" or math.isfinite(row["thickness_m"]):
-        return math.nan, math.nan
-    key = (row["projectile"], row["target"])
-    if key not in cache:
-        layers = get_target(row["target"]).layers
-        cache[key] = (get_projectile(row["projectile"]), layers[0].medium, len(layers) == 1)
-    proj, medium, single = cache[key]
+        return nan3
+    body = _body(row)
+    if body:
+        proj, medium, single = row["projectile_body"], row["target_body"].layers[0].medium, True
+    else:
+        key = (row["projectile"], row["target"])
+        if key not in cache:
+            layers = get_target(row["target"]).layers
+            cache[key] = (get_projectile(row["projectile"]), layers[0].medium, len(layers) == 1)
+        proj, medium, single = cache[key]
     if not single:
-        return math.nan, math.nan
+        return nan3
+    v = row["velocity_m_s"]
     try:
-        v = row["velocity_m_s"]
-        return closedform.depth(proj, medium, v), closedform.tunnel_depth(proj, medium, v)
+        exact = closedform.depth(proj, medium, v), closedform.tunnel_depth(proj, medium, v)
     except ValueError:  # friction, higher terms, near-surface options: no closed form
-        return math.nan, math.nan
-
-
-def _rel(measured: np.ndarray, predicted: np.ndarray) -> np.ndarray:
-    """predicted / measured - 1, NaN where the measured value is 0."""
-    rel = np.full(measured.shape, np.nan)
-    pos = measured > 0  # False for NaN (no printed value)
-    rel[pos] = predicted[pos] / measured[pos] - 1.0
-    return rel
-
-
-#: The keys of :func:`error_statistics`.
-_STATISTICS = (
-    "n",
-    "n_relative",
-    "mean_abs_error",
-    "mean_rel_error",
-    "rms_rel_error",
-    "max_abs_rel_error",
-    "ci95_lo",
-    "ci95_hi",
-)
-
-
-def error_statistics(measured: Sequence[float], predicted: Sequence[float]) -> dict[str, float]:
-    """Error statistics of predicted against measured values.
-
-    Returns ``n`` (rows), ``n_relative`` (rows with a measured value > 0, the only ones
-    with a relative error: a measured residual velocity of 0 m/s is a shot that did not
-    perforate), ``mean_abs_error`` (mean abs(predicted - measured), in the measured units),
-    and over the relative errors ``e = predicted / measured - 1`` (dimensionless):
-    ``mean_rel_error``, ``rms_rel_error``, ``max_abs_rel_error`` and the 95 % Student-t
-    interval of the mean (``ci95_lo``, ``ci95_hi``; NaN for fewer than two values).
-    """
-    m, p = np.asarray(measured, float), np.asarray(predicted, float)
-    if m.shape != p.shape or m.size == 0 or np.any(m < 0) or not np.all(np.isfinite(m)):
-        raise InputError("error_statistics needs equal-length, finite, non-negative values")
-    pos = m > 0
-    e = p[pos] / m[pos] - 1.0
-    n = e.size
-    nan = math.nan
-    mean = float(e.mean()) if n else nan
-    half = t_half_width(e)
-    return {
-        "n": float(m.size),
-        "n_relative": float(n),
-        "mean_abs_error": float(np.mean(np.abs(p - m))),
-        "mean_rel_error": mean,
-        "rms_rel_error": float(np.sqrt(np.mean(e**2))) if n else nan,
-        "max_abs_rel_error": float(np.max(np.abs(e))) if n else nan,
-        "ci95_lo": mean - half,
-        "ci95_hi": mean + half,
-    }
-
-
-def _statistics_of(measured: np.ndarray, predicted: np.ndarray) -> dict[str, float]:
-    """:func:`error_statistics` of the shots given, or ``n = 0`` and NaN for none (a group
-    whose every projectile deformed has no rigid shot to compare)."""
-    if measured.size:
-        return error_statistics(measured, predicted)
-    return {k: (0.0 if k in ("n", "n_relative") else math.nan) for k in _STATISTICS}
+        return nan3
+    crater = math.nan
+    if body:
+        try:
+            crater = closedform.forrestal_crater_depth(proj, medium, v)
+        except ValueError:  # a nose longer than the crater's two calibers (CRH > 4.25)
+            pass
+    return (*exact, crater)
 
 
 def measured_vs_predicted(
@@ -506,8 +361,9 @@ def measured_vs_predicted(
         On dimension ``shot``: inputs, ``measured``, ``predicted``, ``rel_error``
         (predicted / measured - 1), ``outcome``, ``source``, ``rigid``, the measured
         angles of attack, the two closed-form depths (:data:`MODELS`) and their relative
-        errors; per quantity (dimension ``quantity``) the :func:`error_statistics` of the
-        rigid shots; per data set and law (dimension ``group``) the :func:`summary`.
+        errors; per quantity (dimension ``quantity``) the
+        :func:`pencore.analysis.errors.error_statistics` of the rigid shots; per data set
+        and law (dimension ``group``) the :func:`summary`.
     """
     if not entries:
         raise InputError("measurements: no data files configured")
@@ -524,6 +380,7 @@ def measured_vs_predicted(
     closed = [_closed_forms(r, cf_cache) for _, r in df.iterrows()]
     df["closedform_depth"] = [c[0] for c in closed]
     df["cavity_form_depth"] = [c[1] for c in closed]
+    df["forrestal_form_depth"] = [c[2] for c in closed]
 
     def a(units: str, long_name: str) -> dict[str, str]:
         return {"units": units, "long_name": long_name}
@@ -560,7 +417,7 @@ def measured_vs_predicted(
             "predicted": ("shot", df["predicted"].to_numpy(), {"long_name": f"pencore {same}"}),
             "rel_error": (
                 "shot",
-                _rel(measured, df["predicted"].to_numpy()),
+                relative_errors(measured, df["predicted"].to_numpy()),
                 a("1", "predicted / measured - 1 (NaN: measured 0)"),
             ),
             "rigid": (
@@ -592,19 +449,24 @@ def measured_vs_predicted(
             "cavity_form_depth",
             "closed-form depth, full nose force from contact (pencore.closedform.tunnel_depth)",
         ),
+        (
+            "forrestal_form_depth",
+            "Forrestal's closed-form depth with a crater of two calibers "
+            "(pencore.closedform.forrestal_crater_depth; NaN: not a body shot)",
+        ),
     ):
         values = df[var].to_numpy(dtype=float)
         ds[var] = ("shot", values, {**depth_m, "long_name": f"{long_name}; normal, no yaw"})
         ds[f"{var}_rel_error"] = (
             "shot",
-            _rel(measured, values),
+            relative_errors(measured, values),
             a("1", f"{var} / measured - 1"),
         )
     quantities = sorted(df["quantity"].unique())
     st = {}
     for q in quantities:
         sel = (df["quantity"] == q).to_numpy() & rigid & np.isfinite(measured)
-        st[q] = _statistics_of(measured[sel], df["predicted"].to_numpy()[sel])
+        st[q] = sample_statistics(measured[sel], df["predicted"].to_numpy()[sel])
     for k in next(iter(st.values())):
         # the absolute error has the units of its quantity (variable measured_units), so
         # it carries no single CF units attribute; the other statistics are dimensionless
@@ -659,7 +521,7 @@ def summary(ds: xr.Dataset) -> xr.Dataset:
         for im, m in enumerate(models):
             rel = ds["rel_error" if m == "predicted" else f"{m}_rel_error"].values
             for js, keep in enumerate(subsets.values()):
-                st = _stats_row(rel[in_g & keep])
+                st = summary_statistics(rel[in_g & keep])
                 out["n"][ig, im, js] = st["n"]
                 out["mean"][ig, im, js] = st["mean_abs_rel_error"]
                 out["bias"][ig, im, js] = st["bias"]
@@ -688,20 +550,6 @@ def summary(ds: xr.Dataset) -> xr.Dataset:
             "subset": np.array(list(subsets), dtype=str),
         },
     )
-
-
-def _stats_row(e: np.ndarray) -> dict[str, float]:
-    """Count, mean ``|e|``, mean ``e`` and the ``e`` of largest magnitude of the finite
-    values of ``e``; NaN statistics for none."""
-    e = e[np.isfinite(e)]
-    if not e.size:
-        return {"n": 0, "mean_abs_rel_error": math.nan, "bias": math.nan, "worst": math.nan}
-    return {
-        "n": int(e.size),
-        "mean_abs_rel_error": float(np.mean(np.abs(e))),
-        "bias": float(np.mean(e)),
-        "worst": float(e[np.argmax(np.abs(e))]),
-    }
 
 
 def summary_table(measurements: xr.Dataset, ratios: xr.Dataset | None = None) -> pd.DataFrame:
@@ -763,7 +611,7 @@ def summary_table(measurements: xr.Dataset, ratios: xr.Dataset | None = None) ->
                     "law": "analog: " + str(ratios.attrs.get("analog", "")),
                     "model": model,
                     "n_left_out": int(np.count_nonzero(~ok)),
-                    **_stats_row(predicted[ok] / measured[ok] - 1.0),
+                    **summary_statistics(predicted[ok] / measured[ok] - 1.0),
                 }
             )
     return pd.DataFrame(rows)
@@ -779,14 +627,16 @@ def statistics_by_option(
     Every shot of every data file is run once per option set (``options``: name ->
     settings of :data:`NEAR_SURFACE_KEYS` applied to every medium of the target; ``{}``
     is the paper's model). Groups are ``material`` (the target's name) and ``quantity``
-    (:data:`QUANTITIES`).
+    (:data:`QUANTITIES`). A body shot whose rod an option cannot apply to (a crater shorter
+    than its nose) has no prediction under that option (NaN) and is left out of that
+    option's statistics.
 
     Returns
     -------
     xarray.Dataset
         ``predicted`` and ``rel_error`` on ``(option, shot)``, ``measured`` on ``shot``,
-        and the :func:`error_statistics` on ``(option, group)``, ``group`` labelled
-        ``material/quantity``.
+        and the :func:`pencore.analysis.errors.error_statistics` on ``(option, group)``,
+        ``group`` labelled ``material/quantity``.
     """
     if not entries:
         raise InputError("measurements: no data files configured")
@@ -817,8 +667,9 @@ def statistics_by_option(
     stats: dict[str, np.ndarray] = {}
     for i in range(len(names)):
         for g, grp in enumerate(groups):
-            sel = (key == grp) & rigid & np.isfinite(measured)
-            for k, v in _statistics_of(measured[sel], pred[i, sel]).items():
+            # a shot the option cannot apply to (NaN) is left out of that option's group
+            sel = (key == grp) & rigid & np.isfinite(measured) & np.isfinite(pred[i])
+            for k, v in sample_statistics(measured[sel], pred[i, sel]).items():
                 stats.setdefault(k, np.full((len(names), len(groups)), np.nan))[i, g] = v
     ds = xr.Dataset(
         {
