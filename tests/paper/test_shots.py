@@ -181,8 +181,8 @@ def test_body_table_reads_a_good_row(tmp_path):
 @pytest.mark.parametrize(
     "text, needle",
     [
-        ("", "holds no table (it is empty or only comments)"),
-        ("# provenance only\n# nothing else\n", "holds no table (it is empty or only comments)"),
+        ("", "holds no table .it is empty or only comments."),
+        ("# provenance only\n# nothing else\n", "holds no table .it is empty or only comments."),
         (BODY_HEADER, "has no rows"),
         ("row,set\n1,a\n", "lacks column"),
     ],
