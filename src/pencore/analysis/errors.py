@@ -24,7 +24,6 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
-from scipy import stats
 
 from pencore.errors import InputError
 
@@ -57,6 +56,8 @@ def t_half_width(x: Any, level: float = 0.95) -> float:
     n = x.size
     if n < 2:
         return math.nan
+    from scipy import stats  # here: reading and plotting results loads no scipy
+
     return float(stats.t.ppf(0.5 + level / 2, n - 1) * x.std(ddof=1) / math.sqrt(n))
 
 
