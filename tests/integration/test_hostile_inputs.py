@@ -1444,8 +1444,20 @@ def test_one_text_cell_in_a_shot_table_names_its_row_and_value(tmp_path):
          "unknown keyword 'rtoll' (did you mean 'rtol'?)"),
         (lambda: pencore.prepare("p2", "soil", shnk="dafl"),
          "prepare: unknown keyword 'shnk' (did you mean 'shank'?)"),
+        # a search's own keyword mistyped while a required one is missing: not "missing
+        # 1 required positional argument" (a TypeError) but the typo, named
+        (lambda: pencore.vcr("p2", "soil", obliquty=45.0),
+         "vcr: unknown keyword 'obliquty' (did you mean 'obliquity'?)"),
+        (lambda: pencore.vci("p2", "soil", yaww=0.1),
+         "vci: unknown keyword 'yaww' (did you mean 'yaw'?)"),
+        (lambda: pencore.omega_c("p2", "soil", velocty=1000.0),
+         "omega_c: unknown keyword 'velocty' (did you mean 'velocity'?)"),
+        (lambda: pencore.ballistic_limit("p2", "soil", obliquty=30.0),
+         "unknown argument(s): obliquty (did you mean 'obliquity'?)"),
+        (lambda: pencore.vci("p2", "soil"), "vci: missing a required argument: 'yaw'"),
     ],
-    ids=["obliquty", "Obliquity", "rtoll", "prepare-shnk"],
+    ids=["obliquty", "Obliquity", "rtoll", "prepare-shnk", "vcr-obliquty", "vci-yaww",
+         "omega_c-velocty", "ballistic_limit-obliquty", "vci-missing"],
 )  # fmt: skip
 def test_keyword_typo_names_the_keyword_meant(call, words):
     assert words in _api(call)

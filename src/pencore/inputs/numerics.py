@@ -9,7 +9,9 @@ every value checked against :data:`pencore.inputs.limits.LIMITS`.
 from __future__ import annotations
 
 import difflib
-from collections.abc import Iterable, Mapping
+import functools
+import inspect
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, fields, replace
 from typing import Any
 
@@ -26,6 +28,7 @@ __all__ = [
     "NUMERIC_FIELDS",
     "resolve_numerics",
     "check_keywords",
+    "keywords_checked",
 ]
 
 #: Integration methods: the compiled Rosenbrock pair (default) and scipy's implicit
@@ -238,6 +241,45 @@ def check_keywords(overrides: Mapping[str, Any], own: Iterable[str], function: s
             f"{function}: unknown keyword {brief(key)}{tip}; its keywords are its own "
             f"parameters and the numerics fields ({', '.join(numerics)})"
         )
+
+
+def keywords_checked(function: Callable[..., Any]) -> Callable[..., Any]:
+    """``function`` with its call checked before it runs: a keyword that is none of its
+    own parameters nor a :class:`Numerics` field, or an argument missing or given twice,
+    is one :class:`~pencore.errors.InputError` line (a typo of its own keyword, which
+    ``**kwargs`` would swallow, is named with the closest one instead of surfacing as a
+    "missing argument"). For the public functions that take ``**kwargs``; costs one
+    signature binding per call.
+
+    Examples
+    --------
+    >>> from pencore.inputs.numerics import keywords_checked
+    >>> @keywords_checked
+    ... def search(projectile, obliquity, **kwargs):
+    ...     return obliquity
+    >>> search("p2", obliquty=30.0)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    pencore.errors.InputError: search: unknown keyword 'obliquty' (did you mean 'obliquity'?); ...
+    """
+    signature = inspect.signature(function)
+    own = [
+        name
+        for name, parameter in signature.parameters.items()
+        if parameter.kind not in (parameter.VAR_KEYWORD, parameter.VAR_POSITIONAL)
+    ]
+
+    @functools.wraps(function)
+    def checked(*args: Any, **kwargs: Any) -> Any:
+        try:
+            signature.bind(*args, **kwargs)
+        except TypeError as exc:
+            swallowed = {k: v for k, v in kwargs.items() if k not in own}
+            check_keywords(swallowed, own, function.__name__)  # a typo: named, with a hint
+            raise InputError(f"{function.__name__}: {exc}") from None
+        return function(*args, **kwargs)
+
+    return checked
 
 
 def _apply(base: Numerics, mapping: Mapping[str, Any]) -> Numerics:

@@ -34,6 +34,7 @@ from pencore.errors import InputError
 from pencore.inputs.conventions import normal_impact_angles
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import as_float, number
+from pencore.inputs.numerics import keywords_checked
 from pencore.run.impact import prepare, run_impact, simulate
 from pencore.search.threshold import (
     DEFAULT_SCAN,
@@ -72,6 +73,7 @@ def _turns_back(
     return bool(run.reversed)
 
 
+@keywords_checked
 def vcr(
     projectile: Any,
     target: Any,
@@ -152,6 +154,7 @@ def vcr(
     return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="Vcr")
 
 
+@keywords_checked
 def omega_c(
     projectile: Any,
     target: Any,
@@ -219,6 +222,7 @@ def omega_c(
     return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="omega_c")
 
 
+@keywords_checked
 def vci(
     projectile: Any,
     target: Any,

@@ -34,6 +34,7 @@ import xarray as xr
 from pencore.errors import InputError
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import as_float
+from pencore.inputs.numerics import keywords_checked
 from pencore.io.runs import check_run
 from pencore.run.impact import prepare, run_impact
 from pencore.search.threshold import (
@@ -112,6 +113,7 @@ def residual_velocity(ds: xr.Dataset) -> float:
     return float(ds.attrs["residual_velocity"])
 
 
+@keywords_checked
 def ballistic_limit(
     projectile: Any,
     target: Any,

@@ -11,6 +11,7 @@ deviates or perforates) are in :mod:`pencore.search.critical` and
 
 from __future__ import annotations
 
+import difflib
 import logging
 import math
 import numbers
@@ -410,7 +411,10 @@ def split_search_kwargs(
     # numerics overrides and the models (shank=, emulation=) all go to prepare()
     to_prepare = set(Numerics.__dataclass_fields__) | {"shank", "emulation"}
     overrides = {k: kwargs.pop(k) for k in list(kwargs) if k in to_prepare}
-    unknown = set(kwargs) - {"start"}
+    unknown = sorted(set(kwargs) - {"start"}, key=str)
     if unknown:
-        raise InputError(f"unknown argument(s): {', '.join(sorted(unknown))}")
+        known = sorted(fixed | to_prepare | {"start", "numerics"})
+        hint = difflib.get_close_matches(str(unknown[0]), known, n=1, cutoff=0.6)
+        tip = f" (did you mean {hint[0]!r}?)" if hint else ""
+        raise InputError(f"unknown argument(s): {', '.join(map(str, unknown))}{tip}")
     return numerics, overrides, kwargs
