@@ -27,7 +27,7 @@ from pencore.run.impact import prepare, simulate
 from pencore.search.perforation import ballistic_limit, fit_recht_ipson, recht_ipson
 from pencore.search.threshold import VELOCITY_TOL
 from pencore.studies.common import STRING_DTYPE, axis_values, search_variables, var_attrs
-from pencore.studies.perforation.slabs import slab_target
+from pencore.studies.perforation.slabs import residual_runs, residual_variables, slab_target
 
 __all__ = ["depth_curve", "residual_curve", "ballistic_table"]
 
@@ -145,43 +145,13 @@ def residual_curve(
             f"target {pr.target.name!r} has no rear face (its last layer is a half-space): "
             "a residual velocity needs a finite target (a thickness on every layer)"
         )
-    vr = np.zeros(v.size)
-    pitch = np.full(v.size, np.nan)
-    outcome = np.empty(v.size, dtype=STRING_DTYPE)
-    for k, vi in enumerate(v):
-        ds = simulate(pr.projectile, pr.target, float(vi), obliquity, yaw, prepared=pr,
-                      loads=False)  # fmt: skip
-        outcome[k] = ds.attrs["outcome"]
-        if outcome[k] == "perforated":
-            vr[k] = ds.attrs["residual_velocity"]
-            pitch[k] = ds.attrs["exit_pitch_deg"]
-        if progress is not None:
-            progress(f"{vi:g} m/s: residual {vr[k]:.4g} m/s ({outcome[k]})")
+    vr, pitch, outcome = residual_runs(pr, v, obliquity, yaw, progress)
     fit = {"a": math.nan, "p": math.nan, "v_bl": math.nan, "rms": math.nan}
     if (vr > 0).sum() >= 3:
         fit = fit_recht_ipson(v, vr)
     curve = recht_ipson(v, fit["v_bl"], fit["a"], fit["p"])
     return xr.Dataset(
-        {
-            "residual_velocity": (
-                "velocity",
-                vr,
-                var_attrs(
-                    "m s-1", "centre-of-mass speed when clear of the target (0: no perforation)"
-                ),
-            ),
-            "recht_ipson": (
-                "velocity",
-                curve,
-                var_attrs("m s-1", "Recht-Ipson curve a (v^p - v_bl^p)^(1/p) fitted to the runs"),
-            ),
-            "exit_pitch": (
-                "velocity",
-                pitch,
-                var_attrs("degree", "axis angle from the normal at exit (NaN: no perforation)"),
-            ),
-            "outcome": ("velocity", outcome, {"units": "1", "long_name": "outcome of the run"}),
-        },  # fmt: skip
+        residual_variables(vr, curve, pitch, outcome, "target"),
         coords=_velocity_coord(v),
         attrs={
             "title": "pencore residual velocity against impact velocity",

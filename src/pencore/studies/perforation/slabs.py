@@ -4,7 +4,9 @@
   of one projectile against slab thickness and obliquity;
 * :func:`residual_velocity_curve`: residual speed against impact speed for one slab,
   with the Recht-Ipson curve ``v_r = a (v^p - v_bl^p)^(1/p)`` fitted to it
-  (:func:`pencore.search.perforation.fit_recht_ipson`, ``v_bl`` from the search).
+  (:func:`pencore.search.perforation.fit_recht_ipson`, ``v_bl`` from the search);
+* :func:`residual_runs` and :func:`residual_variables`: the runs of such a curve and its
+  data variables, shared with :func:`pencore.studies.sweeps.residual_curve`.
 
 These are model predictions (no measurement is compared here): the DAFL model with the
 paper's concrete law, no crater or free-surface reduction unless the study's ``crater_depth``
@@ -14,7 +16,7 @@ paper's concrete law, no crater or free-surface reduction unless the study's ``c
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -28,7 +30,13 @@ from pencore.search.perforation import ballistic_limit, fit_recht_ipson, recht_i
 from pencore.search.threshold import VELOCITY_TOL
 from pencore.studies.common import STRING_DTYPE, axis_values, search_variables, var_attrs
 
-__all__ = ["slab_target", "ballistic_limit_map", "residual_velocity_curve"]
+__all__ = [
+    "slab_target",
+    "ballistic_limit_map",
+    "residual_velocity_curve",
+    "residual_runs",
+    "residual_variables",
+]
 
 
 def slab_target(
@@ -121,15 +129,7 @@ def residual_velocity_curve(
     num = resolve_numerics(numerics)
     t = slab_target(medium, thickness, crater_depth, free_surface_depth)
     pr = prepare(projectile, t, num)
-    vr = np.zeros(v.size)
-    pitch = np.full(v.size, np.nan)
-    outcome = np.empty(v.size, dtype=STRING_DTYPE)
-    for k, vi in enumerate(v):
-        ds = simulate(pr.projectile, pr.target, float(vi), obliquity, prepared=pr)
-        outcome[k] = ds.attrs["outcome"]
-        if outcome[k] == "perforated":
-            vr[k] = ds.attrs["residual_velocity"]
-            pitch[k] = ds.attrs["exit_pitch_deg"]
+    vr, pitch, outcome = residual_runs(pr, v, obliquity)
     bl = ballistic_limit(projectile, t, obliquity, lo=lo, hi=hi, tol=tol, numerics=num)
     fit = {"a": math.nan, "p": math.nan, "v_bl": bl.value, "rms": math.nan}
     rms_rigid = math.nan
@@ -139,26 +139,7 @@ def residual_velocity_curve(
         rms_rigid = float(np.sqrt(np.mean((rigid - vr[vr > 0]) ** 2)))
     curve = recht_ipson(v, fit["v_bl"], fit["a"], fit["p"])
     return xr.Dataset(
-        {
-            "residual_velocity": (
-                "velocity",
-                vr,
-                var_attrs(
-                    "m s-1", "centre-of-mass speed when clear of the slab (0: no perforation)"
-                ),
-            ),
-            "recht_ipson": (
-                "velocity",
-                curve,
-                var_attrs("m s-1", "Recht-Ipson curve a (v^p - v_bl^p)^(1/p) fitted to the runs"),
-            ),
-            "exit_pitch": (
-                "velocity",
-                pitch,
-                var_attrs("degree", "axis angle from the normal at exit (NaN: no perforation)"),
-            ),
-            "outcome": ("velocity", outcome, {"units": "1", "long_name": "outcome of the run"}),
-        },
+        residual_variables(vr, curve, pitch, outcome, "slab"),
         coords={"velocity": ("velocity", v, var_attrs("m s-1", "impact speed"))},
         attrs={
             "title": "pencore residual velocity against impact velocity",
@@ -178,3 +159,72 @@ def residual_velocity_curve(
             "recht_ipson_rigid_rms_m_s": rms_rigid,
         },
     )
+
+
+def residual_runs(
+    pr: Any,
+    velocities: np.ndarray,
+    obliquity: float = 0.0,
+    yaw: float = 0.0,
+    progress: Callable[[str], None] | None = None,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """One impact per speed on a prepared finite target.
+
+    Parameters
+    ----------
+    pr : pencore.integrators.problem.Problem
+        The projectile and finite target, prepared (:func:`pencore.run.impact.prepare`).
+    velocities : numpy.ndarray
+        Impact speeds (m/s).
+    obliquity, yaw : float
+        As for :func:`pencore.simulate` (deg).
+    progress : callable, optional
+        Called with a text after each run.
+
+    Returns
+    -------
+    residual, pitch, outcome : numpy.ndarray
+        Residual speed (m/s; 0 when the run does not perforate), exit pitch (deg; NaN
+        when it does not) and the outcome of each run.
+    """
+    vr = np.zeros(velocities.size)
+    pitch = np.full(velocities.size, np.nan)
+    outcome = np.empty(velocities.size, dtype=STRING_DTYPE)
+    for k, vi in enumerate(velocities):
+        ds = simulate(pr.projectile, pr.target, float(vi), obliquity, yaw, prepared=pr,
+                      loads=False)  # fmt: skip
+        outcome[k] = ds.attrs["outcome"]
+        if outcome[k] == "perforated":
+            vr[k] = ds.attrs["residual_velocity"]
+            pitch[k] = ds.attrs["exit_pitch_deg"]
+        if progress is not None:
+            progress(f"{vi:g} m/s: residual {vr[k]:.4g} m/s ({outcome[k]})")
+    return vr, pitch, outcome
+
+
+def residual_variables(
+    vr: np.ndarray, curve: np.ndarray, pitch: np.ndarray, outcome: np.ndarray, body: str
+) -> dict[str, tuple]:
+    """The data variables on ``velocity`` of a residual-velocity curve: the runs of
+    :func:`residual_runs` and the fitted Recht-Ipson ``curve`` (m/s); ``body`` names
+    what the projectile clears (``"slab"``, ``"target"``)."""
+    return {
+        "residual_velocity": (
+            "velocity",
+            vr,
+            var_attrs(
+                "m s-1", f"centre-of-mass speed when clear of the {body} (0: no perforation)"
+            ),
+        ),
+        "recht_ipson": (
+            "velocity",
+            curve,
+            var_attrs("m s-1", "Recht-Ipson curve a (v^p - v_bl^p)^(1/p) fitted to the runs"),
+        ),
+        "exit_pitch": (
+            "velocity",
+            pitch,
+            var_attrs("degree", "axis angle from the normal at exit (NaN: no perforation)"),
+        ),
+        "outcome": ("velocity", outcome, {"units": "1", "long_name": "outcome of the run"}),
+    }
