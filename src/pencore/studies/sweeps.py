@@ -24,10 +24,14 @@ import xarray as xr
 from pencore.errors import InputError
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.run.impact import prepare, simulate
-from pencore.search.perforation import ballistic_limit, fit_recht_ipson, recht_ipson
+from pencore.search.perforation import fit_recht_ipson, recht_ipson
 from pencore.search.threshold import VELOCITY_TOL
-from pencore.studies.common import STRING_DTYPE, axis_values, search_variables, var_attrs
-from pencore.studies.perforation.slabs import residual_runs, residual_variables, slab_target
+from pencore.studies.common import STRING_DTYPE, axis_values, var_attrs
+from pencore.studies.perforation.slabs import (
+    ballistic_limit_grid,
+    residual_runs,
+    residual_variables,
+)
 
 __all__ = ["depth_curve", "residual_curve", "ballistic_table"]
 
@@ -183,36 +187,15 @@ def ballistic_table(
 ) -> xr.Dataset:
     """Ballistic limit (m/s) of a slab of ``medium`` on ``(thickness m, obliquity deg)``,
     as :func:`pencore.studies.perforation.slabs.ballistic_limit_map` with progress."""
-    th = axis_values(thicknesses, "thicknesses")
-    obl = axis_values(obliquities, "obliquities")
-    num = resolve_numerics(numerics)
-    res = np.empty((th.size, obl.size), dtype=object)
-    for i, h in enumerate(th):
-        t = slab_target(medium, h)
-        for j, o in enumerate(obl):
-            r = ballistic_limit(projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan,
-                                numerics=num)  # fmt: skip
-            res[i, j] = r
-            if progress is not None:
-                shown = f"{r.value:.5g} m/s" if r.converged else f"not found ({r.status})"
-                progress(f"{h:g} m at {o:g} deg: v_bl {shown}")
-    dims = ("thickness", "obliquity")
-    ds = xr.Dataset(
-        search_variables(
-            res, "v_bl", "m s-1", "ballistic limit (lowest speed that perforates)", dims
-        ),
-        coords={
-            "thickness": ("thickness", th, var_attrs("m", "slab thickness")),
-            "obliquity": ("obliquity", obl, var_attrs("degree", "obliquity of the axis")),
-        },
-        attrs={
-            "title": "pencore ballistic limit against slab thickness and obliquity",
-            "projectile": str(getattr(projectile, "name", projectile)),
-            "medium": medium,
-            "search_lo_m_s": float(lo),
-            "search_hi_m_s": float(hi),
-            "search_tol_m_s": float(tol),
-            "Conventions": "CF-1.8",
-        },
-    )
+    ds = ballistic_limit_grid(projectile, medium, thicknesses, obliquities, lo=lo, hi=hi,
+                              tol=tol, scan=scan, numerics=numerics, progress=progress)  # fmt: skip
+    ds.attrs = {
+        "title": "pencore ballistic limit against slab thickness and obliquity",
+        "projectile": str(getattr(projectile, "name", projectile)),
+        "medium": medium,
+        "search_lo_m_s": float(lo),
+        "search_hi_m_s": float(hi),
+        "search_tol_m_s": float(tol),
+        "Conventions": "CF-1.8",
+    }
     return ds

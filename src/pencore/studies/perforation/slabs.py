@@ -5,6 +5,8 @@
 * :func:`residual_velocity_curve`: residual speed against impact speed for one slab,
   with the Recht-Ipson curve ``v_r = a (v^p - v_bl^p)^(1/p)`` fitted to it
   (:func:`pencore.search.perforation.fit_recht_ipson`, ``v_bl`` from the search);
+* :func:`ballistic_limit_grid`: the searches of such a map, shared with
+  :func:`pencore.studies.sweeps.ballistic_table`;
 * :func:`residual_runs` and :func:`residual_variables`: the runs of such a curve and its
   data variables, shared with :func:`pencore.studies.sweeps.residual_curve`.
 
@@ -34,6 +36,7 @@ __all__ = [
     "slab_target",
     "ballistic_limit_map",
     "residual_velocity_curve",
+    "ballistic_limit_grid",
     "residual_runs",
     "residual_variables",
 ]
@@ -71,16 +74,77 @@ def ballistic_limit_map(
     numerics: Numerics | Mapping[str, Any] | None = None,
 ) -> xr.Dataset:
     """Ballistic limit (m/s) on ``(thickness m, obliquity deg)``: one search per cell."""
+    windows = (crater_depth, free_surface_depth, plastic_zone_ratio)
+    ds = ballistic_limit_grid(projectile, medium, thicknesses, obliquities, lo=lo, hi=hi,
+                              tol=tol, scan=scan, numerics=numerics, windows=windows)  # fmt: skip
+    ds.attrs = {
+        "title": "pencore ballistic limit against slab thickness and obliquity",
+        "projectile": projectile,
+        "medium": medium,
+        "crater_depth_calibers": float(crater_depth),
+        "free_surface_depth_calibers": float(free_surface_depth),
+        **({"plastic_zone_ratio": float(plastic_zone_ratio)} if plastic_zone_ratio else {}),
+        "search_lo_m_s": float(lo),
+        "search_hi_m_s": float(hi),
+        "search_tol_m_s": float(tol),
+    }
+    return ds
+
+
+def ballistic_limit_grid(
+    projectile: Any,
+    medium: str,
+    thicknesses: Sequence[float],
+    obliquities: Sequence[float],
+    *,
+    lo: float,
+    hi: float,
+    tol: float,
+    scan: int | None,
+    numerics: Numerics | Mapping[str, Any] | None,
+    windows: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    progress: Callable[[str], None] | None = None,
+) -> xr.Dataset:
+    """The ballistic-limit searches of :func:`ballistic_limit_map` on ``(thickness m,
+    obliquity deg)``, without the Dataset's attributes (each caller records its own).
+
+    Parameters
+    ----------
+    projectile : str or pencore.Projectile
+        As for :func:`pencore.ballistic_limit`.
+    medium : str
+        Target name of the slab's medium.
+    thicknesses, obliquities : sequence of float
+        Slab thicknesses (m) and obliquities (deg).
+    lo, hi, tol : float
+        Search range and final bracket width (m/s).
+    scan : int or None
+        Coarse scan points of each search (None: none).
+    numerics : Numerics or mapping, optional
+    windows : tuple of float
+        ``crater_depth``, ``free_surface_depth`` (calibers) and ``plastic_zone_ratio`` of
+        :func:`slab_target` (0 = off).
+    progress : callable, optional
+        Called with a text after each cell.
+
+    Returns
+    -------
+    xarray.Dataset
+        On ``thickness`` and ``obliquity``: the search variables of ``v_bl`` (m/s).
+    """
     th = axis_values(thicknesses, "thicknesses")
     obl = axis_values(obliquities, "obliquities")
     num = resolve_numerics(numerics)
     res = np.empty((th.size, obl.size), dtype=object)
     for i, h in enumerate(th):
-        t = slab_target(medium, h, crater_depth, free_surface_depth, plastic_zone_ratio)
+        t = slab_target(medium, h, *windows)
         for j, o in enumerate(obl):
-            res[i, j] = ballistic_limit(
-                projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan, numerics=num
-            )
+            r = ballistic_limit(projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan,
+                                numerics=num)  # fmt: skip
+            res[i, j] = r
+            if progress is not None:
+                shown = f"{r.value:.5g} m/s" if r.converged else f"not found ({r.status})"
+                progress(f"{h:g} m at {o:g} deg: v_bl {shown}")
     dims = ("thickness", "obliquity")
     return xr.Dataset(
         search_variables(
@@ -89,17 +153,6 @@ def ballistic_limit_map(
         coords={
             "thickness": ("thickness", th, var_attrs("m", "slab thickness")),
             "obliquity": ("obliquity", obl, var_attrs("degree", "obliquity of the axis")),
-        },
-        attrs={
-            "title": "pencore ballistic limit against slab thickness and obliquity",
-            "projectile": projectile,
-            "medium": medium,
-            "crater_depth_calibers": float(crater_depth),
-            "free_surface_depth_calibers": float(free_surface_depth),
-            **({"plastic_zone_ratio": float(plastic_zone_ratio)} if plastic_zone_ratio else {}),
-            "search_lo_m_s": float(lo),
-            "search_hi_m_s": float(hi),
-            "search_tol_m_s": float(tol),
         },
     )
 
