@@ -185,11 +185,21 @@ def check_plot_output(path: str) -> Path:
     p = Path(path)
     if p.suffix.lower() not in PLOT_SUFFIXES:
         raise CommandFailure(f"plot file {path!r} must end in one of {', '.join(PLOT_SUFFIXES)}", 2)
+    return _file_in_a_folder(path, "plot file")
+
+
+def _file_in_a_folder(path: str, what: str) -> Path:
+    """``Path(path)`` if its directory exists and it is no directory; else
+    ``CommandFailure`` (status 2) naming ``what`` (``"plot file"``, ``"output file"``) and
+    ``path`` as given."""
+    from pencore.cli.options import CommandFailure
+
+    p = Path(path)
     parent = p.parent if str(p.parent) else Path(".")
     if not parent.is_dir():
-        raise CommandFailure(f"plot file {path!r}: directory {str(parent)!r} does not exist", 2)
+        raise CommandFailure(f"{what} {path!r}: directory {str(parent)!r} does not exist", 2)
     if p.is_dir():
-        raise CommandFailure(f"plot file {path!r} is a directory", 2)
+        raise CommandFailure(f"{what} {path!r} is a directory", 2)
     return p
 
 
@@ -224,12 +234,7 @@ def check_table_output(path: str) -> Path:
         raise CommandFailure(
             f"output file {path!r} must end in one of {', '.join(TABLE_SUFFIXES)}", 2
         )
-    parent = p.parent if str(p.parent) else Path(".")
-    if not parent.is_dir():
-        raise CommandFailure(f"output file {path!r}: directory {str(parent)!r} does not exist", 2)
-    if p.is_dir():
-        raise CommandFailure(f"output file {path!r} is a directory", 2)
-    return p
+    return _file_in_a_folder(path, "output file")
 
 
 def dataset_csv(ds: Any) -> str:
