@@ -11,7 +11,6 @@ from pencore.cli.options import (
     numerics_given,
     obliquity,
     resolve,
-    velocity,
     with_mass,
     with_windows,
 )
@@ -20,12 +19,11 @@ from pencore.cli.summary import (
     NOT_FOUND,
     Field,
     add_search_outputs,
-    check_plot_output,
-    check_table_output,
-    print_summary,
+    add_speed_bracket,
+    check_bracket,
+    check_outputs,
     search_fields,
-    write_plot,
-    write_table,
+    write_outputs,
 )
 from pencore.inputs.numerics import resolve_numerics
 
@@ -59,34 +57,28 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--yaw", type=number_type("yaw"), default=0.0, metavar="DEG", help="yaw in deg (default: 0)"
     )
-    p.add_argument(
-        "--lo", type=velocity, default=50.0, metavar="M_S", help="lowest speed (default: 50)"
-    )
-    p.add_argument(
-        "--hi", type=velocity, default=3000.0, metavar="M_S", help="highest speed (default: 3000)"
-    )
-    p.add_argument(
-        "--tol",
-        type=number_type("velocity", "tolerance"),
-        default=5.0,
-        metavar="M_S",
-        help="width of the final bracket in m/s (default: 5)",
+    add_speed_bracket(
+        p,
+        50.0,
+        3000.0,
+        (
+            "lowest speed (default: 50)",
+            "highest speed (default: 3000)",
+            "width of the final bracket in m/s (default: 5)",
+        ),
     )
     add_search_outputs(p)
 
 
 def run(args: argparse.Namespace) -> int:
     """Run the search and print the result; errors propagate to :func:`pencore.cli.main`."""
-    from pencore.errors import InputError
     from pencore.inputs.library import get_projectile, get_target
     from pencore.search.history import search_dataset
     from pencore.search.perforation import ballistic_limit
 
     exit_at_once_on_interrupt()
-    if not args.lo < args.hi:
-        raise InputError(f"--lo {args.lo:g} must be below --hi {args.hi:g} (m/s)")
-    out = check_table_output(args.out) if args.out is not None else None
-    plot = check_plot_output(args.plot) if args.plot is not None else None
+    check_bracket(args, " (m/s)")
+    out, plot = check_outputs(args)
     projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
     target = with_windows(resolve("target", args.target, get_target), args)
     r = ballistic_limit(
@@ -110,17 +102,7 @@ def run(args: argparse.Namespace) -> int:
         obliquity_deg=args.obliquity,
         yaw_deg=args.yaw,
     )
-    if out is not None:
-        write_table(ds, out, args, "cli/ballistic-limit")
-    if plot is not None:
-        from pencore.plotting.search import plot_search
-
-        write_plot(plot_search(ds), plot)
     fields = search_fields(r, "v_bl", "m s-1", "m/s")
     fields[0] = Field("v_bl", "ballistic limit", fields[0].value, "m s-1", text=fields[0].text)
-    if out is not None:
-        fields.append(Field("output", "output", str(out)))
-    if plot is not None:
-        fields.append(Field("plot", "plot", str(plot)))
-    print_summary(fields, args.format)
+    write_outputs(ds, fields, out, plot, args)
     return 0 if r.converged else NOT_FOUND

@@ -27,14 +27,12 @@ from pencore.cli.options import (
 from pencore.cli.summary import (
     EXIT_NOTE,
     NOT_FOUND,
-    Field,
     add_search_outputs,
-    check_plot_output,
-    check_table_output,
-    print_summary,
+    add_speed_bracket,
+    check_bracket,
+    check_outputs,
     search_fields,
-    write_plot,
-    write_table,
+    write_outputs,
 )
 
 __all__ = ["add_parsers", "run_search"]
@@ -57,6 +55,20 @@ def _common(p: argparse.ArgumentParser, target_help: str = "target name or YAML 
         "--projectile", required=True, metavar="NAME|FILE", help="projectile name or YAML file"
     )
     p.add_argument("--target", required=True, metavar="NAME|FILE", help=target_help)
+
+
+def _speed_bracket(p: argparse.ArgumentParser, lo: float) -> None:
+    """``--lo``, ``--hi`` and ``--tol`` of ``vcr`` and ``vci`` (m/s)."""
+    add_speed_bracket(
+        p,
+        lo,
+        4000.0,
+        (
+            f"lowest speed searched (default: {lo:g} m/s)",
+            "highest speed searched (default: 4000 m/s)",
+            "width of the final bracket (default: 5 m/s)",
+        ),
+    )
 
 
 def add_parsers(sub: argparse._SubParsersAction) -> None:
@@ -83,27 +95,7 @@ def add_parsers(sub: argparse._SubParsersAction) -> None:
         metavar="DEG",
         help="velocity angle minus axis angle in deg (as for 'simulate'; default 0)",
     )
-    p.add_argument(
-        "--lo",
-        type=velocity,
-        default=100.0,
-        metavar="M_S",
-        help="lowest speed searched (default: 100 m/s)",
-    )
-    p.add_argument(
-        "--hi",
-        type=velocity,
-        default=4000.0,
-        metavar="M_S",
-        help="highest speed searched (default: 4000 m/s)",
-    )
-    p.add_argument(
-        "--tol",
-        type=number_type("velocity", "tolerance"),
-        default=5.0,
-        metavar="M_S",
-        help="width of the final bracket (default: 5 m/s)",
-    )
+    _speed_bracket(p, 100.0)
     add_search_outputs(p)
 
     p = sub.add_parser(
@@ -137,27 +129,7 @@ def add_parsers(sub: argparse._SubParsersAction) -> None:
         default="axis_tilted",
         help="which of the axis or the velocity the yaw tilts (default: axis_tilted)",
     )
-    p.add_argument(
-        "--lo",
-        type=velocity,
-        default=200.0,
-        metavar="M_S",
-        help="lowest speed searched (default: 200 m/s)",
-    )
-    p.add_argument(
-        "--hi",
-        type=velocity,
-        default=4000.0,
-        metavar="M_S",
-        help="highest speed searched (default: 4000 m/s)",
-    )
-    p.add_argument(
-        "--tol",
-        type=number_type("velocity", "tolerance"),
-        default=5.0,
-        metavar="M_S",
-        help="width of the final bracket (default: 5 m/s)",
-    )
+    _speed_bracket(p, 200.0)
     add_search_outputs(p)
 
     p = sub.add_parser(
@@ -204,12 +176,10 @@ def run_search(args: argparse.Namespace) -> int:
     from pencore.search.history import search_dataset
 
     exit_at_once_on_interrupt()
-    if not args.lo < args.hi:
-        raise InputError(f"--lo {args.lo:g} must be below --hi {args.hi:g}")
+    check_bracket(args)
     if args.scan < 0 or args.scan == 1:
         raise InputError(f"--scan must be 0 (none) or at least 2 points, got {args.scan}")
-    out = check_table_output(args.out) if args.out is not None else None
-    plot = check_plot_output(args.plot) if args.plot is not None else None
+    out, plot = check_outputs(args)
     projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
     target = with_windows(resolve("target", args.target, get_target), args)
     num = resolve_numerics(numerics_given(args.numerics))
@@ -230,16 +200,5 @@ def run_search(args: argparse.Namespace) -> int:
                              scan=scan, numerics=num)  # fmt: skip
         inputs.update(impact_velocity_m_s=args.velocity)
     ds = search_dataset(r, quantity, units, long_name, **inputs)
-    if out is not None:
-        write_table(ds, out, args, f"cli/{args.command}")
-    if plot is not None:
-        from pencore.plotting.search import plot_search
-
-        write_plot(plot_search(ds), plot)
-    fields = search_fields(r, quantity, units, text_units)
-    if out is not None:
-        fields.append(Field("output", "output", str(out)))
-    if plot is not None:
-        fields.append(Field("plot", "plot", str(plot)))
-    print_summary(fields, args.format)
+    write_outputs(ds, search_fields(r, quantity, units, text_units), out, plot, args)
     return 0 if r.converged else NOT_FOUND

@@ -19,7 +19,13 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from pencore.cli.options import add_mass_options, add_window_options, numerics_option
+from pencore.cli.options import (
+    add_mass_options,
+    add_window_options,
+    number_type,
+    numerics_option,
+    velocity,
+)
 
 __all__ = [
     "FORMATS",
@@ -36,6 +42,11 @@ __all__ = [
     "read_csv",
     "EXIT_NOTE",
     "add_search_outputs",
+    "add_run_options",
+    "add_speed_bracket",
+    "check_bracket",
+    "check_outputs",
+    "write_outputs",
     "search_fields",
 ]
 
@@ -174,11 +185,21 @@ def check_plot_output(path: str) -> Path:
     p = Path(path)
     if p.suffix.lower() not in PLOT_SUFFIXES:
         raise CommandFailure(f"plot file {path!r} must end in one of {', '.join(PLOT_SUFFIXES)}", 2)
+    return _file_in_a_folder(path, "plot file")
+
+
+def _file_in_a_folder(path: str, what: str) -> Path:
+    """``Path(path)`` if its directory exists and it is no directory; else
+    ``CommandFailure`` (status 2) naming ``what`` (``"plot file"``, ``"output file"``) and
+    ``path`` as given."""
+    from pencore.cli.options import CommandFailure
+
+    p = Path(path)
     parent = p.parent if str(p.parent) else Path(".")
     if not parent.is_dir():
-        raise CommandFailure(f"plot file {path!r}: directory {str(parent)!r} does not exist", 2)
+        raise CommandFailure(f"{what} {path!r}: directory {str(parent)!r} does not exist", 2)
     if p.is_dir():
-        raise CommandFailure(f"plot file {path!r} is a directory", 2)
+        raise CommandFailure(f"{what} {path!r} is a directory", 2)
     return p
 
 
@@ -213,12 +234,7 @@ def check_table_output(path: str) -> Path:
         raise CommandFailure(
             f"output file {path!r} must end in one of {', '.join(TABLE_SUFFIXES)}", 2
         )
-    parent = p.parent if str(p.parent) else Path(".")
-    if not parent.is_dir():
-        raise CommandFailure(f"output file {path!r}: directory {str(parent)!r} does not exist", 2)
-    if p.is_dir():
-        raise CommandFailure(f"output file {path!r} is a directory", 2)
-    return p
+    return _file_in_a_folder(path, "output file")
 
 
 def dataset_csv(ds: Any) -> str:
@@ -283,9 +299,9 @@ def write_table(ds: Any, path: Path, args: argparse.Namespace, study: str) -> No
         raise CommandFailure(str(exc), 1) from None
 
 
-def add_search_outputs(p: argparse.ArgumentParser) -> None:
-    """The mass, window, ``--numerics``, ``--scan``, ``--out``, ``--plot`` and
-    ``--format`` options of a search command."""
+def add_run_options(p: argparse.ArgumentParser, numerics_help: str) -> None:
+    """The mass, window and ``--numerics`` options of a search or sweep command
+    (``numerics_help``: the help text of ``--numerics``)."""
     add_mass_options(p)
     add_window_options(p)
     p.add_argument(
@@ -294,8 +310,77 @@ def add_search_outputs(p: argparse.ArgumentParser) -> None:
         action="append",
         default=[],
         metavar="KEY=VALUE",
-        help="numerical parameter override (repeatable), as for 'simulate'",
+        help=numerics_help,
     )
+
+
+def add_speed_bracket(
+    p: argparse.ArgumentParser, lo: float, hi: float, helps: tuple[str, str, str]
+) -> None:
+    """``--lo`` and ``--hi`` (m/s; defaults ``lo`` and ``hi``) and ``--tol`` (m/s; default
+    5) of a search over impact speed; ``helps`` are their three help texts."""
+    lo_help, hi_help, tol_help = helps
+    p.add_argument("--lo", type=velocity, default=lo, metavar="M_S", help=lo_help)
+    p.add_argument("--hi", type=velocity, default=hi, metavar="M_S", help=hi_help)
+    p.add_argument(
+        "--tol",
+        type=number_type("velocity", "tolerance"),
+        default=5.0,
+        metavar="M_S",
+        help=tol_help,
+    )
+
+
+def check_bracket(args: argparse.Namespace, units: str = "") -> None:
+    """Refuse a search range whose ``--lo`` is not below its ``--hi`` (``InputError``;
+    ``units``, e.g. ``" (m/s)"``, ends the message)."""
+    from pencore.errors import InputError
+
+    if not args.lo < args.hi:
+        raise InputError(f"--lo {args.lo:g} must be below --hi {args.hi:g}{units}")
+
+
+def check_outputs(args: argparse.Namespace) -> tuple[Path | None, Path | None]:
+    """Check ``--out`` and (where the command has it) ``--plot`` before any computation:
+    the paths to write, or None where not asked."""
+    out = check_table_output(args.out) if args.out is not None else None
+    plot_path = getattr(args, "plot", None)
+    plot = check_plot_output(plot_path) if plot_path is not None else None
+    return out, plot
+
+
+def draw_search(ds: Any) -> Any:
+    """The figure of a search's Dataset (:func:`pencore.plotting.search.plot_search`)."""
+    from pencore.plotting.search import plot_search
+
+    return plot_search(ds)
+
+
+def write_outputs(
+    ds: Any,
+    fields: list[Field],
+    out: Path | None,
+    plot: Path | None,
+    args: argparse.Namespace,
+    draw: Any = draw_search,
+) -> None:
+    """Write a search's or sweep's table to ``out`` and ``draw(ds)`` to ``plot`` (each
+    where asked), then print ``fields`` with the paths written in ``args.format``."""
+    if out is not None:
+        write_table(ds, out, args, f"cli/{args.command}")
+    if plot is not None:
+        write_plot(draw(ds), plot)
+    if out is not None:
+        fields.append(Field("output", "output", str(out)))
+    if plot is not None:
+        fields.append(Field("plot", "plot", str(plot)))
+    print_summary(fields, args.format)
+
+
+def add_search_outputs(p: argparse.ArgumentParser) -> None:
+    """The mass, window, ``--numerics``, ``--scan``, ``--out``, ``--plot`` and
+    ``--format`` options of a search command."""
+    add_run_options(p, "numerical parameter override (repeatable), as for 'simulate'")
     p.add_argument(
         "--scan",
         type=int,

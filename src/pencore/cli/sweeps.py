@@ -16,12 +16,9 @@ from typing import Any
 import numpy as np
 
 from pencore.cli.options import (
-    add_mass_options,
-    add_window_options,
     exit_at_once_on_interrupt,
     number_type,
     numerics_given,
-    numerics_option,
     obliquity,
     resolve,
     velocity,
@@ -33,11 +30,11 @@ from pencore.cli.summary import (
     Field,
     Progress,
     add_format_option,
-    check_plot_output,
-    check_table_output,
-    print_summary,
-    write_plot,
-    write_table,
+    add_run_options,
+    add_speed_bracket,
+    check_bracket,
+    check_outputs,
+    write_outputs,
 )
 
 __all__ = ["add_parsers", "run_sweep"]
@@ -53,17 +50,22 @@ def _speeds(p: argparse.ArgumentParser) -> None:
                    help="N impact speeds evenly from LO to HI m/s")  # fmt: skip
 
 
-def _outputs(p: argparse.ArgumentParser, plot: bool) -> None:
-    add_mass_options(p)
-    add_window_options(p)
+def _impacts(p: argparse.ArgumentParser, target_metavar: str, target_help: str) -> None:
+    """The projectile, target, impact speeds and obliquity of a sweep over impact speed."""
+    p.add_argument("--projectile", required=True, metavar="NAME|FILE", help="projectile")
+    p.add_argument("--target", required=True, metavar=target_metavar, help=target_help)
+    _speeds(p)
     p.add_argument(
-        "--numerics",
-        type=numerics_option,
-        action="append",
-        default=[],
-        metavar="KEY=VALUE",
-        help="numerical parameter override (repeatable)",
+        "--obliquity",
+        type=obliquity,
+        default=0.0,
+        metavar="DEG",
+        help="obliquity in deg (default 0)",
     )
+
+
+def _outputs(p: argparse.ArgumentParser, plot: bool) -> None:
+    add_run_options(p, "numerical parameter override (repeatable)")
     p.add_argument(
         "--out",
         metavar="FILE.nc|FILE.csv",
@@ -87,16 +89,7 @@ def add_parsers(sub: argparse._SubParsersAction) -> None:
         "length (m), final deviation (deg), peak axial deceleration (m/s^2 and g) and "
         "peak axial and lateral forces (N) against impact speed (m/s).",
     )
-    p.add_argument("--projectile", required=True, metavar="NAME|FILE", help="projectile")
-    p.add_argument("--target", required=True, metavar="NAME|FILE", help="target")
-    _speeds(p)
-    p.add_argument(
-        "--obliquity",
-        type=obliquity,
-        default=0.0,
-        metavar="DEG",
-        help="obliquity in deg (default 0)",
-    )
+    _impacts(p, "NAME|FILE", "target")
     p.add_argument(
         "--yaw",
         type=number_type("yaw"),
@@ -114,16 +107,7 @@ def add_parsers(sub: argparse._SubParsersAction) -> None:
         "perforate) and exit pitch (deg), with the Recht-Ipson curve fitted when three or "
         "more runs perforate.",
     )
-    p.add_argument("--projectile", required=True, metavar="NAME|FILE", help="projectile")
-    p.add_argument("--target", required=True, metavar="FILE", help="finite target YAML file")
-    _speeds(p)
-    p.add_argument(
-        "--obliquity",
-        type=obliquity,
-        default=0.0,
-        metavar="DEG",
-        help="obliquity in deg (default 0)",
-    )
+    _impacts(p, "FILE", "finite target YAML file")
     _outputs(p, plot=True)  # fmt: skip
 
     p = sub.add_parser(
@@ -156,26 +140,15 @@ def add_parsers(sub: argparse._SubParsersAction) -> None:
         metavar="DEG",
         help="obliquities in deg (default 0)",
     )
-    p.add_argument(
-        "--lo",
-        type=velocity,
-        default=50.0,
-        metavar="M_S",
-        help="lowest speed searched (default 50)",
-    )
-    p.add_argument(
-        "--hi",
-        type=velocity,
-        default=3000.0,
-        metavar="M_S",
-        help="highest speed searched (default 3000)",
-    )
-    p.add_argument(
-        "--tol",
-        type=number_type("velocity", "tolerance"),
-        default=5.0,
-        metavar="M_S",
-        help="width of the final bracket (default 5)",
+    add_speed_bracket(
+        p,
+        50.0,
+        3000.0,
+        (
+            "lowest speed searched (default 50)",
+            "highest speed searched (default 3000)",
+            "width of the final bracket (default 5)",
+        ),
     )
     _outputs(p, plot=True)  # fmt: skip
 
@@ -200,9 +173,7 @@ def run_sweep(args: argparse.Namespace) -> int:
     from pencore.studies import sweeps
 
     exit_at_once_on_interrupt()
-    out = check_table_output(args.out) if args.out is not None else None
-    plot_path = getattr(args, "plot", None)
-    plot = check_plot_output(plot_path) if plot_path is not None else None
+    out, plot = check_outputs(args)
     projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
     num = resolve_numerics(numerics_given(args.numerics))
     status = 0
@@ -210,8 +181,7 @@ def run_sweep(args: argparse.Namespace) -> int:
     if args.command == "ballistic-table":
         from pencore.errors import InputError
 
-        if not args.lo < args.hi:
-            raise InputError(f"--lo {args.lo:g} must be below --hi {args.hi:g} (m/s)")
+        check_bracket(args, " (m/s)")
         if any(h <= 0.0 for h in args.thicknesses):
             raise InputError(f"--thicknesses must be > 0 m, got {args.thicknesses}")
         get_target(args.medium)  # a bad name is one line before any run
@@ -256,19 +226,21 @@ def run_sweep(args: argparse.Namespace) -> int:
                 Field("recht_ipson_a", "Recht-Ipson a", a["recht_ipson_a"], "1"),
                 Field("recht_ipson_p", "Recht-Ipson p", a["recht_ipson_p"], "1"),
             ]  # fmt: skip
-    if out is not None:
-        write_table(ds, out, args, f"cli/{args.command}")
-    if plot is not None:
+    write_outputs(ds, fields, out, plot, args, draw=_draw(args.command))
+    return status
+
+
+def _draw(command: str) -> Any:
+    """What draws the table of ``command`` (imported only when a plot is drawn)."""
+
+    def draw(ds: Any) -> Any:
         from pencore.plotting.perforation import plot_ballistic_limit, plot_residual_velocity
 
-        draw = plot_ballistic_limit if args.command == "ballistic-table" else plot_residual_velocity
-        write_plot(draw(ds), plot)
-    if out is not None:
-        fields.append(Field("output", "output", str(out)))
-    if plot is not None:
-        fields.append(Field("plot", "plot", str(plot)))
-    print_summary(fields, args.format)
-    return status
+        if command == "ballistic-table":
+            return plot_ballistic_limit(ds)
+        return plot_residual_velocity(ds)
+
+    return draw
 
 
 def _min(a: Any) -> float:

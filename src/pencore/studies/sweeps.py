@@ -24,10 +24,14 @@ import xarray as xr
 from pencore.errors import InputError
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.run.impact import prepare, simulate
-from pencore.search.perforation import ballistic_limit, fit_recht_ipson, recht_ipson
+from pencore.search.perforation import fit_recht_ipson, recht_ipson
 from pencore.search.threshold import VELOCITY_TOL
-from pencore.studies.common import STRING_DTYPE, axis_values, search_variables, var_attrs
-from pencore.studies.perforation.slabs import slab_target
+from pencore.studies.common import STRING_DTYPE, axis_values, var_attrs
+from pencore.studies.perforation.slabs import (
+    ballistic_limit_grid,
+    residual_runs,
+    residual_variables,
+)
 
 __all__ = ["depth_curve", "residual_curve", "ballistic_table"]
 
@@ -145,43 +149,13 @@ def residual_curve(
             f"target {pr.target.name!r} has no rear face (its last layer is a half-space): "
             "a residual velocity needs a finite target (a thickness on every layer)"
         )
-    vr = np.zeros(v.size)
-    pitch = np.full(v.size, np.nan)
-    outcome = np.empty(v.size, dtype=STRING_DTYPE)
-    for k, vi in enumerate(v):
-        ds = simulate(pr.projectile, pr.target, float(vi), obliquity, yaw, prepared=pr,
-                      loads=False)  # fmt: skip
-        outcome[k] = ds.attrs["outcome"]
-        if outcome[k] == "perforated":
-            vr[k] = ds.attrs["residual_velocity"]
-            pitch[k] = ds.attrs["exit_pitch_deg"]
-        if progress is not None:
-            progress(f"{vi:g} m/s: residual {vr[k]:.4g} m/s ({outcome[k]})")
+    vr, pitch, outcome = residual_runs(pr, v, obliquity, yaw, progress)
     fit = {"a": math.nan, "p": math.nan, "v_bl": math.nan, "rms": math.nan}
     if (vr > 0).sum() >= 3:
         fit = fit_recht_ipson(v, vr)
     curve = recht_ipson(v, fit["v_bl"], fit["a"], fit["p"])
     return xr.Dataset(
-        {
-            "residual_velocity": (
-                "velocity",
-                vr,
-                var_attrs(
-                    "m s-1", "centre-of-mass speed when clear of the target (0: no perforation)"
-                ),
-            ),
-            "recht_ipson": (
-                "velocity",
-                curve,
-                var_attrs("m s-1", "Recht-Ipson curve a (v^p - v_bl^p)^(1/p) fitted to the runs"),
-            ),
-            "exit_pitch": (
-                "velocity",
-                pitch,
-                var_attrs("degree", "axis angle from the normal at exit (NaN: no perforation)"),
-            ),
-            "outcome": ("velocity", outcome, {"units": "1", "long_name": "outcome of the run"}),
-        },  # fmt: skip
+        residual_variables(vr, curve, pitch, outcome, "target"),
         coords=_velocity_coord(v),
         attrs={
             "title": "pencore residual velocity against impact velocity",
@@ -213,36 +187,15 @@ def ballistic_table(
 ) -> xr.Dataset:
     """Ballistic limit (m/s) of a slab of ``medium`` on ``(thickness m, obliquity deg)``,
     as :func:`pencore.studies.perforation.slabs.ballistic_limit_map` with progress."""
-    th = axis_values(thicknesses, "thicknesses")
-    obl = axis_values(obliquities, "obliquities")
-    num = resolve_numerics(numerics)
-    res = np.empty((th.size, obl.size), dtype=object)
-    for i, h in enumerate(th):
-        t = slab_target(medium, h)
-        for j, o in enumerate(obl):
-            r = ballistic_limit(projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan,
-                                numerics=num)  # fmt: skip
-            res[i, j] = r
-            if progress is not None:
-                shown = f"{r.value:.5g} m/s" if r.converged else f"not found ({r.status})"
-                progress(f"{h:g} m at {o:g} deg: v_bl {shown}")
-    dims = ("thickness", "obliquity")
-    ds = xr.Dataset(
-        search_variables(
-            res, "v_bl", "m s-1", "ballistic limit (lowest speed that perforates)", dims
-        ),
-        coords={
-            "thickness": ("thickness", th, var_attrs("m", "slab thickness")),
-            "obliquity": ("obliquity", obl, var_attrs("degree", "obliquity of the axis")),
-        },
-        attrs={
-            "title": "pencore ballistic limit against slab thickness and obliquity",
-            "projectile": str(getattr(projectile, "name", projectile)),
-            "medium": medium,
-            "search_lo_m_s": float(lo),
-            "search_hi_m_s": float(hi),
-            "search_tol_m_s": float(tol),
-            "Conventions": "CF-1.8",
-        },
-    )
+    ds = ballistic_limit_grid(projectile, medium, thicknesses, obliquities, lo=lo, hi=hi,
+                              tol=tol, scan=scan, numerics=numerics, progress=progress)  # fmt: skip
+    ds.attrs = {
+        "title": "pencore ballistic limit against slab thickness and obliquity",
+        "projectile": str(getattr(projectile, "name", projectile)),
+        "medium": medium,
+        "search_lo_m_s": float(lo),
+        "search_hi_m_s": float(hi),
+        "search_tol_m_s": float(tol),
+        "Conventions": "CF-1.8",
+    }
     return ds

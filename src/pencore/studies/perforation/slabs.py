@@ -4,7 +4,11 @@
   of one projectile against slab thickness and obliquity;
 * :func:`residual_velocity_curve`: residual speed against impact speed for one slab,
   with the Recht-Ipson curve ``v_r = a (v^p - v_bl^p)^(1/p)`` fitted to it
-  (:func:`pencore.search.perforation.fit_recht_ipson`, ``v_bl`` from the search).
+  (:func:`pencore.search.perforation.fit_recht_ipson`, ``v_bl`` from the search);
+* :func:`ballistic_limit_grid`: the searches of such a map, shared with
+  :func:`pencore.studies.sweeps.ballistic_table`;
+* :func:`residual_runs` and :func:`residual_variables`: the runs of such a curve and its
+  data variables, shared with :func:`pencore.studies.sweeps.residual_curve`.
 
 These are model predictions (no measurement is compared here): the DAFL model with the
 paper's concrete law, no crater or free-surface reduction unless the study's ``crater_depth``
@@ -14,7 +18,7 @@ paper's concrete law, no crater or free-surface reduction unless the study's ``c
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -28,7 +32,14 @@ from pencore.search.perforation import ballistic_limit, fit_recht_ipson, recht_i
 from pencore.search.threshold import VELOCITY_TOL
 from pencore.studies.common import STRING_DTYPE, axis_values, search_variables, var_attrs
 
-__all__ = ["slab_target", "ballistic_limit_map", "residual_velocity_curve"]
+__all__ = [
+    "slab_target",
+    "ballistic_limit_map",
+    "residual_velocity_curve",
+    "ballistic_limit_grid",
+    "residual_runs",
+    "residual_variables",
+]
 
 
 def slab_target(
@@ -63,16 +74,77 @@ def ballistic_limit_map(
     numerics: Numerics | Mapping[str, Any] | None = None,
 ) -> xr.Dataset:
     """Ballistic limit (m/s) on ``(thickness m, obliquity deg)``: one search per cell."""
+    windows = (crater_depth, free_surface_depth, plastic_zone_ratio)
+    ds = ballistic_limit_grid(projectile, medium, thicknesses, obliquities, lo=lo, hi=hi,
+                              tol=tol, scan=scan, numerics=numerics, windows=windows)  # fmt: skip
+    ds.attrs = {
+        "title": "pencore ballistic limit against slab thickness and obliquity",
+        "projectile": projectile,
+        "medium": medium,
+        "crater_depth_calibers": float(crater_depth),
+        "free_surface_depth_calibers": float(free_surface_depth),
+        **({"plastic_zone_ratio": float(plastic_zone_ratio)} if plastic_zone_ratio else {}),
+        "search_lo_m_s": float(lo),
+        "search_hi_m_s": float(hi),
+        "search_tol_m_s": float(tol),
+    }
+    return ds
+
+
+def ballistic_limit_grid(
+    projectile: Any,
+    medium: str,
+    thicknesses: Sequence[float],
+    obliquities: Sequence[float],
+    *,
+    lo: float,
+    hi: float,
+    tol: float,
+    scan: int | None,
+    numerics: Numerics | Mapping[str, Any] | None,
+    windows: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    progress: Callable[[str], None] | None = None,
+) -> xr.Dataset:
+    """The ballistic-limit searches of :func:`ballistic_limit_map` on ``(thickness m,
+    obliquity deg)``, without the Dataset's attributes (each caller records its own).
+
+    Parameters
+    ----------
+    projectile : str or pencore.Projectile
+        As for :func:`pencore.ballistic_limit`.
+    medium : str
+        Target name of the slab's medium.
+    thicknesses, obliquities : sequence of float
+        Slab thicknesses (m) and obliquities (deg).
+    lo, hi, tol : float
+        Search range and final bracket width (m/s).
+    scan : int or None
+        Coarse scan points of each search (None: none).
+    numerics : Numerics or mapping, optional
+    windows : tuple of float
+        ``crater_depth``, ``free_surface_depth`` (calibers) and ``plastic_zone_ratio`` of
+        :func:`slab_target` (0 = off).
+    progress : callable, optional
+        Called with a text after each cell.
+
+    Returns
+    -------
+    xarray.Dataset
+        On ``thickness`` and ``obliquity``: the search variables of ``v_bl`` (m/s).
+    """
     th = axis_values(thicknesses, "thicknesses")
     obl = axis_values(obliquities, "obliquities")
     num = resolve_numerics(numerics)
     res = np.empty((th.size, obl.size), dtype=object)
     for i, h in enumerate(th):
-        t = slab_target(medium, h, crater_depth, free_surface_depth, plastic_zone_ratio)
+        t = slab_target(medium, h, *windows)
         for j, o in enumerate(obl):
-            res[i, j] = ballistic_limit(
-                projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan, numerics=num
-            )
+            r = ballistic_limit(projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan,
+                                numerics=num)  # fmt: skip
+            res[i, j] = r
+            if progress is not None:
+                shown = f"{r.value:.5g} m/s" if r.converged else f"not found ({r.status})"
+                progress(f"{h:g} m at {o:g} deg: v_bl {shown}")
     dims = ("thickness", "obliquity")
     return xr.Dataset(
         search_variables(
@@ -81,17 +153,6 @@ def ballistic_limit_map(
         coords={
             "thickness": ("thickness", th, var_attrs("m", "slab thickness")),
             "obliquity": ("obliquity", obl, var_attrs("degree", "obliquity of the axis")),
-        },
-        attrs={
-            "title": "pencore ballistic limit against slab thickness and obliquity",
-            "projectile": projectile,
-            "medium": medium,
-            "crater_depth_calibers": float(crater_depth),
-            "free_surface_depth_calibers": float(free_surface_depth),
-            **({"plastic_zone_ratio": float(plastic_zone_ratio)} if plastic_zone_ratio else {}),
-            "search_lo_m_s": float(lo),
-            "search_hi_m_s": float(hi),
-            "search_tol_m_s": float(tol),
         },
     )
 
@@ -121,15 +182,7 @@ def residual_velocity_curve(
     num = resolve_numerics(numerics)
     t = slab_target(medium, thickness, crater_depth, free_surface_depth)
     pr = prepare(projectile, t, num)
-    vr = np.zeros(v.size)
-    pitch = np.full(v.size, np.nan)
-    outcome = np.empty(v.size, dtype=STRING_DTYPE)
-    for k, vi in enumerate(v):
-        ds = simulate(pr.projectile, pr.target, float(vi), obliquity, prepared=pr)
-        outcome[k] = ds.attrs["outcome"]
-        if outcome[k] == "perforated":
-            vr[k] = ds.attrs["residual_velocity"]
-            pitch[k] = ds.attrs["exit_pitch_deg"]
+    vr, pitch, outcome = residual_runs(pr, v, obliquity)
     bl = ballistic_limit(projectile, t, obliquity, lo=lo, hi=hi, tol=tol, numerics=num)
     fit = {"a": math.nan, "p": math.nan, "v_bl": bl.value, "rms": math.nan}
     rms_rigid = math.nan
@@ -139,26 +192,7 @@ def residual_velocity_curve(
         rms_rigid = float(np.sqrt(np.mean((rigid - vr[vr > 0]) ** 2)))
     curve = recht_ipson(v, fit["v_bl"], fit["a"], fit["p"])
     return xr.Dataset(
-        {
-            "residual_velocity": (
-                "velocity",
-                vr,
-                var_attrs(
-                    "m s-1", "centre-of-mass speed when clear of the slab (0: no perforation)"
-                ),
-            ),
-            "recht_ipson": (
-                "velocity",
-                curve,
-                var_attrs("m s-1", "Recht-Ipson curve a (v^p - v_bl^p)^(1/p) fitted to the runs"),
-            ),
-            "exit_pitch": (
-                "velocity",
-                pitch,
-                var_attrs("degree", "axis angle from the normal at exit (NaN: no perforation)"),
-            ),
-            "outcome": ("velocity", outcome, {"units": "1", "long_name": "outcome of the run"}),
-        },
+        residual_variables(vr, curve, pitch, outcome, "slab"),
         coords={"velocity": ("velocity", v, var_attrs("m s-1", "impact speed"))},
         attrs={
             "title": "pencore residual velocity against impact velocity",
@@ -178,3 +212,72 @@ def residual_velocity_curve(
             "recht_ipson_rigid_rms_m_s": rms_rigid,
         },
     )
+
+
+def residual_runs(
+    pr: Any,
+    velocities: np.ndarray,
+    obliquity: float = 0.0,
+    yaw: float = 0.0,
+    progress: Callable[[str], None] | None = None,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """One impact per speed on a prepared finite target.
+
+    Parameters
+    ----------
+    pr : pencore.integrators.problem.Problem
+        The projectile and finite target, prepared (:func:`pencore.run.impact.prepare`).
+    velocities : numpy.ndarray
+        Impact speeds (m/s).
+    obliquity, yaw : float
+        As for :func:`pencore.simulate` (deg).
+    progress : callable, optional
+        Called with a text after each run.
+
+    Returns
+    -------
+    residual, pitch, outcome : numpy.ndarray
+        Residual speed (m/s; 0 when the run does not perforate), exit pitch (deg; NaN
+        when it does not) and the outcome of each run.
+    """
+    vr = np.zeros(velocities.size)
+    pitch = np.full(velocities.size, np.nan)
+    outcome = np.empty(velocities.size, dtype=STRING_DTYPE)
+    for k, vi in enumerate(velocities):
+        ds = simulate(pr.projectile, pr.target, float(vi), obliquity, yaw, prepared=pr,
+                      loads=False)  # fmt: skip
+        outcome[k] = ds.attrs["outcome"]
+        if outcome[k] == "perforated":
+            vr[k] = ds.attrs["residual_velocity"]
+            pitch[k] = ds.attrs["exit_pitch_deg"]
+        if progress is not None:
+            progress(f"{vi:g} m/s: residual {vr[k]:.4g} m/s ({outcome[k]})")
+    return vr, pitch, outcome
+
+
+def residual_variables(
+    vr: np.ndarray, curve: np.ndarray, pitch: np.ndarray, outcome: np.ndarray, body: str
+) -> dict[str, tuple]:
+    """The data variables on ``velocity`` of a residual-velocity curve: the runs of
+    :func:`residual_runs` and the fitted Recht-Ipson ``curve`` (m/s); ``body`` names
+    what the projectile clears (``"slab"``, ``"target"``)."""
+    return {
+        "residual_velocity": (
+            "velocity",
+            vr,
+            var_attrs(
+                "m s-1", f"centre-of-mass speed when clear of the {body} (0: no perforation)"
+            ),
+        ),
+        "recht_ipson": (
+            "velocity",
+            curve,
+            var_attrs("m s-1", "Recht-Ipson curve a (v^p - v_bl^p)^(1/p) fitted to the runs"),
+        ),
+        "exit_pitch": (
+            "velocity",
+            pitch,
+            var_attrs("degree", "axis angle from the normal at exit (NaN: no perforation)"),
+        ),
+        "outcome": ("velocity", outcome, {"units": "1", "long_name": "outcome of the run"}),
+    }
