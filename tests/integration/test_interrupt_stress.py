@@ -123,7 +123,7 @@ def test_wall_budget_ends_a_heavy_run_on_time(tmp_path):
     prepared = pencore.prepare("p2", str(target), dict(HEAVY, max_wall=1.0))
     t0 = time.monotonic()
     with pytest.raises(SolverError, match="wall-time budget of 1 s used up"):
-        pencore.simulate(None, None, 1500.0, 45.0, prepared=prepared)
+        pencore.simulate("p2", str(target), 1500.0, 45.0, prepared=prepared)
     # the watcher raises the stop flag within 0.05 s of the budget; the step in progress
     # (~0.4 s here) ends first. A 500-step chunk would take minutes.
     assert time.monotonic() - t0 < API_BOUND_S
