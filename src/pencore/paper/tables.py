@@ -21,7 +21,7 @@ __all__ = ["read_csv"]
 def read_csv(
     path: str | os.PathLike[str], what: str, *, label: str | None = None, **kwargs: Any
 ) -> pd.DataFrame:
-    """The table in the CSV file ``path`` (``kwargs`` go to :func:`pandas.read_csv`).
+    """The table in the CSV file ``path`` (``kwargs`` go to ``pandas.read_csv``).
 
     Parameters
     ----------
