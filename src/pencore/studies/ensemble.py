@@ -97,9 +97,9 @@ def chunk_indices(n_samples: int, n_chunks: int, chunk: int) -> np.ndarray:
     return np.array_split(np.arange(n_samples), n_chunks)[chunk]
 
 
-def _one(pr: Any, c: Mapping[str, Any], cond: Mapping[str, float]) -> dict[str, Any]:
+def _one(pr: Any, cond: Mapping[str, float]) -> dict[str, Any]:
     kw = {VARIABLES[k][0]: float(v) for k, v in cond.items()}
-    ds = simulate(c["projectile"], c["target"], prepared=pr, **kw)
+    ds = simulate(pr.projectile, pr.target, prepared=pr, **kw)  # checked once, at prepare
     az = math.radians(kw["azimuth"])
     dx = float(ds["tip_x"][-1] - ds["tip_x"][0])
     dz = float(ds["tip_z"][-1] - ds["tip_z"][0])
@@ -130,7 +130,7 @@ def run_chunk(case: Mapping[str, Any], chunk: int, numerics: Any = None) -> xr.D
     idx = chunk_indices(c["n_samples"], c["n_chunks"], chunk)
     cond = sample_conditions(c)
     pr = prepare(c["projectile"], c["target"], numerics)
-    runs = [_one(pr, c, {k: v[i] for k, v in cond.items()}) for i in idx]
+    runs = [_one(pr, {k: v[i] for k, v in cond.items()}) for i in idx]
     data: dict[str, Any] = {}
     for k, (arg, units, long_name) in VARIABLES.items():
         data[arg] = ("sample", cond[k][idx], {"units": units, "long_name": long_name})
