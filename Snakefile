@@ -13,7 +13,7 @@ from snakemake.utils import min_version, validate
 
 from pencore.errors import ConfigError
 from pencore.io.results import set_aside_unreadable
-from pencore.workflowconfig.parts import remade_target
+from pencore.workflowconfig.parts import remade_target, round_robin
 from pencore.workflowconfig.config_check import check_config, one_line_warnings, read_config
 from pencore.workflowconfig.config_check import schema_error_message, strict_schema_error
 from pencore.workflowconfig.sources import physics_source_hash, plotting_source_hash

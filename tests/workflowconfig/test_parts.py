@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from pencore.errors import InputError
-from pencore.workflowconfig.parts import grid, parts_of, value_range, values
+from pencore.workflowconfig.parts import grid, parts_of, round_robin, value_range, values
 from pencore.workflowconfig.registry import STUDIES, split_studies
 
 
@@ -43,3 +43,18 @@ def test_a_study_that_runs_whole_has_no_parts():
     whole = next(k for k in STUDIES if k not in split_studies())
     with pytest.raises(InputError, match="is not split into parts"):
         parts_of(whole, {"projectiles": ["p2"]})
+
+
+def test_round_robin_deals_every_name_once_in_order():
+    names = [f"s{i}" for i in range(7)]
+    jobs = round_robin(names, 3)
+    assert jobs == [["s0", "s3", "s6"], ["s1", "s4"], ["s2", "s5"]]
+    assert sorted(n for job in jobs for n in job) == sorted(names)
+    assert round_robin(names[:2], 5) == [["s0"], ["s1"]]  # no empty job
+    assert round_robin(names, 1) == [names]
+
+
+@pytest.mark.parametrize("bad", [0, -1, 1.5, True, "2"])
+def test_round_robin_refuses_a_job_count_that_is_not_a_whole_number(bad):
+    with pytest.raises(InputError, match="number of jobs must be a whole number >= 1"):
+        round_robin(["a"], bad)

@@ -1,28 +1,34 @@
 # Attribution study: the paper's disputed numbers under each reading of what
 # the paper leaves open. pencore.studies.attribution.settings; settings in config `attribution`.
-#   attribution_setting  one job per setting: results/attribution/parts/<setting>.nc
-#   attribution_gather   results/attribution/attribution.nc and attribution_table.csv
-#   attribution_figure   results/attribution/attribution.{png,pdf}
-# Each setting carries its own numerics (the global `numerics` does not apply here).
+#   attribution_settings_<k>  job k of `jobs`: its settings (dealt in turn, config order),
+#                             results/attribution/parts/<setting>.nc each
+#   attribution_gather        results/attribution/attribution.nc and attribution_table.csv
+#   attribution_figure        results/attribution/attribution.{png,pdf}
+# A setting's runs take about a second: one job per setting paid more for its process
+# start and kernel load than for them. Each setting carries its own numerics (the global
+# `numerics` does not apply here).
 ATTRIBUTION_SETTINGS = {s["name"]: s for s in config["attribution"]["settings"]}
+ATTRIBUTION_JOBS = round_robin(list(ATTRIBUTION_SETTINGS), config["attribution"]["jobs"])
 
 
-rule attribution_setting:
-    output:
-        nc="results/attribution/parts/{setting}.nc",
-    log:
-        "results/logs/attribution/{setting}.log",
-    benchmark:
-        "results/benchmarks/attribution/{setting}.tsv"
-    wildcard_constraints:
-        setting="|".join(ATTRIBUTION_SETTINGS),
-    conda:
-        "../envs/pencore.yaml"
-    params:
-        setting=lambda wc: canonical(ATTRIBUTION_SETTINGS[wc.setting]),
-        code=PHYSICS_CODE,
-    script:
-        "../scripts/attribution.py"
+for _k, _names in enumerate(ATTRIBUTION_JOBS):
+
+    rule:
+        name:
+            f"attribution_settings_{_k}"
+        output:
+            nc=[f"results/attribution/parts/{name}.nc" for name in _names],
+        log:
+            f"results/logs/attribution/settings_{_k}.log",
+        benchmark:
+            f"results/benchmarks/attribution/settings_{_k}.tsv"
+        conda:
+            "../envs/pencore.yaml"
+        params:
+            settings=canonical([ATTRIBUTION_SETTINGS[name] for name in _names]),
+            code=PHYSICS_CODE,
+        script:
+            "../scripts/attribution.py"
 
 
 rule attribution_gather:

@@ -2,7 +2,8 @@
 (:func:`~pencore.workflowconfig.parts.parts_of`; which studies
 are split, and by what, is their record in :mod:`pencore.workflowconfig.registry`), with
 the ``{min, max, step}`` grids of the configuration
-(:func:`~pencore.workflowconfig.parts.grid`).
+(:func:`~pencore.workflowconfig.parts.grid`), and the settings a job runs
+(:func:`~pencore.workflowconfig.parts.round_robin`).
 
 Light (numpy and :mod:`pencore.errors` only): the workflow asks for the parts at every
 Snakemake start, before any study runs.
@@ -12,7 +13,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -20,7 +21,7 @@ import numpy as np
 from pencore.errors import InputError
 from pencore.workflowconfig import registry
 
-__all__ = ["grid", "values", "value_range", "parts_of", "remade_target"]
+__all__ = ["grid", "values", "value_range", "parts_of", "round_robin", "remade_target"]
 
 
 def grid(min: float, max: float, step: float) -> np.ndarray:
@@ -58,6 +59,19 @@ def parts_of(study: str, cfg: Mapping[str, Any]) -> list[dict[str, Any]]:
     if "obliquity" in record.split_by:
         parts = [{**part, "obliquity": o} for part in parts for o in values(cfg["obliquity_deg"])]
     return parts
+
+
+def round_robin(names: Sequence[str], n_jobs: int) -> list[list[str]]:
+    """``names`` dealt into at most ``n_jobs`` lists in turn (the i-th name to list
+    ``i % n_jobs``), empty lists left out: the settings of a study that one job each would
+    spend more on its process start and kernel load than on its runs.
+
+    >>> round_robin(["a", "b", "c"], 2)
+    [['a', 'c'], ['b']]
+    """
+    if isinstance(n_jobs, bool) or not isinstance(n_jobs, int) or n_jobs < 1:
+        raise InputError(f"the number of jobs must be a whole number >= 1, got {n_jobs!r}")
+    return [list(names[k::n_jobs]) for k in range(min(n_jobs, len(names)))]
 
 
 #: An ensemble chunk part, as the workflow names it: ``results/ensemble/<name>/parts/<k>.nc``.
