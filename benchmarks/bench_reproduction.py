@@ -85,6 +85,11 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--cores", type=int, default=2)
     ap.add_argument("--json", default=str(HERE / "results" / "reproduction.json"))
+    ap.add_argument(
+        "--jobs-csv",
+        default=str(HERE / "results" / "reproduction_jobs.csv"),
+        help="per-job wall seconds (job, group, wall_s), slowest first",
+    )
     args = ap.parse_args()
     repo = HERE.parent
     with tempfile.TemporaryDirectory(prefix="pencore-repro-") as tmp:
@@ -111,16 +116,18 @@ def main() -> None:
              "--quiet", "all"],
             clone,
         )  # fmt: skip
+        jobs = job_table(clone / "results" / "benchmarks")
         out = {
             "wall_s": wall,
             "cpu_s": cpu,
             "cores": args.cores,
-            **summary(job_table(clone / "results" / "benchmarks")),
+            **summary(jobs),
             "machine_before": before,
             "machine_after": {**machine(), "commit": before["commit"]},
         }
     Path(args.json).parent.mkdir(parents=True, exist_ok=True)
     Path(args.json).write_text(json.dumps(out, indent=1) + "\n")
+    jobs.sort_values("wall_s", ascending=False).to_csv(args.jobs_csv, index=False)
     print(
         f"wall {wall:.1f} s, CPU {cpu:.1f} s, {out['n_jobs']} jobs "
         f"(wall sum {out['job_wall_sum_s']:.1f} s, cheapest {out['job_wall_min_s']:.2f} s: "

@@ -2,8 +2,8 @@
 
 Case from the core issue: projectile p2 into soil at 45 deg obliquity and 1000 m/s with
 the default (converged) numerics, on one core. Prints wall time per trajectory (median
-of repeats, after the one-off numba compilation) and for the raw run without its
-Dataset (what a search's verdict costs), right-hand-side evaluations, accepted and
+of repeats, after the one-off numba compilation), without the loads on the body
+(``loads=False``), and for the raw run without its Dataset (what a search's verdict costs), right-hand-side evaluations, accepted and
 rejected steps, and the process's peak resident memory.
 
 Run: python benchmarks/bench_trajectory.py [--repeats N]
@@ -39,6 +39,13 @@ def main() -> None:
         t = time.perf_counter()
         ds = pencore.simulate("p2", "soil", 1000.0, obliquity=45.0, prepared=pr)
         walls.append(time.perf_counter() - t)
+    # the Dataset without the loads on the body (``loads=False``): the loads evaluate the
+    # right-hand side once more at every saved state (pencore.run.loads)
+    no_loads = []
+    for _ in range(args.repeats):
+        t = time.perf_counter()
+        pencore.simulate("p2", "soil", 1000.0, obliquity=45.0, prepared=pr, loads=False)
+        no_loads.append(time.perf_counter() - t)
     # the raw run without its Dataset: what each verdict of a search (Vcr, Vci, omega_c)
     # and each attribution run costs (pencore.run.impact.run_impact, the same run to the bit)
     raw = []
@@ -52,6 +59,7 @@ def main() -> None:
         "case": "p2, soil, obliquity 45 deg, 1000 m/s, default numerics",
         "wall_s_median": statistics.median(walls),
         "wall_s_min": min(walls),
+        "no_loads_s_median": statistics.median(no_loads),
         "raw_run_s_median": statistics.median(raw),
         "raw_run_s_min": min(raw),
         "first_call_s_including_compile_or_cache_load": first,

@@ -51,6 +51,8 @@ def _json_of(script: str) -> dict:
 TABLE_ROWS = (
     ("speed", "trajectory", "one trajectory (p2, soil, 45 deg, 1000 m/s, default numerics), "
      "median", "bench_trajectory.py"),
+    ("speed", "trajectory_no_loads", "the same run without the loads on the body "
+     "(``loads=False``), median", "bench_trajectory.py"),
     ("speed", "trajectory_raw_run", "the same run without its Dataset (what each verdict "
      "of a search costs), median", "bench_trajectory.py"),
     ("speed", "first_result_warm_cache", "fresh process to its first result, after the "
@@ -113,6 +115,12 @@ def main() -> None:
         ("trajectory_best", traj["wall_s_min"] * 1e3, "ms", float("nan"),
          f"{traj['case']}; fastest of the repeats")
     )  # fmt: skip
+    if "no_loads_s_median" in traj:
+        rows.append(
+            ("trajectory_no_loads", traj["no_loads_s_median"] * 1e3, "ms", float("nan"),
+             f"{traj['case']}; the Dataset without the loads on the body (loads=False), "
+             "median")
+        )  # fmt: skip
     rows.append(
         ("trajectory_raw_run", traj["raw_run_s_median"] * 1e3, "ms", float("nan"),
          f"{traj['case']}; the same run without its Dataset (pencore.run.impact.run_impact), "
