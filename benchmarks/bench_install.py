@@ -1,0 +1,80 @@
+"""The editable install of README command 1, timed in fresh virtual environments.
+
+For each commit asked for (default HEAD): a clean clone, a fresh venv
+(``python -m venv``), and ``python -m pip install -e '.[workflow]'`` with an empty build
+cache (``PENCORE_BUILD_CACHE`` a new directory: the kernels are compiled, as on a fresh
+machine), then the same install in a second fresh venv with that build cache kept (the
+kernels copied, not compiled). pip's own download cache is left as it is (the machine's
+package registry is local; a fresh machine downloads on top). Wall seconds from start to
+exit of pip. Run several commits in one call to measure them back to back, e.g.
+``python benchmarks/bench_install.py 1704ae2 HEAD``.
+
+Writes benchmarks/results/install.csv (with the machine and its load). Run from the
+repository root, under the heavy-job lock on a shared machine.
+"""
+
+from __future__ import annotations
+
+import argparse
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import pandas as pd
+
+HERE = Path(__file__).parent
+sys.path.insert(0, str(HERE))
+from machine import machine  # noqa: E402
+
+
+def timed_install(clone: Path, venv: Path, build_cache: Path) -> float:
+    """Wall seconds of ``pip install -e '.[workflow]'`` of ``clone`` into a new ``venv``."""
+    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
+    env = {
+        "PATH": "/usr/bin:/bin",
+        "HOME": str(Path.home()),
+        "PENCORE_BUILD_CACHE": str(build_cache),
+    }
+    t0 = time.perf_counter()
+    done = subprocess.run(
+        [str(venv / "bin" / "python"), "-m", "pip", "install", "-q", "-e", ".[workflow]"],
+        cwd=clone, env=env, capture_output=True, text=True,
+    )  # fmt: skip
+    wall = time.perf_counter() - t0
+    if done.returncode != 0:
+        raise SystemExit(f"bench_install: pip exited {done.returncode}\n{done.stderr[-2000:]}")
+    return wall
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("commits", nargs="*", default=["HEAD"])
+    ap.add_argument("--csv", default=str(HERE / "results" / "install.csv"))
+    args = ap.parse_args()
+    repo = HERE.parent
+    rows = []
+    for commit in args.commits:
+        sha = subprocess.run(["git", "rev-parse", "--short", commit], cwd=repo,
+                             capture_output=True, text=True, check=True).stdout.strip()  # fmt: skip
+        with tempfile.TemporaryDirectory(prefix="pencore-install-") as tmp:
+            clone, cache = Path(tmp) / "clone", Path(tmp) / "build-cache"
+            subprocess.run(["git", "clone", "-q", str(repo), str(clone)], check=True)
+            subprocess.run(["git", "checkout", "-q", sha], cwd=clone, check=True)
+            before = machine()
+            cold = timed_install(clone, Path(tmp) / "venv1", cache)
+            warm = timed_install(clone, Path(tmp) / "venv2", cache)
+        for case, wall, note in (
+            ("fresh_editable_install", cold, "empty build cache: the kernels are compiled"),
+            ("second_editable_install", warm, "build cache of the first: the kernels are copied"),
+        ):
+            print(f"{sha} {case}: {wall:.1f} s", flush=True)
+            rows.append({"case": case, "wall_s": round(wall, 1), "note": note,
+                         **{**before, "commit": sha}})  # fmt: skip
+    Path(args.csv).parent.mkdir(parents=True, exist_ok=True)
+    pd.DataFrame(rows).to_csv(args.csv, index=False)
+
+
+if __name__ == "__main__":
+    main()
