@@ -16,6 +16,7 @@ repository root, under the heavy-job lock on a shared machine.
 from __future__ import annotations
 
 import argparse
+import os
 import subprocess
 import sys
 import tempfile
@@ -32,11 +33,9 @@ from machine import machine  # noqa: E402
 def timed_install(clone: Path, venv: Path, build_cache: Path) -> float:
     """Wall seconds of ``pip install -e '.[workflow]'`` of ``clone`` into a new ``venv``."""
     subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
-    env = {
-        "PATH": "/usr/bin:/bin",
-        "HOME": str(Path.home()),
-        "PENCORE_BUILD_CACHE": str(build_cache),
-    }
+    # this environment (pip's settings) without this venv's interpreter paths
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "VIRTUAL_ENV")}
+    env["PENCORE_BUILD_CACHE"] = str(build_cache)
     t0 = time.perf_counter()
     done = subprocess.run(
         [str(venv / "bin" / "python"), "-m", "pip", "install", "-q", "-e", ".[workflow]"],
