@@ -3,8 +3,9 @@
 Case from the core issue: projectile p2 into soil at 45 deg obliquity and 1000 m/s with
 the default (converged) numerics, on one core. Prints wall time per trajectory (median
 of repeats, after the one-off numba compilation), without the loads on the body
-(``loads=False``), and for the raw run without its Dataset (what a search's verdict costs), right-hand-side evaluations, accepted and
-rejected steps, and the process's peak resident memory.
+(``loads=False``), and for the raw run without its Dataset (what a search's verdict
+costs), right-hand-side evaluations, accepted and rejected steps, and the process's peak
+resident memory.
 
 Run: python benchmarks/bench_trajectory.py [--repeats N]
 """

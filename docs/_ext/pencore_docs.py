@@ -313,7 +313,8 @@ def timing_sentence() -> str:
     repro = speed.loc["reproduction_wall"]
     return (
         f"On {int(repro['cores'])} cores ({repro['cpu_model']}) the install compiles the kernels "
-        f"in about {duration(compile_.loc['warmup', 'cpu_s'])} of CPU and the reproduction takes "
+        f"in about {duration(compile_.loc['warmup', 'wall_s'])} "
+        f"({duration(compile_.loc['warmup', 'cpu_s'])} of CPU) and the reproduction takes "
         f"about {duration(repro['value'])} (`benchmarks/results/compile.csv`, `speed.csv`; "
         "downloading the dependencies comes on top)."
     )
