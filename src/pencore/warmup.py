@@ -60,6 +60,14 @@ PARTS = ("rhs", "jacobian")
 SECOND_PARTS = ("explicit",)
 
 
+def run_variant(kw: dict) -> None:
+    """The warm-up's run of one variant (``kw`` of :data:`VARIANTS`): p2 into soil at 30 deg
+    and 300 m/s."""
+    from pencore.run import impact
+
+    impact.simulate("p2", "soil", 300.0, obliquity=30.0, **kw)
+
+
 def part_call(part: str) -> tuple[Any, tuple]:
     """The compiled function of one of :data:`PARTS` and the arguments the part calls it
     with: of the types the integrator passes it (the values are a body above the surface:
@@ -92,10 +100,7 @@ def compile_part(part: str) -> None:
     """Compile one of :data:`PARTS` (:func:`part_call`), or run the variant of
     :data:`SECOND_PARTS`, saving what is compiled to the kernel cache."""
     if part in SECOND_PARTS:
-        from pencore.run import impact
-
-        _, kw = VARIANTS[-1]
-        impact.simulate("p2", "soil", 300.0, obliquity=30.0, **kw)
+        run_variant(VARIANTS[-1][1])
         return
     function, args = part_call(part)
     function(*args)
@@ -169,8 +174,6 @@ def warmup(verbose: bool = True) -> float:
     a cold warm-up.
     """
     start = time.perf_counter()
-    from pencore.run import impact
-
     beside = compile_parts_side_by_side(verbose)
     n = len(VARIANTS)
     for i, (label, kw) in enumerate(VARIANTS, 1):
@@ -179,7 +182,7 @@ def warmup(verbose: bool = True) -> float:
         if verbose:  # said before the variant: a compile is the long part
             print(f"pencore warmup: kernel {i} of {n} ({label}) ...", flush=True)
         t = time.perf_counter()
-        impact.simulate("p2", "soil", 300.0, obliquity=30.0, **kw)
+        run_variant(kw)
         if verbose:
             print(f"pencore warmup: kernel {i} of {n} ready in {time.perf_counter() - t:.1f} s")
     return time.perf_counter() - start

@@ -65,3 +65,21 @@ def test_ballistic_table_exit_3_when_a_cell_is_not_found(tmp_path, capsys):
     assert s["cells_not_found"]["value"] == 1
     frame = read_csv(out)
     assert frame.status[0] == "above_range" and np.isnan(frame.v_bl[0])
+
+
+def test_ballistic_table_applies_the_window_options(tmp_path, capsys):
+    # the near-surface options reach every slab and are recorded: a crater of 2 calibres
+    # lowers the ballistic limit of a 25 mm aluminium plate (the library sphere-free law)
+    def table(*extra):
+        out = tmp_path / f"bt{len(extra)}.nc"
+        argv = ["ballistic-table", "--projectile", "al_ogive_var4340", "--medium", "aluminium",
+                "--thicknesses", "0.025", "--obliquities", "0", "--tol", "2", "--out",
+                str(out), "--quiet", *extra]  # fmt: skip
+        assert main(argv) == 0
+        return xr.open_dataset(out)
+
+    plain, crater = table(), table("--crater-depth", "2")
+    assert "crater_depth_calibers" not in plain.attrs
+    assert crater.attrs["crater_depth_calibers"] == 2.0
+    v0, v2 = float(plain.v_bl[0, 0]), float(crater.v_bl[0, 0])
+    assert v2 < v0 - 2.0  # more than the search tolerance apart

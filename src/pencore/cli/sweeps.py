@@ -186,9 +186,12 @@ def run_sweep(args: argparse.Namespace) -> int:
             raise InputError(f"--thicknesses must be > 0 m, got {args.thicknesses}")
         get_target(args.medium)  # a bad name is one line before any run
         n = len(args.thicknesses) * len(args.obliquities)
+        windows = (args.crater_depth, args.free_surface_depth,
+                   getattr(args, "plastic_zone_ratio", None))  # fmt: skip
         ds = sweeps.ballistic_table(
             projectile, args.medium, args.thicknesses, args.obliquities, lo=args.lo,
             hi=args.hi, tol=args.tol, numerics=num, progress=Progress(n, args.quiet),
+            windows=None if windows == (None, None, None) else windows,
         )  # fmt: skip
         found = np.isfinite(ds["v_bl"].values)
         status = 0 if found.all() else NOT_FOUND

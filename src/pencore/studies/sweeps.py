@@ -184,15 +184,23 @@ def ballistic_table(
     scan: int | None = 5,
     numerics: Numerics | Mapping[str, Any] | None = None,
     progress: Progress = None,
+    windows: tuple[float | None, float | None, float | None] | None = None,
 ) -> xr.Dataset:
     """Ballistic limit (m/s) of a slab of ``medium`` on ``(thickness m, obliquity deg)``,
-    as :func:`pencore.studies.perforation.slabs.ballistic_limit_map` with progress."""
+    as :func:`pencore.studies.perforation.slabs.ballistic_limit_map` with progress;
+    ``windows`` (``crater_depth``, ``free_surface_depth`` in calibers,
+    ``plastic_zone_ratio``; None keeps the medium's own) are set on every slab and
+    recorded in the attributes."""
     ds = ballistic_limit_grid(projectile, medium, thicknesses, obliquities, lo=lo, hi=hi,
-                              tol=tol, scan=scan, numerics=numerics, progress=progress)  # fmt: skip
+                              tol=tol, scan=scan, numerics=numerics, progress=progress,
+                              windows=windows)  # fmt: skip
+    keys = ("crater_depth_calibers", "free_surface_depth_calibers", "plastic_zone_ratio")
+    given = dict(zip(keys, windows or (None, None, None), strict=True))
     ds.attrs = {
         "title": "pencore ballistic limit against slab thickness and obliquity",
         "projectile": str(getattr(projectile, "name", projectile)),
         "medium": medium,
+        **{k: float(v) for k, v in given.items() if v is not None},
         "search_lo_m_s": float(lo),
         "search_hi_m_s": float(hi),
         "search_tol_m_s": float(tol),

@@ -75,6 +75,8 @@ def ballistic_limit_map(
 ) -> xr.Dataset:
     """Ballistic limit (m/s) on ``(thickness m, obliquity deg)``: one search per cell."""
     windows = (crater_depth, free_surface_depth, plastic_zone_ratio)
+    if not any(windows):  # 0 = off: each medium's own, as slab_target
+        windows = None
     ds = ballistic_limit_grid(projectile, medium, thicknesses, obliquities, lo=lo, hi=hi,
                               tol=tol, scan=scan, numerics=numerics, windows=windows)  # fmt: skip
     ds.attrs = {
@@ -102,7 +104,7 @@ def ballistic_limit_grid(
     tol: float,
     scan: int | None,
     numerics: Numerics | Mapping[str, Any] | None,
-    windows: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    windows: tuple[float | None, float | None, float | None] | None = None,
     progress: Callable[[str], None] | None = None,
 ) -> xr.Dataset:
     """The ballistic-limit searches of :func:`ballistic_limit_map` on ``(thickness m,
@@ -121,9 +123,10 @@ def ballistic_limit_grid(
     scan : int or None
         Coarse scan points of each search (None: none).
     numerics : Numerics or mapping, optional
-    windows : tuple of float
-        ``crater_depth``, ``free_surface_depth`` (calibers) and ``plastic_zone_ratio`` of
-        :func:`slab_target` (0 = off).
+    windows : tuple of float or None, optional
+        ``crater_depth``, ``free_surface_depth`` (calibers) and ``plastic_zone_ratio`` set
+        on every slab (:meth:`pencore.inputs.target.Target.with_windows`: None keeps the
+        medium's own, 0 is off); None: the medium's own.
     progress : callable, optional
         Called with a text after each cell.
 
@@ -137,7 +140,9 @@ def ballistic_limit_grid(
     num = resolve_numerics(numerics)
     res = np.empty((th.size, obl.size), dtype=object)
     for i, h in enumerate(th):
-        t = slab_target(medium, h, *windows)
+        t = slab_target(medium, h)
+        if windows is not None:
+            t = t.with_windows(*windows)
         for j, o in enumerate(obl):
             r = ballistic_limit(projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan,
                                 numerics=num)  # fmt: skip
