@@ -1311,10 +1311,16 @@ REPEATED_OPTIONS = [
 
 REPEATED_OPTIONS.append([*SIM, "--velocity", "300", "--numerics", "rtol=1e-6",
                          "--numerics", "rtol=1e-7"])  # fmt: skip
+# options of a mutually exclusive group: the same refusal as any other option
+DEPTH_CURVE = ["depth-curve", "--projectile", "p2", "--target", "soil"]
+REPEATED_OPTIONS.append([*DEPTH_CURVE, "--range", "100", "200", "2", "--range", "100", "300", "3"])
+REPEATED_OPTIONS.append([*DEPTH_CURVE, "--velocities", "200", "--velocities", "300"])
 
 
 @pytest.mark.parametrize(
-    "argv", REPEATED_OPTIONS, ids=["velocity", "out", "projectile", "numerics-key"]
+    "argv",
+    REPEATED_OPTIONS,
+    ids=["velocity", "out", "projectile", "numerics-key", "group-range", "group-velocities"],
 )
 def test_cli_repeated_option_refused(argv, capsys, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)

@@ -86,12 +86,14 @@ class Parser(argparse.ArgumentParser):
     argparse would swallow, so that the command line reports it.
     """
 
-    def add_argument(self, *args: Any, **kwargs: Any) -> argparse.Action:
-        """As argparse's, but an option that stores one value refuses to be given twice
-        (``--velocity 300 --velocity 500`` would silently keep the last)."""
-        if args and str(args[0]).startswith("-") and kwargs.get("action", "store") == "store":
-            kwargs["action"] = _StoreOnce
-        return super().add_argument(*args, **kwargs)
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        """As argparse's, but an option that stores its value refuses to be given twice
+        (``--velocity 300 --velocity 500`` would silently keep the last): the ``store``
+        action is :class:`_StoreOnce` in the parser's registry, which its argument groups
+        and mutually exclusive groups share."""
+        super().__init__(*args, **kwargs)
+        self.register("action", None, _StoreOnce)
+        self.register("action", "store", _StoreOnce)
 
     def error(self, message: str) -> NoReturn:
         """Exit with status 2 and one line naming the error and ``--help``."""
