@@ -158,8 +158,9 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
     t0 = time.perf_counter()
     alpha, back = [], []
     for w in OMEGAS:
+        # (the loads on the body are not among the quantities: loads=False here and below)
         ds = simulate(q2, target, 1000.0, omega=w, start=start, prepared=p2,
-                      spin_about=s["spin_about"])  # fmt: skip
+                      spin_about=s["spin_about"], loads=False)  # fmt: skip
         alpha.append(analysis.final_deviation(ds))
         back.append(_turned_back(ds, s["reversal"]))
     wall["alpha"] = time.perf_counter() - t0
@@ -175,13 +176,15 @@ def disputed_quantities(choices: Mapping[str, Any] | None = None) -> xr.Dataset:
     wall["vcr"] = time.perf_counter() - t0
 
     t0 = time.perf_counter()
-    depth = float(simulate(q2, target, 280.0, prepared=p2).path_length)
+    depth = float(simulate(q2, target, 280.0, prepared=p2, loads=False).path_length)
     wall["depth_280"] = time.perf_counter() - t0
 
     t0 = time.perf_counter()
     ob, yw = normal_impact_angles(0.1, s["yaw_reading"])
     phi = [
-        analysis.final_deviation(simulate(q4, target, v, ob, yw, start=start, prepared=p4))
+        analysis.final_deviation(
+            simulate(q4, target, v, ob, yw, start=start, prepared=p4, loads=False)
+        )
         for v in PHI_SPEEDS
     ]
     wall["phi_p4"] = time.perf_counter() - t0

@@ -72,10 +72,18 @@ class SpinFit:
     grid: list[tuple[float, float, float, bool, bool]] = field(default_factory=list)
 
 
-def _spin(spec: dict[str, Any], target: Target, kw: dict[str, Any], w: float) -> tuple[float, bool]:
+def _spins(
+    spec: dict[str, Any], target: Target, kw: dict[str, Any], omegas: tuple[float, ...]
+) -> list[tuple[float, bool]]:
+    """alpha (deg) and the turn-back verdict of #2's body ``spec`` at 1000 m/s for each
+    initial spin (rad/s), on one prepared problem (the loads are not needed)."""
     q = build_body("p2", spec).projectile
-    ds = simulate(q, target, 1000.0, omega=w, prepared=prepare(q, target, **kw))
-    return analysis.final_deviation(ds), bool(ds.attrs["reversed"])
+    pr = prepare(q, target, **kw)
+    out = []
+    for w in omegas:
+        ds = simulate(q, target, 1000.0, omega=w, prepared=pr, loads=False)
+        out.append((analysis.final_deviation(ds), bool(ds.attrs["reversed"])))
+    return out
 
 
 def fit_spin_body(target: Target, **kw: Any) -> SpinFit:
@@ -87,10 +95,9 @@ def fit_spin_body(target: Target, **kw: Any) -> SpinFit:
         for f in FACTOR_GRID:
             spec = {"kind": "given", "lc_over_l": x, "i_transverse_factor": f}
             try:
-                a20, b20 = _spin(spec, target, kw, 20.0)
+                (a20, b20), (_, b25) = _spins(spec, target, kw, (20.0, 25.0))
             except GeometryError:  # an inertia no body of this outline can have
                 continue
-            a25, b25 = _spin(spec, target, kw, 25.0)
             grid.append((x, f, a20, b20, b25))
 
     def good(g: tuple[float, float, float, bool, bool]) -> bool:
@@ -111,8 +118,7 @@ def fit_spin_body(target: Target, **kw: Any) -> SpinFit:
         for _ in range(REFINE_STEPS):
             mid = math.sqrt(lo * hi)
             spec = {"kind": "given", "lc_over_l": best[0], "i_transverse_factor": mid}
-            m20, mb20 = _spin(spec, target, kw, 20.0)
-            _, mb25 = _spin(spec, target, kw, 25.0)
+            (m20, mb20), (_, mb25) = _spins(spec, target, kw, (20.0, 25.0))
             g = (best[0], mid, m20, mb20, mb25)
             if mb20:  # turns back at 20 inside the bracket: keep the best so far
                 break
