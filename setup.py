@@ -94,14 +94,8 @@ def compile_kernels(out: Path) -> bool:
 
     def compile_into(tmp: Path) -> float | None:
         t0 = time.perf_counter()
-        # the sources on sys.path explicitly: pip's isolated build environment rewrites
-        # the path of its interpreter at start-up, and PYTHONPATH alone did not reach it
-        run = (
-            f"import sys, runpy; sys.path.insert(0, {str(SRC)!r}); "
-            "runpy.run_module('pencore.warmup', run_name='__main__')"
-        )
         done = subprocess.run(
-            [sys.executable, "-c", run], env={**env, "PENCORE_KERNEL_BUILD": str(tmp)}
+            buildcache.warmup_command(SRC), env={**env, "PENCORE_KERNEL_BUILD": str(tmp)}
         )
         return time.perf_counter() - t0 if done.returncode == 0 else None
 

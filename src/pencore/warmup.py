@@ -116,16 +116,12 @@ def _cores() -> int:
 
 def _start_parts(parts: Sequence[str]) -> list[subprocess.Popen]:
     """``python -m pencore.warmup --part NAME`` for each part, started (not waited for)."""
-    # this process's pencore, first on the path (a build's isolated environment does not
-    # pass PYTHONPATH on to its interpreter's children)
-    here = str(Path(__file__).resolve().parent.parent)
-    code = (
-        f"import sys, runpy; sys.path.insert(0, {here!r}); "
-        "runpy.run_module('pencore.warmup', run_name='__main__')"
-    )
+    from pencore.kernels.buildcache import warmup_command
+
+    here = Path(__file__).resolve().parent.parent  # this process's pencore
     # stderr kept: the compile notice is this process's to say, once
     return [
-        subprocess.Popen([sys.executable, "-c", code, "--part", part], stderr=subprocess.PIPE)
+        subprocess.Popen(warmup_command(here, "--part", part), stderr=subprocess.PIPE)
         for part in parts
     ]
 

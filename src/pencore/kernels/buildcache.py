@@ -48,6 +48,7 @@ from pathlib import Path
 __all__ = [
     "CACHE_ENV",
     "FOLDERS",
+    "warmup_command",
     "KEEP",
     "KEY_FIELDS",
     "PARTIAL_AGE_S",
@@ -66,7 +67,8 @@ CACHE_ENV = "PENCORE_BUILD_CACHE"
 #: What the kernels fit, as the build step records it in ``BUILD.json``: all must match.
 KEY_FIELDS = ("kernel_hash", "numba", "python", "target")
 
-#: The compiled folders of a kernel build (``pencore.kernels.cache.COMPILED_FOLDERS``).
+#: The compiled folders of a kernel build (``pencore.kernels.cache.COMPILED_FOLDERS`` is
+#: this tuple: this module is the one the build step can load without numba).
 FOLDERS = ("kernels", "integrators")
 
 #: How many entries the cache keeps (the ones used last).
@@ -313,3 +315,15 @@ def provide_kernels(
     shutil.rmtree(out, ignore_errors=True)
     os.replace(tmp, out)
     return done
+
+
+def warmup_command(src: str | Path, *args: str) -> list[str]:
+    """``python -m pencore.warmup ARGS`` with the pencore package of ``src`` (the folder
+    holding ``pencore/``) first on ``sys.path``, explicitly: pip's isolated build
+    environment rewrites the path of its interpreter at start-up, and PYTHONPATH alone
+    does not reach it (the build step, and the warm-up's parts compiled side by side)."""
+    code = (
+        f"import sys, runpy; sys.path.insert(0, {str(src)!r}); "
+        "runpy.run_module('pencore.warmup', run_name='__main__')"
+    )
+    return [sys.executable, "-c", code, *args]

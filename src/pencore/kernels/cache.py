@@ -47,6 +47,7 @@ from pathlib import Path
 from typing import Any
 
 from pencore.errors import InputError
+from pencore.kernels.buildcache import FOLDERS
 
 __all__ = [
     "BUILD_ENV",
@@ -68,8 +69,9 @@ __all__ = [
     "use_kernel_cache",
 ]
 
-#: The package folders that hold compiled (numba) code; their caches go stale together.
-COMPILED_FOLDERS = ("kernels", "integrators")
+#: The package folders that hold compiled (numba) code; their caches go stale together
+#: (:data:`pencore.kernels.buildcache.FOLDERS`, which the build step reads without numba).
+COMPILED_FOLDERS = FOLDERS
 
 #: ``src/pencore`` (or ``site-packages/pencore``).
 PACKAGE = Path(__file__).resolve().parent.parent
