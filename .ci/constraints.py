@@ -13,13 +13,13 @@ followed); pencore itself is left out (it is installed from the clone).
 
 from __future__ import annotations
 
-import re
 import sys
 import tomllib
 from importlib import metadata
 from pathlib import Path
 
 from packaging.requirements import Requirement
+from packaging.utils import canonicalize_name
 
 REPO = Path(__file__).resolve().parents[1]
 HEADER = """\
@@ -35,21 +35,19 @@ HEADER = """\
 """
 
 
-def _name(text: str) -> str:
-    return re.sub(r"[-_.]+", "-", text).lower()
+def _applies(req: Requirement, extras: frozenset[str] | set[str]) -> bool:
+    """Whether ``req`` is needed here when its parent was asked for with ``extras`` (its
+    marker evaluated on this platform, once per extra; no extras: the plain install)."""
+    return req.marker is None or any(req.marker.evaluate({"extra": e}) for e in (extras or {""}))
 
 
 def tree(requirements: list[Requirement]) -> dict[str, str]:
     """name -> installed version of every distribution the requirements reach."""
     seen: dict[str, str] = {}
-    todo = [(r, frozenset(r.extras)) for r in requirements]
+    todo = [r for r in requirements if _applies(r, frozenset())]
     while todo:
-        req, extras = todo.pop()
-        if req.marker is not None and not any(
-            req.marker.evaluate({"extra": e}) for e in (extras or {""})
-        ):
-            continue
-        name = _name(req.name)
+        req = todo.pop()
+        name = canonicalize_name(req.name)
         try:
             dist = metadata.distribution(req.name)
         except metadata.PackageNotFoundError:
@@ -60,8 +58,8 @@ def tree(requirements: list[Requirement]) -> dict[str, str]:
             continue
         for text in dist.requires or []:
             sub = Requirement(text)
-            if sub.marker is None or any(sub.marker.evaluate({"extra": e}) for e in req.extras):
-                todo.append((sub, frozenset(sub.extras)))
+            if _applies(sub, req.extras):
+                todo.append(sub)
     return seen
 
 

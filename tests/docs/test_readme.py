@@ -120,3 +120,30 @@ def test_constraints_pin_the_reproduction_within_what_pyproject_allows():
         name = canonicalize_name(spec.name)
         assert name in pins, f"{name} is not pinned"
         assert spec.specifier.contains(pins[name], prereleases=True), (name, pins[name])
+
+
+def test_constraints_tree_follows_markers_and_extras():
+    """.ci/constraints.py walks the whole tree: a dependency behind an extra asked for
+    (``snakemake[reports]`` -> pygments) and one behind a platform marker that holds here
+    are pinned; every requirement that applies here of a pinned distribution is pinned too."""
+    import importlib.util
+    from importlib import metadata
+
+    from packaging.requirements import Requirement
+    from packaging.utils import canonicalize_name
+
+    spec = importlib.util.spec_from_file_location("ci_constraints", REPO / ".ci" / "constraints.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    pins = module.tree([Requirement("snakemake[reports]")])
+    assert "pygments" in pins  # Requires-Dist: pygments; extra == "reports"
+    for name in pins:
+        for text in metadata.distribution(name).requires or []:
+            sub = Requirement(text)
+            if sub.marker is not None and not sub.marker.evaluate({"extra": ""}):
+                continue
+            try:
+                metadata.distribution(sub.name)
+            except metadata.PackageNotFoundError:
+                continue
+            assert canonicalize_name(sub.name) in pins, (name, text)
