@@ -42,10 +42,12 @@ __all__ = [
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(96)
 
 
-def _check(key: str, value: float) -> float:
-    """``value`` within ``pencore.inputs.limits.LIMITS[key]``, else :class:`GeometryError`."""
+def _check(key: str, value: float, what: str = "", label: str = "") -> float:
+    """``value`` as a float within ``pencore.inputs.limits.LIMITS[key]`` (``what`` and
+    ``label`` name it in the message, as :func:`pencore.inputs.limits.number`), else
+    :class:`GeometryError`."""
     try:
-        return number(value, key)
+        return number(value, key, what, label=label)
     except InputError as exc:
         raise GeometryError(str(exc)) from None
 
@@ -447,28 +449,23 @@ class Projectile:
         """Check the given mass, centre of mass and inertias (types and ranges here; the
         bounds that need the outline in :meth:`mass_properties`, called at once)."""
         if self.mass is not None:
-            object.__setattr__(self, "mass", _given("mass", self.mass, what))
+            object.__setattr__(self, "mass", _check("mass", self.mass, what))
         if self.centre_of_mass is not None:
-            lc = _given("centre_of_mass", self.centre_of_mass, what)
+            lc = _check("centre_of_mass", self.centre_of_mass, what)
             object.__setattr__(self, "centre_of_mass", lc)
         if self.inertia is not None:
             pair = self.inertia
-            if isinstance(pair, dict):
-                raise GeometryError(
-                    f"{what}: inertia must be a pair (i_axial, i_transverse) in kg m^2, "
-                    f"got {brief(pair)}"
-                )
             try:
                 n = len(pair)
             except TypeError:
                 n = -1
-            if isinstance(pair, str) or n != 2:
+            if isinstance(pair, dict | str) or n != 2:
                 raise GeometryError(
                     f"{what}: inertia must be a pair (i_axial, i_transverse) in kg m^2, "
                     f"got {brief(pair)}"
                 )
-            ia = _given("inertia", pair[0], what, "axial moment of inertia")
-            it = _given("inertia", pair[1], what, "transverse moment of inertia")
+            ia = _check("inertia", pair[0], what, "axial moment of inertia")
+            it = _check("inertia", pair[1], what, "transverse moment of inertia")
             object.__setattr__(self, "inertia", (ia, it))
         if self.given:
             self.mass_properties()  # the bounds that need the outline, now
@@ -769,14 +766,6 @@ class Projectile:
     def nose_factor(self) -> float:
         """Nose factor N* of the frictionless DAFL axial force (see :func:`nose_factor`)."""
         return nose_factor(self.nose)
-
-
-def _given(key: str, value: float, what: str, label: str = "") -> float:
-    """A given mass property as a float in ``LIMITS[key]``, else :class:`GeometryError`."""
-    try:
-        return number(value, key, what, label=label)
-    except InputError as exc:
-        raise GeometryError(str(exc)) from None
 
 
 def nose_factor(nose: Nose) -> float:

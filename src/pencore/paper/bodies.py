@@ -65,7 +65,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from pencore.errors import InputError
-from pencore.inputs.geometry import Cylinder, MassProperties, OgiveNose, Projectile
+from pencore.inputs.geometry import Cylinder, OgiveNose, Projectile
 from pencore.inputs.library import TABLE3, TABLE3_CRH, TABLE3_NOSE_DENSITY, get_projectile
 from pencore.inputs.limits import check_keys
 
@@ -422,11 +422,3 @@ def _outline(key: str) -> Body:
         f"d {p.diameter * 1e3:.2f} mm, shank {p.shank[0].length * 1e3:.1f} mm)"
     )
     return Body(q, text, True)
-
-
-def describe(mp: MassProperties) -> str:
-    """One line: mass, Lc/L and inertias."""
-    return (
-        f"m {mp.mass:.2f} kg, Lc/L {mp.lc_over_l:.4f}, I_a {mp.i_axial:.4f}, "
-        f"I_t {mp.i_transverse:.4f} kg m^2"
-    )
