@@ -322,3 +322,17 @@ def test_the_guide_page_states_what_the_laws_compute():
     assert "deeper than the source's at every speed" in page
     for v in (500.0, 1000.0, 1500.0, 2000.0):
         assert closedform.depth(rod, computed, v) > closedform.depth(rod, source, v)
+
+
+def test_implausible_law_input_is_reported_at_the_users_line(tmp_path):
+    # through get_target (a mapping, as a YAML file gives it) the warning names the
+    # caller's file, not a line inside pencore, like every other plausibility warning
+    import warnings
+
+    from pencore.inputs.library import get_target
+
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        get_target({"name": "c", "law": "concrete", "fc": 150e6, "density": 2300.0})
+    hits = [x for x in w if issubclass(x.category, PlausibilityWarning)]
+    assert hits and all(x.filename == __file__ for x in hits), [x.filename for x in hits]

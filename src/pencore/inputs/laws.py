@@ -84,7 +84,7 @@ import numpy as np
 
 from pencore.errors import InputError, PlausibilityWarning, TargetError
 from pencore.inputs.gate import brief
-from pencore.inputs.limits import LIMITS, as_float, check_keys, number
+from pencore.inputs.limits import LIMITS, _caller_level, as_float, check_keys, number
 from pencore.inputs.target import Medium
 
 __all__ = [
@@ -140,7 +140,7 @@ def _plausible(value: float, lo: float, hi: float, name: str, unit: str, why: st
         warnings.warn(
             f"{name} = {value:g} {unit} is outside {lo:g}-{hi:g} {unit}, {why}",
             PlausibilityWarning,
-            stacklevel=3,
+            stacklevel=_caller_level(),  # the user's call, as pencore's other warnings
         )
 
 
