@@ -83,3 +83,12 @@ def test_ballistic_table_applies_the_window_options(tmp_path, capsys):
     assert crater.attrs["crater_depth_calibers"] == 2.0
     v0, v2 = float(plain.v_bl[0, 0]), float(crater.v_bl[0, 0])
     assert v2 < v0 - 2.0  # more than the search tolerance apart
+
+
+def test_ballistic_table_refuses_a_thickness_that_is_not_positive(tmp_path, capsys):
+    argv = ["ballistic-table", "--projectile", "p2", "--medium", "aluminium", "--thicknesses",
+            "0.02", "0", "--obliquities", "0", "--out", str(tmp_path / "bt.csv")]  # fmt: skip
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "thickness must be in (0, " in err[0], err
+    assert list(tmp_path.iterdir()) == []
