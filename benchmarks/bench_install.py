@@ -4,9 +4,11 @@ For each commit asked for (default HEAD): a clean clone, a fresh venv
 (``python -m venv``), and ``python -m pip install -e '.[workflow]'`` with an empty build
 cache (``PENCORE_BUILD_CACHE`` a new directory: the kernels are compiled, as on a fresh
 machine), then the same install in a second fresh venv with that build cache kept (the
-kernels copied, not compiled). pip's own download cache is left as it is (the machine's
-package registry is local; a fresh machine downloads on top). Wall seconds from start to
-exit of pip. Run several commits in one call to measure them back to back, e.g.
+kernels copied, not compiled), in the environment a fresh install sees (no PYTHONPATH,
+NUMBA_* or PENCORE_* settings of this shell). pip's own download cache is left as it is
+(the machine's package registry is local; a fresh machine downloads on top). Wall and CPU
+seconds from start to exit of pip (``bench_reproduction.timed_run``). Run several
+commits in one call to measure them back to back, e.g.
 ``python benchmarks/bench_install.py 1704ae2 HEAD``.
 
 Writes benchmarks/results/install.csv (with the machine and its load). Run from the
@@ -16,35 +18,27 @@ repository root, under the heavy-job lock on a shared machine.
 from __future__ import annotations
 
 import argparse
-import os
 import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 import pandas as pd
 
 HERE = Path(__file__).parent
 sys.path.insert(0, str(HERE))
+from bench_fresh_install import _env  # noqa: E402
+from bench_reproduction import timed_run  # noqa: E402
 from machine import machine  # noqa: E402
 
 
-def timed_install(clone: Path, venv: Path, build_cache: Path) -> float:
-    """Wall seconds of ``pip install -e '.[workflow]'`` of ``clone`` into a new ``venv``."""
+def timed_install(clone: Path, venv: Path, build_cache: Path) -> tuple[float, float]:
+    """Wall and CPU seconds of ``pip install -e '.[workflow]'`` of ``clone`` into a new
+    ``venv``, in the environment a fresh install sees (``bench_fresh_install._env``)."""
     subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
-    # this environment (pip's settings) without this venv's interpreter paths
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "VIRTUAL_ENV")}
-    env["PENCORE_BUILD_CACHE"] = str(build_cache)
-    t0 = time.perf_counter()
-    done = subprocess.run(
-        [str(venv / "bin" / "python"), "-m", "pip", "install", "-q", "-e", ".[workflow]"],
-        cwd=clone, env=env, capture_output=True, text=True,
-    )  # fmt: skip
-    wall = time.perf_counter() - t0
-    if done.returncode != 0:
-        raise SystemExit(f"bench_install: pip exited {done.returncode}\n{done.stderr[-2000:]}")
-    return wall
+    env = {**_env(), "PENCORE_BUILD_CACHE": str(build_cache)}
+    pip = [str(venv / "bin" / "python"), "-m", "pip", "install", "-q", "-e", ".[workflow]"]
+    return timed_run(pip, clone, env)
 
 
 def main() -> None:
@@ -64,13 +58,13 @@ def main() -> None:
             before = machine()
             cold = timed_install(clone, Path(tmp) / "venv1", cache)
             warm = timed_install(clone, Path(tmp) / "venv2", cache)
-        for case, wall, note in (
+        for case, (wall, cpu), note in (
             ("fresh_editable_install", cold, "empty build cache: the kernels are compiled"),
             ("second_editable_install", warm, "build cache of the first: the kernels are copied"),
         ):
-            print(f"{sha} {case}: {wall:.1f} s", flush=True)
-            rows.append({"case": case, "wall_s": round(wall, 1), "note": note,
-                         **{**before, "commit": sha}})  # fmt: skip
+            print(f"{sha} {case}: {wall:.1f} s ({cpu:.1f} s CPU)", flush=True)
+            rows.append({"case": case, "wall_s": round(wall, 1), "cpu_s": round(cpu, 1),
+                         "note": note, **{**before, "commit": sha}})  # fmt: skip
     Path(args.csv).parent.mkdir(parents=True, exist_ok=True)
     pd.DataFrame(rows).to_csv(args.csv, index=False)
 

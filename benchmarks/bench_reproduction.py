@@ -47,14 +47,16 @@ def children_cpu() -> float:
     return r.ru_utime + r.ru_stime
 
 
-def timed_run(args: list[str], cwd: Path) -> tuple[float, float]:
-    """Run ``args`` in ``cwd``; return (wall s, CPU s of it and all its descendants)."""
+def timed_run(args: list[str], cwd: Path, env: dict[str, str] | None = None) -> tuple[float, float]:
+    """Run ``args`` in ``cwd`` (with ``env``, default this process's environment); return
+    (wall s, CPU s of it and all its descendants)."""
     c0, t0 = children_cpu(), time.perf_counter()
-    done = subprocess.run(args, cwd=cwd, capture_output=True, text=True)
+    done = subprocess.run(args, cwd=cwd, env=env, capture_output=True, text=True)
     wall, cpu = time.perf_counter() - t0, children_cpu() - c0
     if done.returncode != 0:
         tail = "\n".join(done.stderr.splitlines()[-20:])
-        raise SystemExit(f"bench_reproduction: {' '.join(args)} exited {done.returncode}\n{tail}")
+        script = Path(sys.argv[0]).stem
+        raise SystemExit(f"{script}: {' '.join(args)} exited {done.returncode}\n{tail}")
     return wall, cpu
 
 
