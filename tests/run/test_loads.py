@@ -117,3 +117,25 @@ def test_cavity_model_loads_see_the_path_of_their_step():
     fb, mb, _ = model_loads(run.ys[-1], rings, bounds, coef, fric, eps, n_gauss, final)
     np.testing.assert_allclose(loads[-1, :3], fb, rtol=1e-9, atol=1e-9 * np.abs(fb).max())
     np.testing.assert_allclose(loads[-1, 3:], mb, rtol=1e-9, atol=1e-9 * np.abs(mb).max())
+
+
+def test_explicit_emulation_loads_are_those_of_its_pure_contact_step():
+    """The explicit scheme integrates the discontinuous contact step (eps = 0, whatever
+    numerics.eps says): its loads are that law's, not the smoothed law's."""
+    from pencore.kernels.forces import loads_along
+
+    pr = pencore.prepare("p2", "soil", emulation={"integrator": "explicit", "dt": 2e-5})
+    assert pr.numerics.eps > 0.0
+    run = run_impact("p2", "soil", 300.0, 30.0, prepared=pr)
+    loads = body_loads(pr, run)
+    _, _, _, rings, bounds, coef, fric, eps, n_gauss, model = pr.load_args()
+
+    def along(e):
+        from pencore.integrators.driver import reserve_path, start_path
+        from pencore.kernels.contact_points import MAX_SAMPLES_PER_STEP
+
+        m = reserve_path(start_path(model, run.ys[0]), run.ys.shape[0] * MAX_SAMPLES_PER_STEP + 1)
+        return loads_along(run.ts, run.ys, rings, bounds, coef, fric, e, n_gauss, m)
+
+    np.testing.assert_array_equal(loads, along(0.0))
+    assert not np.array_equal(loads, along(eps))  # the smoothed law is another load

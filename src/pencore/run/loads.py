@@ -52,6 +52,8 @@ def body_loads(problem: Problem, run: RunResult) -> np.ndarray:
     (True, True)
     """
     _, _, _, rings, bounds, coef, fric, eps, n_gauss, model = problem.load_args()
+    if problem.emulation.integrator == "explicit":
+        eps = 0.0  # the explicit scheme integrates the pure contact step (H(0) = 1)
     model = start_path(model, run.ys[0])
     model = reserve_path(model, run.ys.shape[0] * MAX_SAMPLES_PER_STEP + 1)
     return loads_along(run.ts, run.ys, rings, bounds, coef, fric, eps, n_gauss, model)
