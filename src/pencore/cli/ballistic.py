@@ -8,11 +8,10 @@ import argparse
 from pencore.cli.options import (
     exit_at_once_on_interrupt,
     number_type,
-    numerics_given,
     obliquity,
-    resolve,
-    with_mass,
-    with_windows,
+    run_numerics,
+    run_projectile,
+    run_target,
 )
 from pencore.cli.summary import (
     EXIT_NOTE,
@@ -25,7 +24,6 @@ from pencore.cli.summary import (
     search_fields,
     write_outputs,
 )
-from pencore.inputs.numerics import resolve_numerics
 
 __all__ = ["add_parser", "run"]
 
@@ -72,15 +70,14 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the search and print the result; errors propagate to :func:`pencore.cli.main`."""
-    from pencore.inputs.library import get_projectile, get_target
     from pencore.search.history import search_dataset
     from pencore.search.perforation import ballistic_limit
 
     exit_at_once_on_interrupt()
     check_bracket(args, " (m/s)")
     out, plot = check_outputs(args)
-    projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
-    target = with_windows(resolve("target", args.target, get_target), args)
+    projectile = run_projectile(args)
+    target = run_target(args)
     r = ballistic_limit(
         projectile,
         target,
@@ -90,7 +87,7 @@ def run(args: argparse.Namespace) -> int:
         args.hi,
         args.tol,
         scan=args.scan or None,
-        numerics=resolve_numerics(numerics_given(args.numerics)),
+        numerics=run_numerics(args),
     )
     ds = search_dataset(
         r,

@@ -17,12 +17,11 @@ from typing import Any
 from pencore.cli.options import (
     exit_at_once_on_interrupt,
     number_type,
-    numerics_given,
     obliquity,
-    resolve,
+    run_numerics,
+    run_projectile,
+    run_target,
     velocity,
-    with_mass,
-    with_windows,
 )
 from pencore.cli.summary import (
     EXIT_NOTE,
@@ -170,8 +169,6 @@ def add_parsers(sub: argparse._SubParsersAction) -> None:
 def run_search(args: argparse.Namespace) -> int:
     """Run ``vcr``, ``vci`` or ``omega-c``: summary, files, exit status."""
     from pencore.errors import InputError
-    from pencore.inputs.library import get_projectile, get_target
-    from pencore.inputs.numerics import resolve_numerics
     from pencore.search import critical
     from pencore.search.history import search_dataset
 
@@ -180,9 +177,9 @@ def run_search(args: argparse.Namespace) -> int:
     if args.scan < 0 or args.scan == 1:
         raise InputError(f"--scan must be 0 (none) or at least 2 points, got {args.scan}")
     out, plot = check_outputs(args)
-    projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
-    target = with_windows(resolve("target", args.target, get_target), args)
-    num = resolve_numerics(numerics_given(args.numerics))
+    projectile = run_projectile(args)
+    target = run_target(args)
+    num = run_numerics(args)
     scan = args.scan or None
     quantity, units, text_units, long_name = QUANTITIES[args.command]
     inputs: dict[str, Any] = {"projectile": args.projectile, "target": args.target}

@@ -44,6 +44,9 @@ __all__ = [
     "with_mass",
     "check_output",
     "resolve",
+    "run_projectile",
+    "run_target",
+    "run_numerics",
     "cli_inputs",
 ]
 
@@ -497,6 +500,30 @@ def _kind(path: Path) -> str:
     except OSError:
         return "not a directory"
     return "a regular file" if stat.S_ISREG(mode) else file_kind(mode)
+
+
+def run_projectile(args: argparse.Namespace) -> Any:
+    """The subcommand's ``--projectile`` (:func:`resolve`) with its mass options applied
+    (:func:`with_mass`)."""
+    from pencore.inputs.library import get_projectile
+
+    return with_mass(resolve("projectile", args.projectile, get_projectile), args)
+
+
+def run_target(args: argparse.Namespace) -> Any:
+    """The subcommand's ``--target`` (:func:`resolve`) with its window options applied
+    (:func:`with_windows`)."""
+    from pencore.inputs.library import get_target
+
+    return with_windows(resolve("target", args.target, get_target), args)
+
+
+def run_numerics(args: argparse.Namespace) -> Any:
+    """The subcommand's numerics: the defaults with its ``--numerics KEY=VALUE`` options
+    (:func:`numerics_given`, :func:`pencore.inputs.numerics.resolve_numerics`)."""
+    from pencore.inputs.numerics import resolve_numerics
+
+    return resolve_numerics(numerics_given(args.numerics))
 
 
 def cli_inputs(args: argparse.Namespace) -> dict[str, Any]:

@@ -16,13 +16,12 @@ from pencore.cli.options import (
     cli_inputs,
     exit_at_once_on_interrupt,
     number_type,
-    numerics_given,
     numerics_option,
     obliquity,
-    resolve,
+    run_numerics,
+    run_projectile,
+    run_target,
     velocity,
-    with_mass,
-    with_windows,
 )
 from pencore.cli.summary import (
     Field,
@@ -31,7 +30,6 @@ from pencore.cli.summary import (
     print_summary,
     write_plot,
 )
-from pencore.inputs.numerics import resolve_numerics
 
 __all__ = ["SUMMARY", "add_parser", "run"]
 
@@ -277,16 +275,15 @@ def summary_fields(ds: Any, args: argparse.Namespace) -> list[Field]:
 def run(args: argparse.Namespace) -> int:
     """Run one impact and print its summary; errors propagate to ``pencore.cli.main.main()``."""
     from pencore.errors import WriteError
-    from pencore.inputs.library import get_projectile, get_target
     from pencore.io.netcdf import write_netcdf
     from pencore.run.impact import simulate
 
     exit_at_once_on_interrupt()
     inputs = [args.projectile, args.target]
     out = check_output(args.out, inputs) if args.out is not None else None
-    projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
-    target = with_windows(resolve("target", args.target, get_target), args)
-    numerics = resolve_numerics(numerics_given(args.numerics))
+    projectile = run_projectile(args)
+    target = run_target(args)
+    numerics = run_numerics(args)
     if numerics.v_stop >= args.velocity:
         # the run would be over before its first step, with a depth of 0
         raise CommandFailure(

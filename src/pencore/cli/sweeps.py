@@ -18,12 +18,11 @@ import numpy as np
 from pencore.cli.options import (
     exit_at_once_on_interrupt,
     number_type,
-    numerics_given,
     obliquity,
-    resolve,
+    run_numerics,
+    run_projectile,
+    run_target,
     velocity,
-    with_mass,
-    with_windows,
 )
 from pencore.cli.summary import (
     NOT_FOUND,
@@ -168,14 +167,13 @@ def _velocities(args: argparse.Namespace) -> np.ndarray:
 
 def run_sweep(args: argparse.Namespace) -> int:
     """Run a sweep: table, plot, summary; exit 3 when a ballistic-table cell was not found."""
-    from pencore.inputs.library import get_projectile, get_target
-    from pencore.inputs.numerics import resolve_numerics
+    from pencore.inputs.library import get_target
     from pencore.studies import sweeps
 
     exit_at_once_on_interrupt()
     out, plot = check_outputs(args)
-    projectile = with_mass(resolve("projectile", args.projectile, get_projectile), args)
-    num = resolve_numerics(numerics_given(args.numerics))
+    projectile = run_projectile(args)
+    num = run_numerics(args)
     status = 0
     fields: list[Field]
     if args.command == "ballistic-table":
@@ -199,7 +197,7 @@ def run_sweep(args: argparse.Namespace) -> int:
             Field("v_bl_max", "highest ballistic limit", _max(ds["v_bl"].values), "m s-1"),
         ]  # fmt: skip
     else:
-        target = with_windows(resolve("target", args.target, get_target), args)
+        target = run_target(args)
         v = _velocities(args)
         progress = Progress(v.size, args.quiet)
         if args.command == "depth-curve":
