@@ -16,7 +16,6 @@ from pencore.cli.options import (
 from pencore.cli.summary import (
     EXIT_NOTE,
     NOT_FOUND,
-    Field,
     add_search_outputs,
     add_speed_bracket,
     check_bracket,
@@ -99,7 +98,6 @@ def run(args: argparse.Namespace) -> int:
         obliquity_deg=args.obliquity,
         yaw_deg=args.yaw,
     )
-    fields = search_fields(r, "v_bl", "m s-1", "m/s")
-    fields[0] = Field("v_bl", "ballistic limit", fields[0].value, "m s-1", text=fields[0].text)
+    fields = search_fields(r, "v_bl", "m s-1", "m/s", label="ballistic limit")
     write_outputs(ds, fields, out, plot, args)
     return 0 if r.converged else NOT_FOUND

@@ -404,12 +404,15 @@ def add_search_outputs(p: argparse.ArgumentParser) -> None:
     add_format_option(p)
 
 
-def search_fields(r: Any, quantity: str, units: str, text_units: str) -> list[Field]:
-    """The summary of a threshold search."""
+def search_fields(
+    r: Any, quantity: str, units: str, text_units: str, label: str | None = None
+) -> list[Field]:
+    """The summary of a threshold search (``label``: the value's label, default
+    ``quantity``)."""
     value = r.value if math.isfinite(r.value) else math.nan
     shown = f"{value:.6g} {text_units}" if math.isfinite(value) else "not found in the range"
     return [
-        Field(quantity, quantity, value, units, text=shown),
+        Field(quantity, label or quantity, value, units, text=shown),
         Field(f"{quantity}_lo", "bracket low", float(r.lo), units, in_text=False),
         Field(f"{quantity}_hi", "bracket high", float(r.hi), units, in_text=False),
         Field("bracket", "bracket", None,
