@@ -139,3 +139,35 @@ def test_explicit_emulation_loads_are_those_of_its_pure_contact_step():
 
     np.testing.assert_array_equal(loads, along(0.0))
     assert not np.array_equal(loads, along(eps))  # the smoothed law is another load
+
+
+@pytest.mark.parametrize(
+    "kw", [{}, {"shank": "factor"}, {"emulation": {"surface": "panels"}}], ids=str
+)
+def test_loads_read_from_the_integrators_derivatives_are_the_evaluated_ones(kw):
+    """A Rosenbrock run's loads come from the right-hand side each step started from,
+    solved back through Newton's and Euler's equations: the same force and moment as
+    evaluating the loads again at each saved state, to rounding. The derivative was taken
+    before the step's quaternion was normalised (a relative 1e-16 apart); through the
+    attitude that moves an element's normal velocity by about 2 u |v| (u the unit
+    roundoff), and the contact step smoothed over eps = 1e-3 m/s turns that into a
+    relative change of the element's stress up to 2 u |v| / eps: the bound, times 2."""
+    from pencore.integrators.driver import reserve_path, start_path
+    from pencore.kernels.contact_points import MAX_SAMPLES_PER_STEP
+    from pencore.kernels.forces import loads_along
+
+    pr = pencore.prepare("p2", "soil", **kw)
+    run = run_impact("p2", "soil", 800.0, 30.0, prepared=pr, omega=10.0)
+    assert run.fs is not None and run.fs.shape == run.ys.shape
+    _, _, _, rings, bounds, coef, fric, eps, n_gauss, model = pr.load_args()
+    m = reserve_path(start_path(model, run.ys[0]), run.ys.shape[0] * MAX_SAMPLES_PER_STEP + 1)
+    again = loads_along(run.ts, run.ys, rings, bounds, coef, fric, eps, n_gauss, m)
+    read = body_loads(pr, run)
+    bound = 4.0 * np.finfo(float).eps * 800.0 / pr.numerics.eps
+    for cols in (slice(0, 3), slice(3, 6)):
+        scale = np.abs(again[:, cols]).max()
+        assert scale > 0.0
+        np.testing.assert_allclose(read[:, cols], again[:, cols], rtol=0, atol=bound * scale)
+    # and a force 1 % off is not within it
+    force_scale = np.abs(again[:, 0:3]).max()
+    assert not np.allclose(read[:, 0:3], 1.01 * again[:, 0:3], rtol=0, atol=bound * force_scale)

@@ -77,6 +77,9 @@ class RunResult:
     path: np.ndarray | None = None
     #: Jacobians built (finite-difference ones also count their calls in ``n_rhs``)
     n_jacobians: int = 0
+    #: the right-hand side at each saved state as the Rosenbrock integrator evaluated it
+    #: (rows as ``ys``; :func:`pencore.run.loads.body_loads` reads the loads from it), else None
+    fs: np.ndarray | None = None
 
 
 class RunGuard:

@@ -280,11 +280,15 @@ def integrate_chunk(
 
     Returns
     -------
-    ts : (k,) times (s) of the accepted steps; ys : (k, 14) states there;
-    code : int index into ``OUTCOMES`` (``RUNNING`` when ``n_max`` steps were taken).
+    ts : (k,) times (s) of the accepted steps; ys : (k, 14) states there; fs : (k, 14)
+    the right-hand side there, as the next step starts from it (evaluated at the step's
+    new state before its quaternion is normalised and, with the cavity model, before its
+    tip path is extended); code : int index into ``OUTCOMES`` (``RUNNING`` when ``n_max``
+    steps were taken).
     """
     ts = np.empty(n_max)
     ys = np.empty((n_max, NY))
+    fs = np.empty((n_max, NY))
     jac = np.zeros((NY, NY))
     wmat = np.empty((NY, NY))
     piv = np.empty(NY, dtype=np.int64)
@@ -370,6 +374,7 @@ def integrate_chunk(
         age += 1
         ts[k] = t
         ys[k] = y
+        fs[k] = f0
         k += 1
         if si[SI_ENTERED] == 0 and clear <= 0.0:
             si[SI_ENTERED] = 1
@@ -390,7 +395,7 @@ def integrate_chunk(
     sf[SF_T] = t
     sf[SF_H] = h
     sf[SF_CLEAR] = clear
-    return ts[:k], ys[:k], code
+    return ts[:k], ys[:k], fs[:k], code
 
 
 def integrate(
@@ -455,11 +460,12 @@ def _integrate(
     analytic = num.jacobian == "analytic" and analytic_jacobian_applies(eps, n_gauss, crater)
     ts_parts = [np.zeros(1)]
     ys_parts = [y[None, :].copy()]
+    fs_parts = [f0[None, :].copy()]
     n_saved = 0
     while True:
         n_max = max(0, min(CHUNK_STEPS, max_steps - n_saved))
         model = reserve_path(model, (n_max + 1) * MAX_SAMPLES_PER_STEP)
-        ts, ys, code = integrate_chunk(
+        ts, ys, fs, code = integrate_chunk(
             y, f0, sf, si, n_max, t_max, rtol, atol, h_min, max_travel, v_stop,
             stop_at_reversal, mass, inertia, gravity, rings, bounds, coef, fric, eps,
             n_gauss, reach, thin, model, num.jacobian_age, analytic, guard.stop,
@@ -467,6 +473,7 @@ def _integrate(
         guard.check_interrupt()
         ts_parts.append(ts)
         ys_parts.append(ys)
+        fs_parts.append(fs)
         n_saved += ts.size
         if code != RUNNING:
             outcome = OUTCOMES[code]
@@ -491,6 +498,7 @@ def _integrate(
         float(sf[SF_ERR]),
         path_of(model),
         int(si[SI_N_JAC]),
+        np.concatenate(fs_parts),
     )
 
 
