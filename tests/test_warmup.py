@@ -15,6 +15,7 @@ def test_each_variant_is_announced_before_it_runs(monkeypatch, capsys):
         seen.append(capsys.readouterr().out)
 
     monkeypatch.setattr(impact, "simulate", simulate)
+    monkeypatch.setattr(impact, "run_impact", simulate)  # the search run's variant
     assert warmup.main([]) == 0
     n = len(warmup.VARIANTS)
     assert len(seen) == n

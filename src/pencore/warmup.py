@@ -23,9 +23,10 @@ for one compile (~45 s of CPU).
 
 On a cold cache with two or more cores, the two largest independent parts of the
 integrator are compiled side by side first (:data:`PARTS`: the force kernel and the
-closed-form velocity Jacobian, in two processes, each saving its compiled code to the cache),
-and the integrator's own compile then loads them from the cache: about 30 instead of 45 s
-of wall on the 2-core benchmark machine (``benchmarks/bench_compile.py``).
+closed-form velocity Jacobian, in two processes, each saving its compiled code to the
+cache); then the integrator's two specialisations (with and without the derivatives the
+loads are read from) compile side by side, loading the parts from the cache
+(:data:`SECOND_PARTS`). ``benchmarks/bench_compile.py`` measures the wall it saves.
 
 Run: ``python -m pencore.warmup [--host]`` (``setup.py``'s build step runs it, for the
 shipped kernels).
@@ -48,6 +49,8 @@ VARIANTS: tuple[tuple[str, dict], ...] = (
     ("factor shank", {"shank": "factor"}),
     ("panels", {"emulation": {"surface": "panels"}}),
     ("explicit integrator", {"emulation": {"integrator": "explicit", "dt": 2e-5}}),
+    # a search's run keeps no derivatives for loads: the integrator's other specialisation
+    ("search run", {"raw": True}),
 )
 
 
@@ -55,17 +58,22 @@ VARIANTS: tuple[tuple[str, dict], ...] = (
 #: (:func:`compile_part`): the force kernel (about 17 s of a 45-s compile on the benchmark
 #: machine) and the closed-form velocity Jacobian (about 15 s), which the integrator calls.
 PARTS = ("rhs", "jacobian")
-#: Compiled beside the integrator once :data:`PARTS` are cached: the explicit integrator's
-#: variant (about 3 s), which calls the force kernel but not the Rosenbrock integrator.
-SECOND_PARTS = ("explicit",)
+#: Compiled beside the integrator once :data:`PARTS` are cached: the last two variants,
+#: the explicit integrator (about 3 s) and the search run (the Rosenbrock integrator's
+#: specialisation without derivatives, about 10 s), which load the parts from the cache.
+SECOND_PARTS = ("beside",)
+#: How many of the last :data:`VARIANTS` the :data:`SECOND_PARTS` compile.
+BESIDE = 2
 
 
 def run_variant(kw: dict) -> None:
     """The warm-up's run of one variant (``kw`` of :data:`VARIANTS`): p2 into soil at 30 deg
-    and 300 m/s."""
+    and 300 m/s, a Dataset with its loads, or with ``raw`` a search's raw run."""
     from pencore.run import impact
 
-    impact.simulate("p2", "soil", 300.0, obliquity=30.0, **kw)
+    kw = dict(kw)
+    run = impact.run_impact if kw.pop("raw", False) else impact.simulate
+    run("p2", "soil", 300.0, obliquity=30.0, **kw)
 
 
 def part_call(part: str) -> tuple[Any, tuple]:
@@ -100,7 +108,8 @@ def compile_part(part: str) -> None:
     """Compile one of :data:`PARTS` (:func:`part_call`), or run the variant of
     :data:`SECOND_PARTS`, saving what is compiled to the kernel cache."""
     if part in SECOND_PARTS:
-        run_variant(VARIANTS[-1][1])
+        for _, kw in VARIANTS[-BESIDE:]:
+            run_variant(kw)
         return
     function, args = part_call(part)
     function(*args)
@@ -173,7 +182,7 @@ def warmup(verbose: bool = True) -> float:
     beside = compile_parts_side_by_side(verbose)
     n = len(VARIANTS)
     for i, (label, kw) in enumerate(VARIANTS, 1):
-        if i == n:  # the last variant is compiled beside the others
+        if i == n - BESIDE + 1:  # the last variants are compiled beside the others
             _finish(beside)
         if verbose:  # said before the variant: a compile is the long part
             print(f"pencore warmup: kernel {i} of {n} ({label}) ...", flush=True)

@@ -120,7 +120,7 @@ def fresh_notice(monkeypatch):
     monkeypatch.setattr(cache, "_notice_checked", set())
     ran = []
 
-    def stub(pr, y0, velocity, *, stop_at_reversal):
+    def stub(pr, y0, velocity, *, stop_at_reversal, keep_derivatives=False):
         ran.append(pr)
 
     monkeypatch.setattr(impact, "integrate", stub)
@@ -144,16 +144,18 @@ def test_each_integrator_is_looked_up_once(fresh_notice, monkeypatch, capsys):
 
 
 def test_warmup_says_it_once(fresh_notice, monkeypatch, capsys):
-    """``python -m pencore.warmup`` on a cold cache: five variants, two integrators, one
+    """``python -m pencore.warmup`` on a cold cache: every variant, two integrators, one
     notice."""
     from pencore import warmup
 
     monkeypatch.setattr(cache, "compiled_in_cache", lambda d: False)
+    monkeypatch.setattr(warmup, "_cores", lambda: 1)  # the variants in this process
 
     def simulate(projectile, target, velocity, obliquity=0.0, **kw):
         _run_variants([kw])
 
     monkeypatch.setattr(impact, "simulate", simulate)
+    monkeypatch.setattr(impact, "run_impact", simulate)  # the search run's variant
     assert warmup.main([]) == 0
     err = capsys.readouterr().err
     assert err.count(COMPILE_NOTICE) == 1

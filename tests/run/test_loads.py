@@ -152,13 +152,22 @@ def test_loads_read_from_the_integrators_derivatives_are_the_evaluated_ones(kw):
     attitude that moves an element's normal velocity by about 2 u |v| (u the unit
     roundoff), and the contact step smoothed over eps = 1e-3 m/s turns that into a
     relative change of the element's stress up to 2 u |v| / eps: the bound, times 2."""
+    import math
+
     from pencore.integrators.driver import reserve_path, start_path
+    from pencore.integrators.rosenbrock import integrate
     from pencore.kernels.contact_points import MAX_SAMPLES_PER_STEP
     from pencore.kernels.forces import loads_along
+    from pencore.run.initial import initial_state
 
     pr = pencore.prepare("p2", "soil", **kw)
-    run = run_impact("p2", "soil", 800.0, 30.0, prepared=pr, omega=10.0)
+    y0 = initial_state(pr.projectile, pr.rings, 800.0, math.radians(30.0), 0.0, 10.0, None)
+    run = integrate(pr, y0, 800.0, keep_derivatives=True)
     assert run.fs is not None and run.fs.shape == run.ys.shape
+    # the same run, bit for bit, as the one without the derivatives a search takes
+    bare = integrate(pr, y0, 800.0)
+    assert bare.fs is None
+    np.testing.assert_array_equal(bare.ys, run.ys)
     _, _, _, rings, bounds, coef, fric, eps, n_gauss, model = pr.load_args()
     m = reserve_path(start_path(model, run.ys[0]), run.ys.shape[0] * MAX_SAMPLES_PER_STEP + 1)
     again = loads_along(run.ts, run.ys, rings, bounds, coef, fric, eps, n_gauss, m)

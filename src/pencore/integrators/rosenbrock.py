@@ -252,6 +252,7 @@ def integrate_chunk(
     jacobian_age=1,
     analytic=False,
     stop=None,
+    fs=None,
 ):
     """Advance a trajectory by at most ``n_max`` accepted steps.
 
@@ -278,17 +279,19 @@ def integrate_chunk(
     :class:`pencore.integrators.driver.RunGuard`) the chunk ends at once with ``RUNNING``
     and the step in progress is dropped.
 
+    ``fs`` (None, or an (n_max, 14) array): row ``i`` receives the right-hand side at the
+    ``i``-th accepted state, as the next step starts from it (evaluated at the step's new
+    state before its quaternion is normalised and, with the cavity model, before its tip
+    path is extended). None is a specialisation of its own, compiled without the stores:
+    a search's runs go as fast as before there was a buffer.
+
     Returns
     -------
-    ts : (k,) times (s) of the accepted steps; ys : (k, 14) states there; fs : (k, 14)
-    the right-hand side there, as the next step starts from it (evaluated at the step's
-    new state before its quaternion is normalised and, with the cavity model, before its
-    tip path is extended); code : int index into ``OUTCOMES`` (``RUNNING`` when ``n_max``
-    steps were taken).
+    ts : (k,) times (s) of the accepted steps; ys : (k, 14) states there;
+    code : int index into ``OUTCOMES`` (``RUNNING`` when ``n_max`` steps were taken).
     """
     ts = np.empty(n_max)
     ys = np.empty((n_max, NY))
-    fs = np.empty((n_max, NY))
     jac = np.zeros((NY, NY))
     wmat = np.empty((NY, NY))
     piv = np.empty(NY, dtype=np.int64)
@@ -374,7 +377,8 @@ def integrate_chunk(
         age += 1
         ts[k] = t
         ys[k] = y
-        fs[k] = f0
+        if fs is not None:
+            fs[k] = f0
         k += 1
         if si[SI_ENTERED] == 0 and clear <= 0.0:
             si[SI_ENTERED] = 1
@@ -395,11 +399,16 @@ def integrate_chunk(
     sf[SF_T] = t
     sf[SF_H] = h
     sf[SF_CLEAR] = clear
-    return ts[:k], ys[:k], fs[:k], code
+    return ts[:k], ys[:k], code
 
 
 def integrate(
-    problem: Problem, y0: np.ndarray, velocity: float, *, stop_at_reversal: bool = False
+    problem: Problem,
+    y0: np.ndarray,
+    velocity: float,
+    *,
+    stop_at_reversal: bool = False,
+    keep_derivatives: bool = False,
 ) -> RunResult:
     """Integrate one trajectory from state ``y0`` (SI units) with the Rosenbrock pair.
 
@@ -425,6 +434,10 @@ def integrate(
     derivatives, used where :func:`pencore.kernels.jacobian.analytic_jacobian_applies`)
     or ``"finite_difference"``.
 
+    With ``keep_derivatives`` the run keeps the right-hand side at each saved state
+    (``RunResult.fs``, from which :func:`pencore.run.loads.body_loads` reads the loads);
+    a search's runs do without.
+
     Returns
     -------
     RunResult
@@ -432,11 +445,16 @@ def integrate(
         or ``wall_limit``.
     """
     with RunGuard(problem.numerics.max_wall) as guard:
-        return _integrate(problem, y0, velocity, stop_at_reversal, guard)
+        return _integrate(problem, y0, velocity, stop_at_reversal, guard, keep_derivatives)
 
 
 def _integrate(
-    problem: Problem, y0: np.ndarray, velocity: float, stop_at_reversal: bool, guard: RunGuard
+    problem: Problem,
+    y0: np.ndarray,
+    velocity: float,
+    stop_at_reversal: bool,
+    guard: RunGuard,
+    keep: bool,
 ) -> RunResult:
     """The body of :func:`integrate`, under ``guard``."""
     num = problem.numerics
@@ -465,15 +483,17 @@ def _integrate(
     while True:
         n_max = max(0, min(CHUNK_STEPS, max_steps - n_saved))
         model = reserve_path(model, (n_max + 1) * MAX_SAMPLES_PER_STEP)
-        ts, ys, fs, code = integrate_chunk(
+        fs = np.empty((n_max, NY)) if keep else None
+        ts, ys, code = integrate_chunk(
             y, f0, sf, si, n_max, t_max, rtol, atol, h_min, max_travel, v_stop,
             stop_at_reversal, mass, inertia, gravity, rings, bounds, coef, fric, eps,
-            n_gauss, reach, thin, model, num.jacobian_age, analytic, guard.stop,
+            n_gauss, reach, thin, model, num.jacobian_age, analytic, guard.stop, fs,
         )  # fmt: skip
         guard.check_interrupt()
         ts_parts.append(ts)
         ys_parts.append(ys)
-        fs_parts.append(fs)
+        if fs is not None:
+            fs_parts.append(fs[: ts.size])
         n_saved += ts.size
         if code != RUNNING:
             outcome = OUTCOMES[code]
@@ -498,7 +518,7 @@ def _integrate(
         float(sf[SF_ERR]),
         path_of(model),
         int(si[SI_N_JAC]),
-        np.concatenate(fs_parts),
+        np.concatenate(fs_parts) if keep else None,
     )
 
 

@@ -262,7 +262,7 @@ def simulate(
     >>> print(f"{ds.attrs['peak_deceleration_g']:.0f} g")
     13754 g
     """
-    pr, run, wall, (velocity, obliquity, yaw, omega, azimuth, start) = _impact(locals())
+    pr, run, wall, (velocity, obliquity, yaw, omega, azimuth, start) = _impact(locals(), loads)
     ds = trajectory_dataset(
         pr.projectile,
         pr.target,
@@ -314,11 +314,12 @@ def run_impact(*args: Any, **kwargs: Any) -> RunResult:
     return _impact(arguments.arguments)[1]
 
 
-def _impact(a: Mapping[str, Any]) -> tuple[Problem, RunResult, float, tuple]:
+def _impact(a: Mapping[str, Any], loads: bool = False) -> tuple[Problem, RunResult, float, tuple]:
     """Check the inputs, prepare, integrate; ``(prepared, run, wall s, checked inputs)``.
 
     ``a`` maps each parameter of :func:`simulate` to its value (``overrides``: the dict
-    of numerics overrides), every one present."""
+    of numerics overrides), every one present; ``loads``: the run keeps what the loads
+    are read from."""
     check_keywords(a["overrides"], _SIMULATE.parameters, "simulate")
     stop_at_reversal, prepared = a["stop_at_reversal"], a["prepared"]
     shank, emulation, spin_about = a["shank"], a["emulation"], a["spin_about"]
@@ -353,7 +354,7 @@ def _impact(a: Mapping[str, Any]) -> tuple[Problem, RunResult, float, tuple]:
     if start is not None:
         _check_reaches_target(y0, max(body_reach(pr.rings), pr.lc), num)
     t0 = time.perf_counter()
-    run = _run(pr, y0, velocity, stop_at_reversal)
+    run = _run(pr, y0, velocity, stop_at_reversal, loads)
     wall = time.perf_counter() - t0
     _raise_on_failure(run, pr)
     return pr, run, wall, (velocity, obliquity, yaw, omega, azimuth, start)
@@ -416,14 +417,19 @@ def _record_model(ds: xr.Dataset, pr: Problem, spin_about: str) -> xr.Dataset:
     return ds
 
 
-def _run(pr: Problem, y0: np.ndarray, velocity: float, stop_at_reversal: bool) -> RunResult:
+def _run(
+    pr: Problem, y0: np.ndarray, velocity: float, stop_at_reversal: bool, loads: bool = False
+) -> RunResult:
     """Integrate with the selected integrator: the explicit scheme of the paper
-    emulation, the compiled Rosenbrock pair, or scipy's reference (SI units)."""
+    emulation, the compiled Rosenbrock pair (keeping its derivatives when the loads are
+    wanted), or scipy's reference (SI units)."""
     if pr.emulation.integrator == "explicit":
         from pencore.integrators.explicit import explicit_chunk as compiled
         from pencore.integrators.explicit import integrate_explicit as integrator
     elif pr.numerics.method == "rosenbrock":
-        integrator, compiled = integrate, integrate_chunk
+        _compile_notice(integrate_chunk)
+        return integrate(pr, y0, velocity, stop_at_reversal=stop_at_reversal,
+                         keep_derivatives=loads)  # fmt: skip
     else:
         from pencore.integrators.scipy_ivp import integrate_scipy as integrator
 
