@@ -5,8 +5,12 @@
 #   measurements  pencore against published measurements (shipped data files with sources)
 # Each study's rule gets its own config slice through params, so editing one study's
 # entry reruns only that study (rerun trigger `params`).
+import io
+
+import pandas as pd
+
 from pencore.errors import InputError
-from pencore.paper.tables import read_csv
+from pencore.workflowconfig.config_check import table_text
 
 VALIDATION = config["validation"]
 
@@ -14,12 +18,15 @@ VALIDATION = config["validation"]
 # missing, empty or unreadable file is one line (pencore's file gate), not a traceback.
 try:
     validate(
-        read_csv(VALIDATION["table2"]["csv"], "validation.table2.csv", comment="#"),
+        pd.read_csv(
+            io.StringIO(table_text(VALIDATION["table2"]["csv"], "validation.table2.csv")),
+            comment="#",
+        ),
         "../schemas/table2.schema.yaml",
     )
     for shot_table in VALIDATION["fig5"]["shots"]:
         validate(
-            read_csv(shot_table, "validation.fig5.shots", comment="#"),
+            pd.read_csv(io.StringIO(table_text(shot_table, "validation.fig5.shots")), comment="#"),
             "../schemas/shot_table.schema.yaml",
         )
 except InputError as exc:

@@ -46,7 +46,7 @@ from pathlib import Path
 from typing import Any
 
 from pencore.errors import ConfigError, InputError
-from pencore.inputs.gate import brief, load_yaml_text, read_yaml
+from pencore.inputs.gate import brief, load_yaml_text, read_text, read_yaml
 from pencore.inputs.limits import LIMITS, Limit, as_float, number, one_line_warnings, plausible
 from pencore.inputs.numerics import NUMERIC_FIELDS, resolve_numerics
 from pencore.paper.choices import check_settings
@@ -64,6 +64,7 @@ __all__ = [
     "KeyRule",
     "check_config",
     "one_line_warnings",
+    "table_text",
     "key_rule",
     "schema_error_message",
 ]
@@ -396,6 +397,20 @@ def check_config(config: Mapping[str, Any], root: str | Path = ".") -> None:
                     number(perforation[key], LIMITED_KEYS[f"perforation.{key}"])
                 except InputError as exc:
                     _fail(f"perforation.{key}", str(exc))
+
+
+def table_text(path: str | Path, what: str) -> str:
+    """The text of a data table (CSV with ``#`` comments) the workflow checks at parse
+    time, through the input gate (:func:`pencore.inputs.gate.read_text`), without the
+    data stack: a missing, empty, comments-only, Latin-1 or binary file is one
+    :class:`~pencore.InputError` line naming it (pandas would raise its own traceback)."""
+    name = f"{what} file {str(path)!r}"
+    text = read_text(path, name, "CSV")
+    if "\x00" in text:
+        raise InputError(f"{name} is a binary file, not a CSV text file")
+    if not any(ln.strip() and not ln.lstrip().startswith("#") for ln in text.splitlines()):
+        raise InputError(f"{name} holds no table (it is empty or only comments)")
+    return text
 
 
 def read_config(
