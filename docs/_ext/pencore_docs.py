@@ -306,17 +306,29 @@ def duration(seconds: float) -> str:
     return f"{seconds / 3600:.2g} h"
 
 
+def fresh_installs() -> pd.DataFrame:
+    """The fresh editable installs of ``install.csv`` on the newest commit measured, one
+    row per installer (``pip``, ``uv``)."""
+    install = pd.read_csv(BENCH / "install.csv")
+    newest = install["commit"].iloc[-1]
+    fresh = install[(install["case"] == "fresh_editable_install") & (install["commit"] == newest)]
+    return fresh.set_index("installer")
+
+
 def timing_sentence() -> str:
     """The README's line on how long its first command takes, from the benchmarks."""
     speed = pd.read_csv(BENCH / "speed.csv").set_index("figure")
     compile_ = pd.read_csv(BENCH / "compile.csv").set_index("case")
+    fresh = fresh_installs()
     repro = speed.loc["reproduction_wall"]
     return (
-        f"On {int(repro['cores'])} cores ({repro['cpu_model']}) the install compiles the kernels "
-        f"in about {duration(compile_.loc['warmup', 'wall_s'])} "
-        f"({duration(compile_.loc['warmup', 'cpu_s'])} of CPU) and the reproduction takes "
-        f"about {duration(repro['value'])} (`benchmarks/results/compile.csv`, `speed.csv`; "
-        "downloading the dependencies comes on top)."
+        f"On {int(repro['cores'])} cores ({repro['cpu_model']}) the install takes about "
+        f"{duration(fresh.loc['uv', 'wall_s'])} with uv "
+        f"({duration(fresh.loc['pip', 'wall_s'])} with pip), most of it the kernel compile "
+        f"(about {duration(compile_.loc['warmup', 'wall_s'])}, "
+        f"{duration(compile_.loc['warmup', 'cpu_s'])} of CPU), and the reproduction takes "
+        f"about {duration(repro['value'])} (`benchmarks/results/install.csv`, `compile.csv`, "
+        "`speed.csv`; downloading the dependencies comes on top)."
     )
 
 
@@ -354,6 +366,8 @@ def numbers() -> dict[str, str]:
     out["warmup_s"] = _fmt(compile_["warmup"], 2)
     out["reproduction_wall"] = duration(speed["reproduction_wall"])
     out["warmup_cpu"] = duration(compile_["warmup"])
+    fresh = fresh_installs()["wall_s"]
+    out["install_uv"], out["install_pip"] = duration(fresh["uv"]), duration(fresh["pip"])
     out["comparison_counts"] = comparison_counts()
     out.update(concrete_numbers())
     from pencore.inputs import gate

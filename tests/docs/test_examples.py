@@ -10,8 +10,9 @@ Commands: ``pencore ...`` runs in a fresh directory holding the files the page s
 ``python -m snakemake ...`` runs as a dry run (``-n``) in the repository, so its targets,
 rules, profile and configuration files are checked without the hours of a reproduction
 (the workflow's end-to-end tests run it, and build the report, on the small test
-configuration); ``python -m pip install ...`` names extras that exist (it is not run: it
-would change the environment under test; CI's install step and ``.ci/wheel.sh`` install);
+configuration); ``python -m pip install ...`` and ``python -m uv pip install ...`` name
+extras that exist, or install uv itself (not run: it would change the environment under
+test; CI's install step and ``.ci/wheel.sh`` install);
 ``python -m pytest -q`` is the suite this test belongs to. Any other command fails here
 until it is given a way to run.
 """
@@ -77,7 +78,13 @@ def test_every_block_is_labelled():
 
 
 def test_every_command_has_a_way_to_run():
-    known = ("pencore ", "python -m snakemake", "python -m pip install ", "python -m pytest")
+    known = (
+        "pencore ",
+        "python -m snakemake",
+        "python -m pip install ",
+        "python -m uv pip install ",
+        "python -m pytest",
+    )
     cmds = [c for b in _blocks("bash") for c in ex.commands(b)]
     assert cmds
     assert [c for c in cmds if not c.startswith(known)] == []
@@ -140,16 +147,22 @@ def test_snakemake_command_dry_runs(page, command):
     assert done.returncode == 0, done.stderr[-2000:]
 
 
-@pytest.mark.parametrize(("page", "command"), _commands("python -m pip install "))
+@pytest.mark.parametrize(
+    ("page", "command"),
+    _commands("python -m pip install ") + _commands("python -m uv pip install "),
+)
 def test_pip_install_names_extras_that_exist(page, command):
     project = tomllib.loads((REPO / "pyproject.toml").read_text())["project"]
     argv = shlex.split(command)
+    if argv == ["python", "-m", "pip", "install", "uv"]:
+        return  # the installer the README's commands use
     assert "-e" in argv, f"{command!r}: expected an editable install of '.'"
     spec = argv[argv.index("-e") + 1]
     m = re.fullmatch(r"\.(?:\[([\w,-]+)\])?", spec)
     assert m, f"{command!r}: expected an editable install of '.'"
-    if "-c" in argv:  # a constraints file the clone holds
-        assert (REPO / argv[argv.index("-c") + 1]).is_file(), command
+    for option in ("-c", "--build-constraint"):  # a constraints file the clone holds
+        if option in argv:
+            assert (REPO / argv[argv.index(option) + 1]).is_file(), command
     for extra in (m.group(1) or "").split(",") if m.group(1) else []:
         assert extra in project["optional-dependencies"], f"{command!r}: no extra {extra}"
 

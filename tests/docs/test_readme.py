@@ -19,11 +19,17 @@ def test_opens_with_exactly_the_two_setup_commands():
     assert first[0] == "bash"
     commands = first[1:]
     assert len(commands) == 2
-    # the reproduction installs the pinned versions the archive was made with
-    assert commands[0].startswith("python -m pip install -e '.[workflow]' -c constraints.txt")
+    # both install uv first and then install with it
+    uv = "python -m pip install uv && python -m uv pip install -e "
+    assert all(c.startswith(uv) for c in commands)
+    # the reproduction installs the pinned versions the archive was made with, and builds
+    # the kernels with them (the build's numba is the one the kernels must fit)
+    assert commands[0].startswith(
+        f"{uv}'.[workflow]' -c constraints.txt --build-constraint constraints.txt &&"
+    )
     assert "snakemake --cores 2" in commands[0]
     # the tests resolve the newest versions pyproject.toml allows, as CI does
-    assert commands[1].startswith("python -m pip install -e '.[test]' &&")
+    assert commands[1].startswith(f"{uv}'.[test]' &&")
     assert "constraints" not in commands[1]
     assert commands[1].endswith("python -m pytest -q -n 2")
     # CI runs the very test command a user runs, in a fresh virtual environment with a
@@ -32,7 +38,7 @@ def test_opens_with_exactly_the_two_setup_commands():
     ci = (Path(__file__).parents[2] / ".ci" / "run").read_text()
     assert test_command in ci.splitlines()
     assert "python -m venv" in ci and "-c constraints.txt" not in ci
-    install = [ln for ln in ci.splitlines() if "pip install" in ln and "-e '." in ln]
+    install = [ln for ln in ci.splitlines() if "uv pip install" in ln and "-e '." in ln]
     assert install and all("-c " not in ln for ln in install)
     venv = ci.index("python -m venv")
     assert venv < ci.index(install[0]) and venv < ci.index(test_command)
