@@ -92,10 +92,16 @@ def main() -> None:
         default=str(HERE / "results" / "reproduction_jobs.csv"),
         help="per-job wall seconds (job, group, wall_s), slowest first",
     )
+    ap.add_argument(
+        "--keep",
+        metavar="DIR",
+        help="clone into DIR (new) and keep it, to compare its results with the archive "
+        "(python .ci/compare_results.py)",
+    )
     args = ap.parse_args()
     repo = HERE.parent
     with tempfile.TemporaryDirectory(prefix="pencore-repro-") as tmp:
-        clone = Path(tmp) / "clone"
+        clone = Path(args.keep) if args.keep else Path(tmp) / "clone"
         subprocess.run(["git", "clone", "-q", str(repo), str(clone)], check=True)
         # the clone's own sources, kernel cache and install step (as README command 1)
         env_src = str(clone / "src")

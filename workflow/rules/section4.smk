@@ -1,8 +1,10 @@
 # Section 4 studies of the paper (Figs 7-18) and the comparison table, one set of rules
 # for every record of pencore.workflowconfig.registry.STUDIES:
 #   s4_study             a study that runs as one job: its dataset results/<folder>/<name>.nc
-#   s4_part              a study split into independent jobs (both cores busy), per
-#                        projectile or per (projectile, obliquity): results/<folder>/parts/
+#   s4_part_<study>_<k>  a study split into parts, per projectile or per (projectile,
+#                        obliquity), dealt in turn into `section4.part_jobs` jobs (both cores
+#                        busy; a part's runs take a few seconds, a job's start about one):
+#                        results/<folder>/parts/<part>.nc
 #   s4_gather            joins a split study's parts into its dataset
 #   s4_<study>_figure    PNG + PDF from the dataset (restyling does not rerun the solver),
 #                        captioned by workflow/report/section4_<study>.rst
@@ -37,24 +39,30 @@ rule s4_study:
         "../scripts/section4_study.py"
 
 
-rule s4_part:
-    output:
-        nc="results/{study}/parts/{part}.nc",
-    log:
-        "results/logs/section4/{study}_part_{part}.log",
-    benchmark:
-        "results/benchmarks/section4/{study}_part_{part}.tsv"
-    wildcard_constraints:
-        study=s4_alternatives(folder for folder, _ in S4_SPLIT),
-        part=r"p[0-9]+(?:_[-0-9.]+)?",
-    conda:
-        "../envs/pencore.yaml"
-    params:
-        kind=s4_study_of,
-        config=lambda wc: s4_params(s4_study_of(wc)),
-        code=PHYSICS_CODE,
-    script:
-        "../scripts/section4_study.py"
+for _kind, _study in STUDIES.items():
+    if not _study.split_by:
+        continue
+    _folder = s4_folder_and_name(_study.dataset)[0]
+    for _k, _job in enumerate(s4_part_jobs(_kind)):
+
+        rule:
+            name:
+                f"s4_part_{_kind}_{_k}"
+            output:
+                nc=[f"{_study.parts_dir}/{name}.nc" for name, _ in _job],
+            log:
+                f"results/logs/section4/{_folder}_part_job{_k}.log",
+            benchmark:
+                f"results/benchmarks/section4/{_folder}_part_job{_k}.tsv"
+            conda:
+                "../envs/pencore.yaml"
+            params:
+                kind=_kind,
+                parts=canonical([part for _, part in _job]),
+                config=s4_params(_kind),
+                code=PHYSICS_CODE,
+            script:
+                "../scripts/section4_study.py"
 
 
 rule s4_gather:

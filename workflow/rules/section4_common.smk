@@ -3,13 +3,12 @@
 # from its record in pencore.workflowconfig.registry.
 import re
 
-from pencore.workflowconfig.parts import parts_of
+from pencore.workflowconfig.parts import parts_of, round_robin
 from pencore.workflowconfig.registry import STUDIES
 
 S4 = config["section4"]
-# dataset -> study, and the folder of a split study's parts -> study
+# dataset -> study
 S4_BY_DATASET = {s.dataset: s.id for s in STUDIES.values()}
-S4_BY_PARTS_DIR = {s.parts_dir: s.id for s in STUDIES.values() if s.split_by}
 
 
 def s4_alternatives(items):
@@ -29,9 +28,7 @@ S4_SPLIT = [s4_folder_and_name(s.dataset) for s in STUDIES.values() if s.split_b
 
 
 def s4_study_of(wildcards):
-    """The study whose dataset (or part) the job makes."""
-    if "part" in wildcards.keys():
-        return S4_BY_PARTS_DIR[f"results/{wildcards.study}/parts"]
+    """The study whose dataset the job makes."""
     return S4_BY_DATASET[f"results/{wildcards.study}/{wildcards.name}.nc"]
 
 
@@ -54,3 +51,11 @@ def s4_part_name(part):
 def s4_parts(study):
     record = STUDIES[study]
     return [f"{record.parts_dir}/{s4_part_name(p)}.nc" for p in parts_of(study, S4[record.entry])]
+
+
+def s4_part_jobs(study):
+    """The parts of a split study dealt in turn into `section4.part_jobs` jobs:
+    one list of (part name, part) per job."""
+    parts = parts_of(study, S4[STUDIES[study].entry])
+    by_name = {s4_part_name(p): p for p in parts}
+    return [[(n, by_name[n]) for n in job] for job in round_robin(list(by_name), S4["part_jobs"])]
