@@ -22,87 +22,75 @@ Each ``plot_*`` function takes the study's dataset and returns a
 (format from the suffix).
 :data:`PLOTS` maps the workflow's figure kinds to the functions: the Section 4 studies'
 from their records (:mod:`pencore.workflowconfig.registry`), the other figures listed here.
+``__all__`` lists the public names, imported from their modules on first use: a job that
+renders a table (``tables``, pandas only) does not import matplotlib.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Mapping
+from typing import TYPE_CHECKING
 
-from matplotlib.figure import Figure
-
-from pencore.plotting.attribution import plot_attribution
-from pencore.plotting.critical import plot_fig8, plot_fig12, plot_fig15, plot_fig18
-from pencore.plotting.depth import plot_fig5, plot_table2, plot_verification
-from pencore.plotting.ensemble import plot_ensemble
-from pencore.plotting.perforation import (
-    plot_ballistic_limit,
-    plot_ballistic_map,
-    plot_measurements,
-    plot_residual_velocity,
-)
-from pencore.plotting.run import plot_run
-from pencore.plotting.search import plot_search
-from pencore.plotting.style import STYLE, new_figure, save_figure, styled
-from pencore.plotting.trajectories import (
-    plot_fig7,
-    plot_fig11,
-    plot_fig13,
-    plot_fig16,
-    plot_start_height,
-)
-from pencore.plotting.turning import plot_fig9
+from pencore._lazy import attach
 from pencore.workflowconfig import registry
 
-__all__ = [
-    "STYLE",
-    "styled",
-    "new_figure",
-    "save_figure",
-    "plot_table2",
-    "plot_fig5",
-    "plot_verification",
-    "plot_fig7",
-    "plot_fig8",
-    "plot_fig9",
-    "plot_fig11",
-    "plot_fig12",
-    "plot_fig13",
-    "plot_fig15",
-    "plot_fig16",
-    "plot_start_height",
-    "plot_fig18",
-    "plot_ballistic_limit",
-    "plot_ballistic_map",
-    "plot_residual_velocity",
-    "plot_measurements",
-    "plot_attribution",
-    "plot_ensemble",
-    "plot_run",
-    "plot_search",
-    "PLOTS",
-]
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
-#: The figures outside the Section 4 studies (their rules are written out in ``workflow/rules``).
-_OTHER_PLOTS: dict[str, Callable[..., Figure]] = {
-    "table2": plot_table2,
-    "fig5": plot_fig5,
-    "verification": plot_verification,
-    "ballistic_limit": plot_ballistic_limit,
-    "residual_velocity": plot_residual_velocity,
-    "measurements": plot_measurements,
-    "attribution": plot_attribution,
-    "ensemble": plot_ensemble,
+__getattr__, __dir__, __all__ = attach(
+    __name__,
+    {
+        "STYLE": "style",
+        "styled": "style",
+        "new_figure": "style",
+        "save_figure": "style",
+        "plot_table2": "depth",
+        "plot_fig5": "depth",
+        "plot_verification": "depth",
+        "plot_fig7": "trajectories",
+        "plot_fig8": "critical",
+        "plot_fig9": "turning",
+        "plot_fig11": "trajectories",
+        "plot_fig12": "critical",
+        "plot_fig13": "trajectories",
+        "plot_fig15": "critical",
+        "plot_fig16": "trajectories",
+        "plot_start_height": "trajectories",
+        "plot_fig18": "critical",
+        "plot_ballistic_limit": "perforation",
+        "plot_ballistic_map": "perforation",
+        "plot_residual_velocity": "perforation",
+        "plot_measurements": "perforation",
+        "plot_attribution": "attribution",
+        "plot_ensemble": "ensemble",
+        "plot_run": "run",
+        "plot_search": "search",
+    },
+    defined=("PLOTS",),
+)
+del attach
+
+#: The figures outside the Section 4 studies (their rules are written out in
+#: ``workflow/rules``): figure kind -> the name of its plotting function here.
+_OTHER_PLOTS: dict[str, str] = {
+    "table2": "plot_table2",
+    "fig5": "plot_fig5",
+    "verification": "plot_verification",
+    "ballistic_limit": "plot_ballistic_limit",
+    "residual_velocity": "plot_residual_velocity",
+    "measurements": "plot_measurements",
+    "attribution": "plot_attribution",
+    "ensemble": "plot_ensemble",
 }
 
 
-class _PlotTable(Mapping[str, Callable[..., Figure]]):
+class _PlotTable(Mapping[str, "Callable[..., Figure]"]):
     """Figure kind -> plotting function: the other figures, then each study of
-    :data:`pencore.workflowconfig.registry.STUDIES` (its ``plot``), read when asked."""
+    :data:`pencore.workflowconfig.registry.STUDIES` (its ``plot``), imported when asked."""
 
     def __getitem__(self, kind: str) -> Callable[..., Figure]:
-        if kind in _OTHER_PLOTS:
-            return _OTHER_PLOTS[kind]
-        return registry.resolve(registry.STUDIES[kind].plot, __name__)
+        ref = _OTHER_PLOTS[kind] if kind in _OTHER_PLOTS else registry.STUDIES[kind].plot
+        return registry.resolve(ref, __name__)
 
     def __iter__(self) -> Iterator[str]:
         yield from _OTHER_PLOTS
