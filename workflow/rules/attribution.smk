@@ -22,6 +22,8 @@ for _k, _names in enumerate(ATTRIBUTION_JOBS):
             f"results/logs/attribution/settings_{_k}.log",
         benchmark:
             f"results/benchmarks/attribution/settings_{_k}.tsv"
+        # among the longest jobs: started first (as near_surface_part), not left to the end
+        priority: 1
         conda:
             "../envs/pencore.yaml"
         params:

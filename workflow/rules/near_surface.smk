@@ -8,7 +8,6 @@ NEAR_SURFACE = config["near_surface"]
 
 
 rule near_surface_part:
-    # one job per option set, so the map's searches run in parallel
     input:
         csv=NEAR_SURFACE["csv"],
     output:
@@ -19,6 +18,9 @@ rule near_surface_part:
         "results/benchmarks/near_surface/part_{option}.tsv"
     wildcard_constraints:
         option="|".join(NEAR_SURFACE["options"]),
+    # one job per option set, so the map's searches run in parallel; among the longest
+    # jobs, started first so that the short ones fill the cores at the end (priority)
+    priority: 1
     conda:
         "../envs/pencore.yaml"
     params:
