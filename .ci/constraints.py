@@ -27,9 +27,9 @@ HEADER = """\
 # where the archived results (results/archive/) were made. The reproduction command of
 # the README installs with them, so that a fresh machine runs the same numpy, scipy,
 # numba, xarray, netCDF4 and Snakemake and makes the archive bit-identical:
-#     python -m pip install -e '.[workflow]' -c constraints.txt
+#     uv pip install -e '.[workflow]' -c constraints.txt --build-constraint constraints.txt
 # The tests do not use this file: CI installs the newest versions pyproject.toml allows
-# in a fresh virtual environment (.ci/run), which is what a fresh `pip install` gets.
+# in a fresh virtual environment (.ci/run), which is what a fresh install gets.
 # Regenerate after a reproduction in an environment with newer versions:
 #     python .ci/constraints.py > constraints.txt
 """

@@ -41,6 +41,13 @@ INSTALLERS = {
 }
 
 
+#: what the second install of each installer reuses (the kernels are not compiled)
+SECOND = {
+    "pip": "build cache of the first: the kernels are copied",
+    "uv": "uv's build of the first (its cache), else the build cache: nothing is compiled",
+}
+
+
 def timed_install(
     clone: Path, venv: Path, build_cache: Path, installer: str = "uv"
 ) -> tuple[float, float]:
@@ -58,13 +65,14 @@ def timed_install(
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("runs", nargs="*", default=["HEAD:uv"], help="COMMIT:INSTALLER")
+    ap.add_argument("runs", nargs="*", default=["HEAD:uv"], help="COMMIT[:INSTALLER] (uv)")
     ap.add_argument("--csv", default=str(HERE / "results" / "install.csv"))
     args = ap.parse_args()
     repo = HERE.parent
     rows = []
     for run in args.runs:
         commit, _, installer = run.partition(":")
+        installer = installer or "uv"  # README command 1's
         if installer not in INSTALLERS:
             raise SystemExit(f"bench_install: {run!r}: the installer is one of {list(INSTALLERS)}")
         sha = subprocess.run(["git", "rev-parse", "--short", commit], cwd=repo,
@@ -76,9 +84,10 @@ def main() -> None:
             before = machine()
             cold = timed_install(clone, Path(tmp) / "venv1", cache, installer)
             warm = timed_install(clone, Path(tmp) / "venv2", cache, installer)
+        second = SECOND[installer]
         for case, (wall, cpu), note in (
             ("fresh_editable_install", cold, "empty build cache: the kernels are compiled"),
-            ("second_editable_install", warm, "build cache of the first: the kernels are copied"),
+            ("second_editable_install", warm, second),
         ):
             print(f"{sha} {installer} {case}: {wall:.1f} s ({cpu:.1f} s CPU)", flush=True)
             rows.append({"case": case, "installer": installer, "wall_s": round(wall, 1),

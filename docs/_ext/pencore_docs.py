@@ -307,12 +307,25 @@ def duration(seconds: float) -> str:
 
 
 def fresh_installs() -> pd.DataFrame:
-    """The fresh editable installs of ``install.csv`` on the newest commit measured, one
-    row per installer (``pip``, ``uv``)."""
+    """The fresh editable installs of ``install.csv`` on the newest commit measured with
+    both installers (``pip``, ``uv``: the two are compared back to back), one row each."""
     install = pd.read_csv(BENCH / "install.csv")
-    newest = install["commit"].iloc[-1]
-    fresh = install[(install["case"] == "fresh_editable_install") & (install["commit"] == newest)]
-    return fresh.set_index("installer")
+    fresh = install[install["case"] == "fresh_editable_install"]
+    both = [
+        c
+        for c, rows in fresh.groupby("commit", sort=False)
+        if {"pip", "uv"} <= set(rows["installer"])
+    ]
+    if not both:
+        raise SystemExit(
+            "benchmarks/results/install.csv has no commit measured with both pip and uv: "
+            "run python benchmarks/bench_install.py HEAD:pip HEAD:uv"
+        )
+    return (
+        fresh[fresh["commit"] == both[-1]]
+        .drop_duplicates("installer", keep="last")
+        .set_index("installer")
+    )
 
 
 def timing_sentence() -> str:

@@ -11,8 +11,9 @@ Commands: ``pencore ...`` runs in a fresh directory holding the files the page s
 rules, profile and configuration files are checked without the hours of a reproduction
 (the workflow's end-to-end tests run it, and build the report, on the small test
 configuration); ``python -m pip install ...`` and ``python -m uv pip install ...`` name
-extras that exist, or install uv itself (not run: it would change the environment under
-test; CI's install step and ``.ci/wheel.sh`` install);
+extras that exist, or install uv itself, and ``python -m venv .venv && . .venv/bin/activate``
+make and enter the environment (not run: they would change the environment under test;
+CI's install step and ``.ci/wheel.sh`` install);
 ``python -m pytest -q`` is the suite this test belongs to. Any other command fails here
 until it is given a way to run.
 """
@@ -79,6 +80,8 @@ def test_every_block_is_labelled():
 
 def test_every_command_has_a_way_to_run():
     known = (
+        "python -m venv .venv",  # the set-up commands' virtual environment, and entering it
+        ". .venv/bin/activate",
         "pencore ",
         "python -m snakemake",
         "python -m pip install ",

@@ -19,8 +19,12 @@ def test_opens_with_exactly_the_two_setup_commands():
     assert first[0] == "bash"
     commands = first[1:]
     assert len(commands) == 2
-    # both install uv first and then install with it
-    uv = "python -m pip install uv && python -m uv pip install -e "
+    # both make and enter a virtual environment (uv installs only into one), install uv
+    # and then install with it
+    uv = (
+        "python -m venv .venv && . .venv/bin/activate && "
+        "python -m pip install uv && python -m uv pip install -e "
+    )
     assert all(c.startswith(uv) for c in commands)
     # the reproduction installs the pinned versions the archive was made with, and builds
     # the kernels with them (the build's numba is the one the kernels must fit)

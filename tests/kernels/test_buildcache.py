@@ -275,3 +275,22 @@ def test_the_module_uses_the_standard_library_only():
         elif isinstance(node, ast.ImportFrom):
             names.add((node.module or "").split(".")[0])
     assert names and names <= set(sys.stdlib_module_names) | {"__future__"}
+
+
+def test_uv_rebuilds_the_editable_install_when_a_compiled_source_changes():
+    """uv builds an installed editable pencore again only when a file of its
+    ``cache-keys`` changes: they must cover every file the kernel stamp hashes (else an
+    install after a pull leaves the changed kernels to the first run), and the build."""
+    import tomllib
+
+    from pencore.kernels.cache import PACKAGE, compiled_sources
+
+    repo = Path(__file__).resolve().parents[2]
+    keys = tomllib.loads((repo / "pyproject.toml").read_text())["tool"]["uv"]["cache-keys"]
+    patterns = [k["file"] for k in keys]
+    assert {"pyproject.toml", "setup.py"} <= set(patterns)
+    sources = compiled_sources(PACKAGE)
+    assert sources
+    for f in sources:
+        relative = f.resolve().relative_to(repo)
+        assert any(relative.match(p) for p in patterns), f"{relative} is not a uv cache key"

@@ -58,7 +58,9 @@ for _kind, _study in STUDIES.items():
                 "../envs/pencore.yaml"
             params:
                 kind=_kind,
-                parts=canonical([part for _, part in _job]),
+                # every part of the study, by name (the job's are its outputs' names), so
+                # that regrouping them (part_jobs) is no reason to rerun
+                parts=canonical(dict(s4_part_jobs(_kind, 1)[0])),
                 config=s4_params(_kind),
                 code=PHYSICS_CODE,
             script:

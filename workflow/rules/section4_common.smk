@@ -53,9 +53,10 @@ def s4_parts(study):
     return [f"{record.parts_dir}/{s4_part_name(p)}.nc" for p in parts_of(study, S4[record.entry])]
 
 
-def s4_part_jobs(study):
-    """The parts of a split study dealt in turn into `section4.part_jobs` jobs:
-    one list of (part name, part) per job."""
+def s4_part_jobs(study, n_jobs=None):
+    """The parts of a split study dealt in turn into `n_jobs` jobs (default
+    `section4.part_jobs`): one list of (part name, part) per job."""
     parts = parts_of(study, S4[STUDIES[study].entry])
     by_name = {s4_part_name(p): p for p in parts}
-    return [[(n, by_name[n]) for n in job] for job in round_robin(list(by_name), S4["part_jobs"])]
+    jobs = round_robin(list(by_name), S4["part_jobs"] if n_jobs is None else n_jobs)
+    return [[(n, by_name[n]) for n in job] for job in jobs]

@@ -1,11 +1,13 @@
 """Rules s4_study and s4_part_<study>_<k>: one Section 4 study, or the parts of a split
-study that one job runs (one output each, in order).
+study that one job runs (one output each).
 
 Thin adapter to pencore.studies.config.from_config; the study is params.kind, the
-parts (if any) are params.parts: {"projectile": "p2"} or with "obliquity" (deg).
+parts (if any) are those of params.parts (every part of the study, by name: {"projectile":
+"p2"} or with "obliquity" in deg) named by the job's outputs (results/<folder>/parts/<name>.nc).
 """
 
 import time
+from pathlib import Path
 
 from _common import start_log
 
@@ -17,7 +19,6 @@ kind = smk.params.kind
 log = start_log(smk.log[0], f"section4_{kind}")
 
 cfg = smk.params.config
-parts = smk.params.get("parts", [{}])
 
 
 def run(part, out):
@@ -46,7 +47,9 @@ def run(part, out):
     )
 
 
-outputs = smk.output.nc if isinstance(smk.output.nc, list) else [smk.output.nc]
-for part, out in zip(parts, outputs, strict=True):
-    # obliquity in degrees as a float, as the part's provenance has always recorded it
-    run({k: float(v) if k == "obliquity" else v for k, v in part.items()}, out)
+if "parts" in smk.params.keys():
+    outputs = [smk.output.nc] if isinstance(smk.output.nc, str) else smk.output.nc
+    for out in outputs:
+        run(dict(smk.params.parts[Path(out).stem]), out)
+else:
+    run({}, smk.output.nc)
