@@ -290,7 +290,7 @@ def test_held_jacobian_keeps_the_solution():
 def test_path_below_surface_clips_entry_and_skips_flight_above():
     # a tip path that enters at 45 deg, leaves, and re-enters: the length below y = 0
     # is the straight-line geometry, each entry clipped at the surface
-    from pencore.run.dataset import _axes, _path_below
+    from pencore.run.dataset import _path_below, rotation_matrices
 
     tip = np.array(
         [[0.0, 1.0, 0.0], [2.0, -1.0, 0.0], [3.0, -2.0, 0.0], [5.0, 1.0, 0.0], [6.0, -3.0, 0.0]]
@@ -305,7 +305,17 @@ def test_path_below_surface_clips_entry_and_skips_flight_above():
     assert _path_below(tip[:1], below[:1]) == 0.0
     # body axis 1 of a quarter turn about z: (1, 0, 0) -> (0, 1, 0); unnormalised input
     q = np.array([[2.0 * math.cos(math.pi / 4), 0.0, 0.0, 2.0 * math.sin(math.pi / 4)]])
-    assert _axes(q)[0] == pytest.approx([0.0, 1.0, 0.0], abs=1e-15)
+    assert rotation_matrices(q)[0, :, 0] == pytest.approx([0.0, 1.0, 0.0], abs=1e-15)
+
+
+def test_rotation_matrices_are_the_kernels_bit_for_bit():
+    # the Dataset's nose axes and the loads read back use the kernels' rotation exactly
+    from pencore.kernels.dynamics import quat_to_matrix
+    from pencore.run.dataset import rotation_matrices
+
+    q = np.random.default_rng(7).normal(size=(50, 4)) * 3.0  # unnormalised
+    expected = np.stack([quat_to_matrix(row) for row in q])
+    assert np.array_equal(rotation_matrices(q), expected)
 
 
 def test_most_coefficients_the_kernels_hold_and_a_clear_error_beyond():

@@ -16,7 +16,13 @@ from pencore.inputs.target import Target
 from pencore.integrators.driver import RunResult
 from pencore.version import __version__
 
-__all__ = ["VERTICAL_RATIO", "final_slope", "trajectory_dataset", "load_variables"]
+__all__ = [
+    "VERTICAL_RATIO",
+    "final_slope",
+    "trajectory_dataset",
+    "load_variables",
+    "rotation_matrices",
+]
 
 #: Standard acceleration of gravity g0 (m/s^2), the unit of a deceleration "in g"
 #: (3rd CGPM, 1901; exact by definition).
@@ -63,15 +69,23 @@ def _projectile_dict(p: Projectile) -> dict[str, Any]:
     return d
 
 
-def _axes(q: np.ndarray) -> np.ndarray:
-    """Body axis 1 in the fixed frame for each quaternion row of ``q`` (n, 4): the first
-    column of :func:`pencore.kernels.dynamics.quat_to_matrix`, with the same operations in the
-    same order (so the same bits), for all rows at once."""
+def rotation_matrices(q: np.ndarray) -> np.ndarray:
+    """Rotation matrices (body -> fixed), (n, 3, 3), of the quaternion rows of ``q``
+    (n, 4; normalised here): :func:`pencore.kernels.dynamics.quat_to_matrix` for all rows at
+    once, with the same operations in the same order (so the same bits)."""
     nq = np.sqrt(q[:, 0] * q[:, 0] + q[:, 1] * q[:, 1] + q[:, 2] * q[:, 2] + q[:, 3] * q[:, 3])
     w, x, y, z = (q[:, k] / nq for k in range(4))
-    return np.stack(
-        [w * w + x * x - y * y - z * z, 2 * (x * y + w * z), 2 * (x * z - w * y)], axis=1
-    )
+    r = np.empty((q.shape[0], 3, 3))
+    r[:, 0, 0] = w * w + x * x - y * y - z * z
+    r[:, 0, 1] = 2 * (x * y - w * z)
+    r[:, 0, 2] = 2 * (x * z + w * y)
+    r[:, 1, 0] = 2 * (x * y + w * z)
+    r[:, 1, 1] = w * w - x * x + y * y - z * z
+    r[:, 1, 2] = 2 * (y * z - w * x)
+    r[:, 2, 0] = 2 * (x * z - w * y)
+    r[:, 2, 1] = 2 * (y * z + w * x)
+    r[:, 2, 2] = w * w - x * x - y * y + z * z
+    return r
 
 
 def load_variables(
@@ -224,7 +238,7 @@ def trajectory_dataset(
     lc, mass = mp.lc, mp.mass
     inertia = np.array([mp.i_axial, mp.i_transverse, mp.i_transverse])
     n = len(ts)
-    axes = _axes(ys[:, 3:7])
+    axes = rotation_matrices(ys[:, 3:7])[:, :, 0]  # body axis 1 in the fixed frame
     cm = ys[:, 0:3]
     tip = cm + lc * axes
     vel = ys[:, 7:10]

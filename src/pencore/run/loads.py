@@ -25,6 +25,7 @@ from pencore.integrators.driver import RunResult, reserve_path, start_path
 from pencore.integrators.problem import Problem
 from pencore.kernels.contact_points import MAX_SAMPLES_PER_STEP
 from pencore.kernels.forces import loads_along
+from pencore.run.dataset import rotation_matrices
 
 __all__ = ["body_loads", "loads_from_derivatives"]
 
@@ -54,18 +55,7 @@ def loads_from_derivatives(
     (k, 6) ndarray
         As :func:`body_loads`.
     """
-    q = ys[:, 3:7] / np.linalg.norm(ys[:, 3:7], axis=1)[:, None]
-    w, x, y, z = q.T
-    rot = np.empty((ys.shape[0], 3, 3))  # as pencore.kernels.dynamics.quat_to_matrix
-    rot[:, 0, 0] = w * w + x * x - y * y - z * z
-    rot[:, 0, 1] = 2 * (x * y - w * z)
-    rot[:, 0, 2] = 2 * (x * z + w * y)
-    rot[:, 1, 0] = 2 * (x * y + w * z)
-    rot[:, 1, 1] = w * w - x * x + y * y - z * z
-    rot[:, 1, 2] = 2 * (y * z - w * x)
-    rot[:, 2, 0] = 2 * (x * z - w * y)
-    rot[:, 2, 1] = 2 * (y * z + w * x)
-    rot[:, 2, 2] = w * w - x * x - y * y + z * z
+    rot = rotation_matrices(ys[:, 3:7])
     out = np.empty((ys.shape[0], 6))
     out[:, 0:3] = np.einsum("kji,kj->ki", rot, mass * (fs[:, 7:10] - gravity))
     i1, i2, i3 = inertia
