@@ -423,19 +423,19 @@ def _run(
     """Integrate with the selected integrator: the explicit scheme of the paper
     emulation, the compiled Rosenbrock pair (keeping its derivatives when the loads are
     wanted), or scipy's reference (SI units)."""
+    options: dict[str, bool] = {}
     if pr.emulation.integrator == "explicit":
         from pencore.integrators.explicit import explicit_chunk as compiled
         from pencore.integrators.explicit import integrate_explicit as integrator
     elif pr.numerics.method == "rosenbrock":
-        _compile_notice(integrate_chunk)
-        return integrate(pr, y0, velocity, stop_at_reversal=stop_at_reversal,
-                         keep_derivatives=loads)  # fmt: skip
+        integrator, compiled = integrate, integrate_chunk
+        options["keep_derivatives"] = loads
     else:
         from pencore.integrators.scipy_ivp import integrate_scipy as integrator
 
         compiled = rhs_model
     _compile_notice(compiled)
-    return integrator(pr, y0, velocity, stop_at_reversal=stop_at_reversal)
+    return integrator(pr, y0, velocity, stop_at_reversal=stop_at_reversal, **options)
 
 
 def _small_step_cause(num: Numerics) -> str:
