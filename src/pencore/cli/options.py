@@ -42,6 +42,7 @@ __all__ = [
     "with_windows",
     "add_mass_options",
     "with_mass",
+    "window_values",
     "check_output",
     "resolve",
     "run_projectile",
@@ -313,10 +314,20 @@ def with_windows(target: Any, args: argparse.Namespace) -> Any:
         ``target`` with both windows set on every medium, or ``target`` itself when
         neither option was given.
     """
-    ratio = getattr(args, "plastic_zone_ratio", None)
-    if args.crater_depth is None and args.free_surface_depth is None and ratio is None:
-        return target
-    return target.with_windows(args.crater_depth, args.free_surface_depth, ratio)
+    windows = window_values(args)
+    return target if windows is None else target.with_windows(*windows)
+
+
+def window_values(args: argparse.Namespace) -> tuple[Any, Any, Any] | None:
+    """The depth-window options as given: ``(crater_depth, free_surface_depth,
+    plastic_zone_ratio)`` (calibers, calibers, ratio; ``None`` each one not given, and the
+    ratio where the subcommand has no such option), or ``None`` when none was given."""
+    windows = (
+        args.crater_depth,
+        args.free_surface_depth,
+        getattr(args, "plastic_zone_ratio", None),
+    )
+    return None if windows == (None, None, None) else windows
 
 
 def add_mass_options(p: argparse.ArgumentParser) -> None:

@@ -23,6 +23,7 @@ from pencore.cli.options import (
     run_projectile,
     run_target,
     velocity,
+    window_values,
 )
 from pencore.cli.summary import (
     NOT_FOUND,
@@ -180,12 +181,10 @@ def run_sweep(args: argparse.Namespace) -> int:
         check_bracket(args, " (m/s)")  # --thicknesses > 0: their type (number_type) refuses
         get_target(args.medium)  # a bad name is one line before any run
         n = len(args.thicknesses) * len(args.obliquities)
-        windows = (args.crater_depth, args.free_surface_depth,
-                   getattr(args, "plastic_zone_ratio", None))  # fmt: skip
         ds = sweeps.ballistic_table(
             projectile, args.medium, args.thicknesses, args.obliquities, lo=args.lo,
             hi=args.hi, tol=args.tol, numerics=num, progress=Progress(n, args.quiet),
-            windows=None if windows == (None, None, None) else windows,
+            windows=window_values(args),
         )  # fmt: skip
         found = np.isfinite(ds["v_bl"].values)
         status = 0 if found.all() else NOT_FOUND
