@@ -43,13 +43,13 @@ for _kind, _study in STUDIES.items():
     if not _study.split_by:
         continue
     _folder = s4_folder_and_name(_study.dataset)[0]
-    for _k, _job in enumerate(s4_part_jobs(_kind)):
+    for _k, _names in enumerate(s4_part_jobs(_kind)):
 
         rule:
             name:
                 f"s4_part_{_kind}_{_k}"
             output:
-                nc=[f"{_study.parts_dir}/{name}.nc" for name, _ in _job],
+                nc=[s4_part_file(_kind, name) for name in _names],
             log:
                 f"results/logs/section4/{_folder}_part_job{_k}.log",
             benchmark:
@@ -60,7 +60,7 @@ for _kind, _study in STUDIES.items():
                 kind=_kind,
                 # every part of the study, by name (the job's are its outputs' names), so
                 # that regrouping them (part_jobs) is no reason to rerun
-                parts=canonical(dict(s4_part_jobs(_kind, 1)[0])),
+                parts=canonical(s4_parts_by_name(_kind)),
                 config=s4_params(_kind),
                 code=PHYSICS_CODE,
             script:

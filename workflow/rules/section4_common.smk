@@ -48,15 +48,19 @@ def s4_part_name(part):
     return part["projectile"]
 
 
+def s4_parts_by_name(study):
+    """The parts of a split study by name (the stem of each part's file)."""
+    return {s4_part_name(p): p for p in parts_of(study, S4[STUDIES[study].entry])}
+
+
+def s4_part_file(study, name):
+    return f"{STUDIES[study].parts_dir}/{name}.nc"
+
+
 def s4_parts(study):
-    record = STUDIES[study]
-    return [f"{record.parts_dir}/{s4_part_name(p)}.nc" for p in parts_of(study, S4[record.entry])]
+    return [s4_part_file(study, name) for name in s4_parts_by_name(study)]
 
 
-def s4_part_jobs(study, n_jobs=None):
-    """The parts of a split study dealt in turn into `n_jobs` jobs (default
-    `section4.part_jobs`): one list of (part name, part) per job."""
-    parts = parts_of(study, S4[STUDIES[study].entry])
-    by_name = {s4_part_name(p): p for p in parts}
-    jobs = round_robin(list(by_name), S4["part_jobs"] if n_jobs is None else n_jobs)
-    return [[(n, by_name[n]) for n in job] for job in jobs]
+def s4_part_jobs(study):
+    """The part names of a split study dealt in turn into `section4.part_jobs` jobs."""
+    return round_robin(list(s4_parts_by_name(study)), S4["part_jobs"])
