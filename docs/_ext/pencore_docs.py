@@ -416,7 +416,38 @@ def numbers() -> dict[str, str]:
     out["ensemble_n"] = str(n)
     out["ensemble_wall_s"] = _fmt(repro["group_wall_sum_s"]["ensemble"], 3)
     out["ensemble_ms_per_sample"] = _fmt(1e3 * repro["group_wall_sum_s"]["ensemble"] / n, 2)
+    out.update(search_cost_numbers())
     return out
+
+
+def search_cost_numbers() -> dict[str, str]:
+    """Where the reproduction's threshold searches spend their time
+    (``benchmarks/results/search_cost.json``, ``benchmarks/search_cost.py``)."""
+    import json
+
+    cost = json.loads((BENCH / "search_cost.json").read_text())
+    every = cost["by_group"]["all"]
+    return {
+        "search_commit": cost["commit"],
+        "search_count": str(cost["n_searches"]),
+        "search_total_s": _fmt(every["total_s"], 3),
+        "search_scan_s": _fmt(every["ends_scan_s"], 3),
+        "search_wide_s": _fmt(every["wide_s"], 3),
+        "search_narrow_s": _fmt(every["narrow_s"], 3),
+        "search_narrow_tol": str(cost["narrow_tolerances"]),
+        "search_job_sum_s": _fmt(cost["job_wall_sum_s"], 3),
+        "search_floor_sum_s": _fmt(cost["without_scan_and_wide_s"], 3),
+        "search_floor_wall_s": _fmt(cost["wall_floor_s"], 3),
+        "search_near_surface_s": _fmt(cost["by_group"]["near_surface"]["total_s"], 3),
+        "search_near_surface_narrow_s": _fmt(cost["by_group"]["near_surface"]["narrow_s"], 3),
+        "search_narrow_mean_ms": _fmt(1e3 * every["narrow_s"] / every["narrow_n"], 2),
+        "search_other_mean_ms": _fmt(
+            1e3
+            * (every["ends_scan_s"] + every["wide_s"])
+            / (every["ends_scan_n"] + every["wide_n"]),
+            2,
+        ),
+    }
 
 
 ARCHIVE = REPO / "results" / "archive"
