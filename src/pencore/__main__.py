@@ -14,7 +14,7 @@ from __future__ import annotations
 import signal
 import sys
 
-from pencore.errors import INTERRUPTED
+from pencore.errors import INTERRUPTED, interrupted_import
 
 __all__ = ["run"]
 
@@ -25,7 +25,10 @@ def run() -> int:
         from pencore.cli.main import main
 
         status = main()
-    except KeyboardInterrupt:  # before the command line's own handling, or after it
+    except (KeyboardInterrupt, ImportError) as exc:  # before the command line's own
+        # handling, or after it; an ImportError only when Ctrl-C caused it
+        if not isinstance(exc, KeyboardInterrupt) and not interrupted_import(exc):
+            raise
         print(f"pencore: error: {INTERRUPTED}", file=sys.stderr)
         status = 130
     # the command has finished (its files are complete or removed): a Ctrl-C from here

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 __all__ = [
     "INTERRUPTED",
+    "interrupted_import",
     "InputError",
     "GeometryError",
     "TargetError",
@@ -37,6 +38,20 @@ __all__ = [
 
 #: What the command line says when Ctrl-C ends it (exit status 130).
 INTERRUPTED = "interrupted (Ctrl-C); nothing was written"
+
+
+def interrupted_import(exc: BaseException) -> bool:
+    """True when ``exc`` is a Ctrl-C in disguise: an ``ImportError`` raised because a
+    ``KeyboardInterrupt`` landed while an extension module initialised. pybind11's modules
+    (scipy's ``scipy.optimize._highspy._core``, which ``scipy.integrate`` imports) turn any
+    exception of their initialisation into ``ImportError("initialization failed")`` raised
+    from it, so a Ctrl-C during a lazy import of scipy would otherwise read as a broken
+    installation."""
+    if not isinstance(exc, ImportError):
+        return False
+    return isinstance(exc.__cause__, KeyboardInterrupt) or isinstance(
+        exc.__context__, KeyboardInterrupt
+    )
 
 
 class InputError(ValueError):

@@ -19,7 +19,7 @@ from collections.abc import Callable, Sequence
 
 from pencore.cli import ballistic, critical, law, library, simulate, sweeps
 from pencore.cli.options import INTERRUPTED, PROG, CommandFailure, Parser, one_line
-from pencore.errors import InputError, SolverError
+from pencore.errors import InputError, SolverError, interrupted_import
 from pencore.inputs.limits import one_line_warnings
 from pencore.io.atomic import describe_os_error
 from pencore.version import __version__
@@ -132,6 +132,10 @@ def _main(argv: Sequence[str] | None) -> int:
     except InputError as exc:
         msg, status = str(exc), 2
     except KeyboardInterrupt:
+        msg, status = INTERRUPTED, 130
+    except ImportError as exc:
+        if not interrupted_import(exc):
+            raise
         msg, status = INTERRUPTED, 130
     except SolverError as exc:
         msg, status = f"solver failed: {exc}", 1

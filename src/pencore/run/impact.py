@@ -30,7 +30,7 @@ from typing import Any, ParamSpec
 import numpy as np
 import xarray as xr
 
-from pencore.errors import InputError, SolverError
+from pencore.errors import InputError, SolverError, interrupted_import
 from pencore.inputs.geometry import Projectile
 from pencore.inputs.library import get_projectile, get_target
 from pencore.inputs.limits import flag
@@ -431,8 +431,12 @@ def _run(
         integrator, compiled = integrate, integrate_chunk
         options["keep_derivatives"] = loads
     else:
-        from pencore.integrators.scipy_ivp import integrate_scipy as integrator
-
+        try:
+            from pencore.integrators.scipy_ivp import integrate_scipy as integrator
+        except ImportError as exc:
+            if interrupted_import(exc):  # Ctrl-C while scipy loads: the caller's Ctrl-C
+                raise KeyboardInterrupt from exc
+            raise
         compiled = rhs_model
     _compile_notice(compiled)
     return integrator(pr, y0, velocity, stop_at_reversal=stop_at_reversal, **options)
