@@ -13,7 +13,7 @@ import pytest
 import pencore
 from pencore.cli.main import main
 from pencore.inputs.limits import LIMITS, PLAUSIBLE, looks_like_radians, plausible_markdown
-from pencore.paper.shots import SHOT_COLUMNS, read_shot_table
+from pencore.measured.shots import SHOT_COLUMNS, read_shot_table
 from pencore.workflowconfig.config_check import check_config, read_config
 
 REPO = Path(__file__).resolve().parents[2]

@@ -1339,7 +1339,7 @@ def test_cli_empty_write_path_refused(capsys, tmp_path, monkeypatch):
 
 
 def test_shot_repeated_with_a_leading_space_refused(tmp_path):
-    from pencore.paper.shots import SHOT_COLUMNS, read_shot_table
+    from pencore.measured.shots import SHOT_COLUMNS, read_shot_table
 
     row = "al_ogive_var4340,600.0,0.12,0.5,0.0,true,1,725,paper"
     path = tmp_path / "shots.csv"
@@ -1413,8 +1413,8 @@ BAD_CSV = {
 @pytest.mark.parametrize("kind", list(BAD_CSV))
 @pytest.mark.parametrize("reader", ["shot-table", "claims"])
 def test_csv_readers_on_bad_files(kind, reader, tmp_path):
+    from pencore.measured.shots import read_shot_table
     from pencore.paper.claims import load_claims
-    from pencore.paper.shots import read_shot_table
 
     data, words = BAD_CSV[kind]
     path = tmp_path / "data.csv"
@@ -1425,7 +1425,7 @@ def test_csv_readers_on_bad_files(kind, reader, tmp_path):
 
 
 def test_one_text_cell_in_a_shot_table_names_its_row_and_value(tmp_path):
-    from pencore.paper.shots import SHOT_COLUMNS, read_shot_table
+    from pencore.measured.shots import SHOT_COLUMNS, read_shot_table
 
     rows = [",".join(SHOT_COLUMNS)] + [
         f"s{i},al_ogive_var4340,{v},0.12,0.5,0.0,true,1,725,paper"

@@ -13,7 +13,7 @@ import pencore
 from pencore import closedform
 from pencore.errors import InputError
 from pencore.inputs.laws import forrestal_s
-from pencore.paper.shots import read_body_shot_table
+from pencore.measured.shots import read_body_shot_table
 from pencore.studies.validation.bodies import (
     LAWS,
     body_projectile,

@@ -37,7 +37,7 @@ from pencore.errors import InputError, SolverError
 from pencore.inputs.library import get_projectile
 from pencore.inputs.limits import half_space_plates
 from pencore.inputs.numerics import Numerics, resolve_numerics
-from pencore.paper.shots import read_data_csv
+from pencore.measured.shots import read_data_csv
 from pencore.search.perforation import ballistic_limit
 from pencore.search.threshold import CriticalResult
 from pencore.studies.common import search_variables, var_attrs

@@ -1,6 +1,6 @@
 """Shots of bodies and targets given by measured properties, made ready to run.
 
-A body shot table (:func:`pencore.paper.shots.read_body_shot_table`) gives each shot's rod
+A body shot table (:func:`pencore.measured.shots.read_body_shot_table`) gives each shot's rod
 by its measured mass, diameter, total length and CRH, and its target by density and
 unconfined compressive strength ``fc``. This module turns each row into a
 :class:`~pencore.Projectile` and, per law, a half-space :class:`~pencore.Target`, in the
@@ -49,7 +49,7 @@ from pencore.inputs.geometry import Cylinder, OgiveNose, Projectile
 from pencore.inputs.laws import concrete_law
 from pencore.inputs.library import get_target
 from pencore.inputs.target import Target
-from pencore.paper.shots import read_body_shot_table
+from pencore.measured.shots import read_body_shot_table
 
 __all__ = ["LAWS", "STEEL_DENSITY", "body_projectile", "concrete_target", "body_rows"]
 

@@ -33,7 +33,7 @@ from pencore.inputs.geometry import OgiveNose
 from pencore.inputs.library import get_projectile, get_target
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.target import Medium
-from pencore.paper.shots import read_body_shot_table, read_shot_table
+from pencore.measured.shots import read_body_shot_table, read_shot_table
 from pencore.run.impact import prepare, simulate
 from pencore.studies.common import var_attrs
 
@@ -230,12 +230,12 @@ def fig5(
         ``[v_min, v_max]``, the rest are NaN.
     numerics : Numerics or mapping, optional
     shots : sequence of paths
-        Shot tables (:func:`pencore.paper.shots.read_shot_table`); every shot's
+        Shot tables (:func:`pencore.measured.shots.read_shot_table`); every shot's
         projectile must be the projectile of at least one case. The shots are drawn, not
         run here: :func:`pencore.studies.validation.measurements.measured_vs_predicted` runs each at
         its measured impact.
     body_shots : mapping, optional
-        Body shot tables (:func:`pencore.paper.shots.read_body_shot_table`): path -> {set:
+        Body shot tables (:func:`pencore.measured.shots.read_body_shot_table`): path -> {set:
         library projectile of the case that draws the set's shots}. Drawn, not run here
         (:func:`pencore.studies.validation.measurements.measured_vs_predicted` runs them).
 
@@ -343,7 +343,7 @@ def fig5(
 
 def _body_shots(path: str | Path, sets: Mapping[str, str]) -> pd.DataFrame:
     """The shots of ``sets`` (set -> library projectile) of a body shot table, in the form
-    of :func:`pencore.paper.shots.read_shot_table` (normal impact, rigid as compiled)."""
+    of :func:`pencore.measured.shots.read_shot_table` (normal impact, rigid as compiled)."""
     df = read_body_shot_table(path)
     unknown = sorted(set(sets) - set(df["set"]))
     if unknown:

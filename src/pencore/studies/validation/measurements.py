@@ -17,8 +17,8 @@ neither when its source does not), or from optional ``projectile`` / ``target`` 
 An entry may name several targets (``targets``: the same medium under different laws);
 every shot is then run once per target, and the statistics are kept per law.
 
-A *shot table* (:data:`pencore.paper.shots.SHOT_COLUMNS`, read by
-:func:`pencore.paper.shots.read_shot_table`, which maps the measured angles of attack to
+A *shot table* (:data:`pencore.measured.shots.SHOT_COLUMNS`, read by
+:func:`pencore.measured.shots.read_shot_table`, which maps the measured angles of attack to
 pencore's impact angles) is the other accepted form: the shots of a penetration paper as it
 prints them, at normal incidence. Shots flagged not rigid are run and kept, but left out of
 the statistics (the model is of a rigid body).
@@ -65,7 +65,7 @@ from pencore.inputs.library import get_projectile, get_target
 from pencore.inputs.limits import check_keys, half_space_plates
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.target import Target
-from pencore.paper.shots import BODY_SHOT_COLUMNS, SHOT_COLUMNS, read_data_csv, shot_table
+from pencore.measured.shots import BODY_SHOT_COLUMNS, SHOT_COLUMNS, read_data_csv, shot_table
 from pencore.run.impact import prepare, simulate
 from pencore.studies.perforation.slabs import slab_target
 from pencore.studies.validation.bodies import body_rows
@@ -154,7 +154,7 @@ def _is_body_table(e: Mapping[str, Any]) -> bool:
 
 def _read_rows(e: Mapping[str, Any]) -> pd.DataFrame:
     """The entry's file in the common form (a shot table by
-    :func:`pencore.paper.shots.shot_table`), read once."""
+    :func:`pencore.measured.shots.shot_table`), read once."""
     label = f"measurements {e['name']}"
     df = read_data_csv(e["csv"], (), label)
     shots = "striking_velocity_m_s" in df.columns

@@ -20,6 +20,9 @@ total length and CRH of a tangent-ogive rod; the target's density and unconfined
 compressive strength ``fc``), grouped in sets (``set``: one reference, projectile and target),
 with the source's ``row``. No angles of attack: normal impact, no yaw.
 :func:`read_body_shot_table` checks every number (finite, > 0) and names the offending row.
+A body shot table with a ``status`` column (the concrete compilation,
+:mod:`pencore.measured.compilation`) gives only its rows of status ``clean``: the rows set
+aside keep their reason in the file and are not run.
 
 Examples
 --------
@@ -213,7 +216,7 @@ def read_body_shot_table(path: str | Path, label: str | None = None) -> pd.DataF
     -------
     pandas.DataFrame
         The file's columns, the numbers of :data:`BODY_SHOT_COLUMNS` as floats, ``row`` and
-        ``set`` as text.
+        ``set`` as text; where the file has a ``status`` column, only its ``clean`` rows.
 
     Raises
     ------
@@ -224,6 +227,10 @@ def read_body_shot_table(path: str | Path, label: str | None = None) -> pd.DataF
     """
     label = label or f"shot table {str(path)!r}"
     df = read_data_csv(path, BODY_SHOT_COLUMNS, label)
+    if "status" in df.columns:
+        df = df[df["status"].astype(str).str.strip() == "clean"].reset_index(drop=True)
+        if df.empty:
+            raise InputError(f"{label}: {path} has no row of status clean")
     out = df.copy()
     for i, r in df.iterrows():
         where = f"{label} row {i + 1} (row {r['row']!r})"

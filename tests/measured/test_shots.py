@@ -1,4 +1,4 @@
-"""Shot tables (pencore.paper.shots): the shipped tables against their sources' stated
+"""Shot tables (pencore.measured.shots): the shipped tables against their sources' stated
 counts, the mapping of measured angles of attack, and the reader's refusals, each one line
 naming the file and the row."""
 
@@ -12,7 +12,7 @@ import pandas as pd
 import pytest
 
 from pencore.errors import InputError
-from pencore.paper.shots import (
+from pencore.measured.shots import (
     BODY_SHOT_COLUMNS,
     read_body_shot_table,
     read_shot_table,
