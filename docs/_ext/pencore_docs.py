@@ -8,8 +8,9 @@ functions (``python docs/_ext/pencore_docs.py --readme`` rewrites them;
 ``tests/docs/test_generated.py`` fails when they are stale).
 
 Sources: ``results/archive/paper_comparison.csv`` (the archived comparison with the paper),
-``config/paper_claims.csv``, ``benchmarks/results/*.csv``, :data:`pencore.inputs.limits.LIMITS`,
-the workflow's configuration schema, and a run of the solver (the Dataset's variables).
+``config/paper_claims.csv``, ``config/concrete_compilation.csv``, ``benchmarks/results/*.csv``,
+:data:`pencore.inputs.limits.LIMITS`, the workflow's configuration schema, and a run of the
+solver (the Dataset's variables).
 """
 
 from __future__ import annotations
@@ -383,6 +384,7 @@ def numbers() -> dict[str, str]:
     out["install_uv"], out["install_pip"] = duration(fresh["uv"]), duration(fresh["pip"])
     out["comparison_counts"] = comparison_counts()
     out.update(concrete_numbers())
+    out.update(compilation_numbers())
     from pencore.inputs import gate
     from pencore.inputs.numerics import DEFAULT_MAX_WALL
 
@@ -709,6 +711,63 @@ def concrete_numbers() -> dict[str, str]:
     return out
 
 
+def compilation_reasons_table() -> str:
+    """The concrete compilation's reasons (:mod:`pencore.measured.compilation`): per code,
+    the rows that carry it and those set aside for it alone, with its meaning."""
+    from pencore.measured import compilation as comp
+
+    df = comp.read_compilation()
+    counts = comp.reason_counts(df)
+    clean = int((df["status"] == "clean").sum())
+    lines = [
+        "| reason | rows | rows for it alone | meaning |",
+        "|---|---|---|---|",
+        f"| (clean) | {clean} | | every number present, no reason below |",
+    ]
+    for code, r in counts.iterrows():
+        lines.append(f"| `{code}` | {r['rows']} | {r['only']} | {r['text']} |")
+    lines.append(f"| all rows | {len(df)} | | |")
+    return "\n".join(lines)
+
+
+def compilation_sources_table() -> str:
+    """The concrete compilation per compiler's key: the reference it cites, the rows and the
+    clean rows, the compilation's numbers."""
+    from pencore.measured import compilation as comp
+
+    df = comp.read_compilation()
+    cited = dict(zip(df["reference_number"], df["reference"], strict=True))
+    lines = ["| key | references cited | rows | clean | Numbers |", "|---|---|---|---|---|"]
+    for key, r in comp.source_counts(df).iterrows():
+        # each reference by its authors and year (the text before its title)
+        refs = "; ".join(
+            f"[{n}] {cited[int(n)].split('. ')[0]}" for n in r["references"].split(", ")
+        )
+        lines.append(
+            f"| {key} | {refs} | {r['rows']} | {r['clean']} | {r['first_row']}-{r['last_row']} |"
+        )
+    return "\n".join(lines)
+
+
+def compilation_numbers() -> dict[str, str]:
+    """Counts of the concrete compilation for the prose."""
+    from pencore.measured import compilation as comp
+
+    df = comp.read_compilation()
+    raw = sum(len(comp.parse_raw_cells(t)) for t in df["raw_cells"])
+    series = comp.read_series()
+    return {
+        "compilation_rows": str(len(df)),
+        "compilation_references": str(df["reference_number"].nunique()),
+        "compilation_keys": str(df["reference_key"].nunique()),
+        "compilation_clean": str(int((df["status"] == "clean").sum())),
+        "compilation_text_cells": str(raw),
+        "compilation_series": str(series["series"].nunique()),
+        "compilation_series_rows": str(len(series)),
+        "compilation_errata": str(len(comp.read_errata())),
+    }
+
+
 def validation_headline() -> str:
     """The README's table of pencore against measured depths: pencore's 3-D run, one row
     per data file (config entry) and law with a rigid shot, its rigid shots pooled (a body
@@ -1015,6 +1074,8 @@ PAGES: dict[str, Callable[[], str]] = {
     "residual_velocity.md": residual_velocity_text,
     "measurements.md": measurements_table,
     "concrete.md": concrete_table,
+    "compilation_reasons.md": compilation_reasons_table,
+    "compilation_sources.md": compilation_sources_table,
     "layers.md": layers_table,
     "measurement_options.md": measurement_options_table,
     "obliquity_ratio.md": obliquity_ratio_table,

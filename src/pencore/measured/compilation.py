@@ -54,7 +54,7 @@ Examples
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -90,7 +90,11 @@ __all__ = [
     "read_errata",
     "read_series",
     "clean_rows",
+    "rows_allowing",
     "status_mismatches",
+    "reason_codes",
+    "reason_counts",
+    "source_counts",
 ]
 
 #: Folder of the shipped data.
@@ -418,7 +422,7 @@ def read_compilation(path: str | Path = COMPILATION_CSV) -> pd.DataFrame:
     bad = sorted(set(df["status"]) - set(STATUSES))
     if bad:
         raise InputError(f"{label}: status {bad} not one of {list(STATUSES)}")
-    codes = {c for text in df["reason"] for c in text.split("; ") if c}
+    codes = {c for text in df["reason"] for c in reason_codes(text)}
     unknown = sorted(codes - set(REASONS))
     if unknown:
         raise InputError(f"{label}: reason codes {unknown} not one of {list(REASONS)}")
@@ -446,3 +450,51 @@ def clean_rows(path: str | Path = COMPILATION_CSV) -> pd.DataFrame:
     finite and > 0: a body shot table's rows."""
     df = read_compilation(path)
     return df[df["status"] == "clean"].reset_index(drop=True)
+
+
+def reason_codes(text: str) -> list[str]:
+    """The codes of a ``reason`` cell (``"a; b"`` -> ``["a", "b"]``; empty when clean)."""
+    return [c for c in str(text).split("; ") if c]
+
+
+def rows_allowing(df: pd.DataFrame, allowed: Collection[str]) -> pd.DataFrame:
+    """The rows whose reasons are all in ``allowed`` (the clean rows among them): for
+    example the clean rows and those set aside only as ``eroding``, to judge a criterion
+    of the rigid regime on them."""
+    unknown = sorted(set(allowed) - set(REASONS))
+    if unknown:
+        raise InputError(f"unknown reason codes {unknown}; use {list(REASONS)}")
+    keep = [set(reason_codes(text)) <= set(allowed) for text in df["reason"]]
+    return df[keep]
+
+
+def reason_counts(df: pd.DataFrame) -> pd.DataFrame:
+    """Per reason code (:data:`REASONS`, in its order): ``rows`` that carry it and ``only``,
+    the rows set aside for it alone; its ``text``."""
+    codes = [reason_codes(text) for text in df["reason"]]
+    return pd.DataFrame(
+        {
+            "rows": [sum(c in r for r in codes) for c in REASONS],
+            "only": [sum(r == [c] for r in codes) for c in REASONS],
+            "text": list(REASONS.values()),
+        },
+        index=pd.Index(list(REASONS), name="reason"),
+    )
+
+
+def source_counts(df: pd.DataFrame) -> pd.DataFrame:
+    """Per compiler's key (in the compilation's order): the ``references`` its rows cite
+    (their numbers, ``"15, 19"``), the ``rows``, the ``clean`` rows and the first and last
+    ``row``."""
+    g = df.groupby("reference_key", sort=False)
+    return pd.DataFrame(
+        {
+            "references": g["reference_number"].apply(
+                lambda s: ", ".join(str(n) for n in sorted(set(s)))
+            ),
+            "rows": g.size(),
+            "clean": g["status"].apply(lambda s: int((s == "clean").sum())),
+            "first_row": g["row"].min(),
+            "last_row": g["row"].max(),
+        }
+    )
