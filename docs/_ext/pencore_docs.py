@@ -749,6 +749,23 @@ def compilation_sources_table() -> str:
     return "\n".join(lines)
 
 
+def compilation_duplicates_table() -> str:
+    """The concrete compilation's duplicates: per compiler's key of the row set aside and
+    of the row kept, the number of shots the two quote alike."""
+    from pencore.measured import compilation as comp
+
+    df = comp.read_compilation()
+    key = dict(zip(df["row"], df["reference_key"], strict=True))
+    dup = df[df["same_shot_as"].notna()]
+    pairs = pd.Series(
+        [(key[int(k)], r) for k, r in zip(dup["same_shot_as"], dup["reference_key"], strict=True)]
+    ).value_counts(sort=False)
+    lines = ["| kept (key) | set aside as its duplicate (key) | shots |", "|---|---|---|"]
+    for (kept, other), n in sorted(pairs.items(), key=lambda kv: (-kv[1], kv[0])):
+        lines.append(f"| {kept} | {other} | {n} |")
+    return "\n".join(lines)
+
+
 def compilation_numbers() -> dict[str, str]:
     """Counts of the concrete compilation for the prose."""
     from pencore.measured import compilation as comp
@@ -1076,6 +1093,7 @@ PAGES: dict[str, Callable[[], str]] = {
     "concrete.md": concrete_table,
     "compilation_reasons.md": compilation_reasons_table,
     "compilation_sources.md": compilation_sources_table,
+    "compilation_duplicates.md": compilation_duplicates_table,
     "layers.md": layers_table,
     "measurement_options.md": measurement_options_table,
     "obliquity_ratio.md": obliquity_ratio_table,

@@ -155,6 +155,20 @@ def test_clean_rows_count(df):
     assert len(clean) == 518 and len(simple) == 608
 
 
+def test_the_mass_bounds_sit_in_gaps_of_the_data(df):
+    """No compiled rod weighs 1.11 to 1.19 or 0.1 to 0.39 times the solid body of its
+    outline: the bounds (1.15 and 0.3) do not cut through a group of rows."""
+    ratio = np.array(
+        [
+            r.mass_kg / comp.solid_mass(r.diameter_m, r.length_m, r.crh, r.projectile_density_kg_m3)
+            for r in df.itertuples()
+        ]
+    )
+    assert not ((ratio > 1.11) & (ratio < 1.19)).any()
+    assert not ((ratio > 0.1) & (ratio < 0.39)).any()
+    assert comp.MASS_RATIO_MIN < 0.39 and 1.11 < comp.MASS_RATIO_MAX < 1.19
+
+
 def test_non_number_cells_are_kept_visible(df):
     raw = [comp.parse_raw_cells(t) for t in df["raw_cells"]]
     cells = [(n, c, v) for n, r in zip(df["row"], raw, strict=True) for c, v in r.items()]

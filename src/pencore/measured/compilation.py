@@ -176,9 +176,10 @@ MASS_RATIO_MIN = 0.3
 #: Depth above this fraction of the target's thickness: the rear face (scabbing, bulging,
 #: a release from the free surface) takes part, and the target is not a half-space.
 DEPTH_THICKNESS_MAX = 0.7
-#: Depth below this many diameters: the nose is not buried (a CRH 0.5 nose is half a
-#: diameter long, a CRH 3 nose 1.66), so the shot is all crater, the near-surface region
-#: every rigid law models apart from the tunnel.
+#: Depth below this many diameters: the shot ends inside the entry crater, the region every
+#: rigid law models apart from the tunnel (Forrestal's crater is 2 diameters deep, Li &
+#: Chen's 0.707 + H/d with H the nose length), so cratering, not the tunnel's resistance,
+#: decides it.
 SHALLOW_CALIBRES = 1.0
 #: Striking speed below this (m/s): missile impacts of tens of m/s on slabs, where the slab
 #: and the crater respond (the data of the empirical missile formulas), not a tunnel.
