@@ -66,6 +66,14 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
                 help="the crater region by name: none (default), forrestal (2 calibers), "
                 "li_chen (0.707 + H/d calibers, H the nose length: set with the projectile)",
             )
+            q.add_argument(
+                "--size-term",
+                dest="size_term",
+                choices=("none", "fit"),
+                help="none (default), or fit: S falls with the projectile diameter, "
+                "S(fc) ((1 + d_ref/d0) / (1 + d/d0))^0.5, a declared fit (set with the "
+                "projectile)",
+            )
         if law == "metal":
             q.add_argument(
                 "--inertia",
@@ -100,7 +108,7 @@ def run(args: argparse.Namespace) -> int:
         if getattr(args, dest) is not None
     }
     if args.law == "concrete":
-        for key in ("s_model", "crater"):
+        for key in ("s_model", "crater", "size_term"):
             if getattr(args, key) is not None:
                 kwargs[key] = getattr(args, key)
     if args.law == "metal":
@@ -120,6 +128,13 @@ def run(args: argparse.Namespace) -> int:
         print(f"crater:  {medium.crater_depth:g} calibers")
     if medium.crater_rule == "li_chen":
         print("crater:  0.707 + H/d calibers (H the nose length; set with the projectile)")
+    if medium.size_term is not None:
+        t = medium.size_term
+        print(
+            f"size:    a0 above is at d_ref = {t.d_ref:g} m; times "
+            f"((1 + d_ref/d0) / (1 + d/d0))^{t.exponent:g}, d0 = {t.d0:.4g} m, with the "
+            "projectile's diameter d"
+        )
     if medium.plastic_zone_ratio:
         print(f"plastic zone ratio (finite sphere): {medium.plastic_zone_ratio:.6g}")
     print(f"source:  {medium.source}")

@@ -74,10 +74,12 @@ Pa); a value inside it but outside the range a law was built on gives a
 
 from __future__ import annotations
 
+import functools
 import math
 import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -85,7 +87,7 @@ import numpy as np
 from pencore.errors import InputError, PlausibilityWarning, TargetError
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import LIMITS, _caller_level, as_float, check_keys, number
-from pencore.inputs.target import Medium
+from pencore.inputs.target import Medium, SizeTerm
 
 __all__ = [
     "LAWS",
@@ -95,6 +97,7 @@ __all__ = [
     "compressible_inertia",
     "forrestal_s",
     "li_chen_s",
+    "size_term_constants",
     "concrete_law",
     "metal_law",
     "soil_law",
@@ -120,6 +123,22 @@ S_MODELS = ("forrestal", "li_chen")
 CRATERS = ("none", "forrestal", "li_chen")
 #: Forrestal's crater region (calibers; Forrestal et al., IJIE 15 (1994) 395-405).
 FORRESTAL_CRATER = 2.0
+#: The named size terms of :func:`concrete_law`'s ``size_term``.
+SIZE_TERMS = ("none", "fit")
+#: The constants of the declared size-term fit, with their provenance.
+SIZE_TERM_FILE = Path(__file__).parent / "data" / "concrete_size_term.yaml"
+
+
+@functools.lru_cache(maxsize=1)
+def size_term_constants() -> dict[str, Any]:
+    """The size term's constants file (:data:`SIZE_TERM_FILE`): ``d_ref_m``,
+    ``exponent``, the rows and files it was fitted to, and per ``"s_model/crater"`` the
+    fitted ``d0_m`` (see :mod:`pencore.studies.validation.size_term`)."""
+    import yaml
+
+    return yaml.safe_load(SIZE_TERM_FILE.read_text())
+
+
 #: The compressive strengths (Pa) of the Sandia/WES shots of Forrestal's family (12.9 to
 #: 76.2 mm steel rods into grout and concrete), the range the concrete form was built on:
 #: 13.5 to 108 MPa (the secondary compilation DavidZyh-0319/Concrete-Penetration-Failure-
@@ -223,6 +242,7 @@ def concrete_law(
     friction: float = 0.0,
     s_model: str | None = None,
     crater: str | None = None,
+    size_term: str | None = None,
 ) -> Medium:
     """A concrete or grout by Forrestal's form, ``sigma_n = S fc + rho Vn^2``.
 
@@ -253,6 +273,15 @@ def concrete_law(
         the projectile when a run is prepared,
         :meth:`~pencore.inputs.target.Medium.for_projectile`).
         Give it or ``crater_depth``, not both.
+    size_term : {"none", "fit"}, optional
+        ``"fit"``: ``S`` falls with the projectile diameter, ``S(fc) f(d)`` with
+        ``f = ((1 + d_ref/d0) / (1 + d/d0))^1/2`` (the form of Bazant's size-effect law), 1
+        at ``d_ref = 25 mm``; ``d0`` a declared fit per ``s_model`` and ``crater`` to the
+        Sandia/WES shots and Wu et al.'s scaled series
+        (:mod:`pencore.studies.validation.size_term`, :data:`SIZE_TERM_FILE`), applied with
+        the projectile's diameter when a run is prepared. Not a published law. Needs ``S``
+        from fc (not a given ``s``) and a named crater (not ``crater_depth``). Default
+        ``"none"``.
 
     Returns
     -------
@@ -322,6 +351,29 @@ def concrete_law(
         elif crater == "li_chen":
             crater_rule = "li_chen"
             s_from += "; crater 0.707 + H/d calibers (Li & Chen 2003, Eq. 25)"
+    term = None
+    if size_term is not None and _choice(size_term, "size_term", SIZE_TERMS) == "fit":
+        if s is not None or crater_depth not in (0, 0.0):
+            given = f"s = {brief(s)}" if s is not None else f"crater_depth = {brief(crater_depth)}"
+            raise TargetError(
+                f"{what}: size_term 'fit' was fitted with S from fc and a named crater, not "
+                f"with a given {given.split(' = ')[0]} ({given})"
+            )
+        spec = size_term_constants()
+        key = f"{model}/{crater or 'none'}"
+        d0 = float(spec["constants"][key]["d0_m"])
+        term = SizeTerm(
+            d_ref=float(spec["d_ref_m"]),
+            d0=d0,
+            exponent=float(spec["exponent"]),
+            source=f"declared fit {key}, d0 = {d0:.4g} m ({spec['fitted_by']}, {spec['date']})",
+            s_ref=s_val,
+        )
+        s_from += (
+            f"; size term f(d) = ((1 + d_ref/d0) / (1 + d/d0))^{float(spec['exponent']):g}, "
+            f"d_ref = {float(spec['d_ref_m']):g} m, d0 = {d0:.4g} m (declared fit {key}; "
+            "set with the projectile)"
+        )
     return Medium(
         name,
         (s_val * fc, 0.0, rho),
@@ -332,6 +384,7 @@ def concrete_law(
         f"rho = {rho:g} kg/m3, {s_from}",
         crater_depth=crater_depth,
         crater_rule=crater_rule,
+        size_term=term,
     )
 
 
@@ -741,7 +794,7 @@ LAWS: dict[str, tuple[Any, tuple[str, ...], tuple[str, ...]]] = {
     "concrete": (
         concrete_law,
         ("fc", "density"),
-        ("s", "crater_depth", "friction", "s_model", "crater"),
+        ("s", "crater_depth", "friction", "s_model", "crater", "size_term"),
     ),
     "metal": (
         metal_law,
