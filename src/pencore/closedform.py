@@ -358,6 +358,7 @@ def depth(projectile: Projectile, medium: Medium, velocity: float) -> float:
     """
     if medium.free_surface_depth > 0.0:
         raise InputError("closed forms have no free-surface reduction")
+    medium = medium.for_projectile(projectile.diameter, projectile.nose_length)
     if medium.crater_depth > 0.0:
         return forrestal_crater_depth(projectile, medium, velocity, medium.crater_depth)
     v1, z = nose_entry_speed(projectile, medium, velocity)

@@ -52,6 +52,28 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
             q.add_argument(
                 flag, dest=dest, metavar=metavar, required=dest not in _OPTIONAL, help=text
             )
+        if law == "concrete":
+            q.add_argument(
+                "--s-model",
+                dest="s_model",
+                choices=("forrestal", "li_chen"),
+                help="S from fc when --s is not given: forrestal, 82.6 fc^-0.544 (default); "
+                "li_chen, 72 fc^-0.5 (Li & Chen 2003, Eq. 21)",
+            )
+            q.add_argument(
+                "--crater",
+                choices=("none", "forrestal", "li_chen"),
+                help="the crater region by name: none (default), forrestal (2 calibers), "
+                "li_chen (0.707 + H/d calibers, H the nose length: set with the projectile)",
+            )
+            q.add_argument(
+                "--size-term",
+                dest="size_term",
+                choices=("none", "fit"),
+                help="none (default), or fit: S falls with the projectile diameter, "
+                "S(fc) ((1 + d_ref/d0) / (1 + d/d0))^0.5, a declared fit (set with the "
+                "projectile)",
+            )
         if law == "metal":
             q.add_argument(
                 "--inertia",
@@ -85,6 +107,10 @@ def run(args: argparse.Namespace) -> int:
         for _, dest, _, _ in _OPTIONS[args.law]
         if getattr(args, dest) is not None
     }
+    if args.law == "concrete":
+        for key in ("s_model", "crater", "size_term"):
+            if getattr(args, key) is not None:
+                kwargs[key] = getattr(args, key)
     if args.law == "metal":
         kwargs["inertia"] = args.inertia
         if args.inertia == "compressible":
@@ -100,6 +126,15 @@ def run(args: argparse.Namespace) -> int:
     print(f"density: {medium.density:g} kg/m^3")
     if medium.crater_depth:
         print(f"crater:  {medium.crater_depth:g} calibers")
+    if medium.crater_rule == "li_chen":
+        print("crater:  0.707 + H/d calibers (H the nose length; set with the projectile)")
+    if medium.size_term is not None:
+        t = medium.size_term
+        print(
+            f"size:    a0 above is at d_ref = {t.d_ref:g} m; times "
+            f"((1 + d_ref/d0) / (1 + d/d0))^{t.exponent:g}, d0 = {t.d0:.4g} m, with the "
+            "projectile's diameter d"
+        )
     if medium.plastic_zone_ratio:
         print(f"plastic zone ratio (finite sphere): {medium.plastic_zone_ratio:.6g}")
     print(f"source:  {medium.source}")

@@ -207,6 +207,11 @@ def summary_fields(ds: Any, args: argparse.Namespace) -> list[Field]:
         ),
         Field("mass", "mass", float(a["mass_kg"]), "kg", **data),
         Field("target", "target", str(a["target"])),
+        *(
+            [Field("law_resolved", "law", str(a["law_resolved"]))]
+            if "law_resolved" in a
+            else []
+        ),
         Field(
             "impact",
             "impact",

@@ -74,10 +74,12 @@ Pa); a value inside it but outside the range a law was built on gives a
 
 from __future__ import annotations
 
+import functools
 import math
 import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -85,7 +87,7 @@ import numpy as np
 from pencore.errors import InputError, PlausibilityWarning, TargetError
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import LIMITS, _caller_level, as_float, check_keys, number
-from pencore.inputs.target import Medium
+from pencore.inputs.target import Medium, SizeTerm
 
 __all__ = [
     "LAWS",
@@ -94,6 +96,8 @@ __all__ = [
     "CompressibleInertia",
     "compressible_inertia",
     "forrestal_s",
+    "li_chen_s",
+    "size_term_constants",
     "concrete_law",
     "metal_law",
     "soil_law",
@@ -108,6 +112,33 @@ S_FC_SOURCE = (
     "Frew, Hanchak, Green & Forrestal, IJIE 21 (1998) 489-497, as quoted by Li & Chen, "
     "IJIE 28 (2003) 93-116"
 )
+#: Source of ``S = 72 fc^-0.5`` (secondary: the paper itself was not read here).
+S_LI_CHEN_SOURCE = (
+    "Li & Chen, IJIE 28 (2003) 93-116, Eq. 21, as quoted (secondary) by "
+    "github.com/endofwave/engineering-tools, content/series-a/a4-penetration-depth"
+)
+#: The named ``S(fc)`` forms of :func:`concrete_law`'s ``s_model``.
+S_MODELS = ("forrestal", "li_chen")
+#: The named crater options of :func:`concrete_law`'s ``crater``.
+CRATERS = ("none", "forrestal", "li_chen")
+#: Forrestal's crater region (calibers; Forrestal et al., IJIE 15 (1994) 395-405).
+FORRESTAL_CRATER = 2.0
+#: The named size terms of :func:`concrete_law`'s ``size_term``.
+SIZE_TERMS = ("none", "fit")
+#: The constants of the declared size-term fit, with their provenance.
+SIZE_TERM_FILE = Path(__file__).parent / "data" / "concrete_size_term.yaml"
+
+
+@functools.lru_cache(maxsize=1)
+def size_term_constants() -> dict[str, Any]:
+    """The size term's constants file (:data:`SIZE_TERM_FILE`): ``d_ref_m``,
+    ``exponent``, the rows and files it was fitted to, and per ``"s_model/crater"`` the
+    fitted ``d0_m`` (see :mod:`pencore.studies.validation.size_term`)."""
+    import yaml
+
+    return yaml.safe_load(SIZE_TERM_FILE.read_text())
+
+
 #: The compressive strengths (Pa) of the Sandia/WES shots of Forrestal's family (12.9 to
 #: 76.2 mm steel rods into grout and concrete), the range the concrete form was built on:
 #: 13.5 to 108 MPa (the secondary compilation DavidZyh-0319/Concrete-Penetration-Failure-
@@ -167,6 +198,40 @@ def forrestal_s(fc: float) -> float:
     return 82.6 * (fc / 1e6) ** -0.544
 
 
+def li_chen_s(fc: float) -> float:
+    """Li & Chen's strength factor from the compressive strength, ``S = 72 fc^-0.5``.
+
+    Parameters
+    ----------
+    fc : float
+        Unconfined compressive strength (Pa); the form takes it in MPa.
+
+    Returns
+    -------
+    float
+        ``S`` (dimensionless). Source: :data:`S_LI_CHEN_SOURCE` (their Eq. 21, a
+        simplification of ``82.6 fc^-0.544`` that makes their impact number go as
+        ``fc^-1/2``; fitted to the same Sandia/WES shots, not to new ones).
+
+    Examples
+    --------
+    >>> from pencore.inputs.laws import li_chen_s
+    >>> print(f"{li_chen_s(36e6):.2f}")
+    12.00
+    """
+    fc = _value(fc, "fc", "concrete law", "fc")
+    return 72.0 * (fc / 1e6) ** -0.5
+
+
+def _choice(value: Any, key: str, choices: tuple[str, ...]) -> str:
+    """``value`` if it names one of ``choices``, else a one-line :class:`TargetError`."""
+    if not isinstance(value, str) or value not in choices:
+        raise TargetError(
+            f"concrete law: {key} must be one of {', '.join(choices)}, got {brief(value)}"
+        )
+    return value
+
+
 def concrete_law(
     fc: float,
     density: float,
@@ -175,6 +240,9 @@ def concrete_law(
     name: str = "concrete",
     crater_depth: float = 0.0,
     friction: float = 0.0,
+    s_model: str | None = None,
+    crater: str | None = None,
+    size_term: str | None = None,
 ) -> Medium:
     """A concrete or grout by Forrestal's form, ``sigma_n = S fc + rho Vn^2``.
 
@@ -185,15 +253,35 @@ def concrete_law(
     density : float
         Target density ``rho`` (kg/m^3).
     s : float, optional
-        Forrestal's ``S`` when measured (fitted to shots); default
-        :func:`~pencore.inputs.laws.forrestal_s`.
+        Forrestal's ``S`` when measured (fitted to shots); default from ``s_model``.
     name : str
         The medium's label.
     crater_depth : float
         Forrestal's crater region in calibers (0: off; Forrestal: 2), see
-        :class:`~pencore.inputs.target.Medium`.
+        :class:`~pencore.inputs.target.Medium`; or name it with ``crater``.
     friction : float
         Constant Coulomb friction coefficient (default 0).
+    s_model : {"forrestal", "li_chen"}, optional
+        ``S`` from fc when ``s`` is not given: ``"forrestal"`` (the default),
+        ``S = 82.6 fc^-0.544`` (:func:`forrestal_s`); ``"li_chen"``, ``S = 72 fc^-0.5``
+        (:func:`li_chen_s`). Both are fits to the same Sandia/WES shots of 12.9-76.2 mm
+        rods; neither has a size term.
+    crater : {"none", "forrestal", "li_chen"}, optional
+        The crater region by name: ``"none"`` (the paper's model, the default),
+        ``"forrestal"`` (2 calibers, Forrestal et al. 1994), ``"li_chen"``
+        (``0.707 + H/d`` calibers, Li & Chen 2003 Eq. 25, H the nose length: resolved with
+        the projectile when a run is prepared,
+        :meth:`~pencore.inputs.target.Medium.for_projectile`).
+        Give it or ``crater_depth``, not both.
+    size_term : {"none", "fit"}, optional
+        ``"fit"``: ``S`` falls with the projectile diameter, ``S(fc) f(d)`` with
+        ``f = ((1 + d_ref/d0) / (1 + d/d0))^1/2`` (the form of Bazant's size-effect law), 1
+        at ``d_ref = 25 mm``; ``d0`` a declared fit per ``s_model`` and ``crater`` to the
+        Sandia/WES shots and Wu et al.'s scaled series
+        (:mod:`pencore.studies.validation.size_term`, :data:`SIZE_TERM_FILE`), applied with
+        the projectile's diameter when a run is prepared. Not a published law. Needs ``S``
+        from fc (not a given ``s``) and a named crater (not ``crater_depth``). Default
+        ``"none"``.
 
     Returns
     -------
@@ -237,12 +325,55 @@ def concrete_law(
         "the range of the measured shots the form was built on (S(fc) is extrapolated)",
     )
     _plausible(rho, *CONCRETE_DENSITY, "density", "kg/m^3", "that of grouts and concretes")
-    if s is None:
+    if s is not None and s_model is not None:
+        raise TargetError(f"{what}: give s or s_model, not both (s = {brief(s)})")
+    model = "forrestal" if s_model is None else _choice(s_model, "s_model", S_MODELS)
+    if s is None and model == "li_chen":
+        s_val = li_chen_s(fc)
+        s_from = f"S = 72 fc^-0.5 = {s_val:.4g} (fc in MPa; {S_LI_CHEN_SOURCE})"
+    elif s is None:
         s_val = forrestal_s(fc)
         s_from = f"S = 82.6 fc^-0.544 = {s_val:.4g} (fc in MPa; {S_FC_SOURCE})"
     else:
         s_val = _value(s, "s_factor", what, "S")
         s_from = f"S = {s_val:g} given"
+    crater_rule = ""
+    if crater is not None:
+        crater = _choice(crater, "crater", CRATERS)
+        if crater_depth not in (0, 0.0):
+            raise TargetError(
+                f"{what}: give crater or crater_depth, not both "
+                f"(crater_depth = {brief(crater_depth)})"
+            )
+        if crater == "forrestal":
+            crater_depth = FORRESTAL_CRATER
+            s_from += "; crater 2 calibers (Forrestal et al., IJIE 15 (1994) 395-405)"
+        elif crater == "li_chen":
+            crater_rule = "li_chen"
+            s_from += "; crater 0.707 + H/d calibers (Li & Chen 2003, Eq. 25)"
+    term = None
+    if size_term is not None and _choice(size_term, "size_term", SIZE_TERMS) == "fit":
+        if s is not None or crater_depth not in (0, 0.0):
+            given = f"s = {brief(s)}" if s is not None else f"crater_depth = {brief(crater_depth)}"
+            raise TargetError(
+                f"{what}: size_term 'fit' was fitted with S from fc and a named crater, not "
+                f"with a given {given.split(' = ')[0]} ({given})"
+            )
+        spec = size_term_constants()
+        key = f"{model}/{crater or 'none'}"
+        d0 = float(spec["constants"][key]["d0_m"])
+        term = SizeTerm(
+            d_ref=float(spec["d_ref_m"]),
+            d0=d0,
+            exponent=float(spec["exponent"]),
+            source=f"declared fit {key}, d0 = {d0:.4g} m ({spec['fitted_by']}, {spec['date']})",
+            s_ref=s_val,
+        )
+        s_from += (
+            f"; size term f(d) = ((1 + d_ref/d0) / (1 + d/d0))^{float(spec['exponent']):g}, "
+            f"d_ref = {float(spec['d_ref_m']):g} m, d0 = {d0:.4g} m (declared fit {key}; "
+            "set with the projectile)"
+        )
     return Medium(
         name,
         (s_val * fc, 0.0, rho),
@@ -252,6 +383,8 @@ def concrete_law(
         f"concrete law (Forrestal): S fc + rho Vn^2, fc = {fc / 1e6:g} MPa, "
         f"rho = {rho:g} kg/m3, {s_from}",
         crater_depth=crater_depth,
+        crater_rule=crater_rule,
+        size_term=term,
     )
 
 
@@ -658,7 +791,11 @@ soil = soil_law
 
 #: Law name -> (function, YAML keys: required, optional).
 LAWS: dict[str, tuple[Any, tuple[str, ...], tuple[str, ...]]] = {
-    "concrete": (concrete_law, ("fc", "density"), ("s", "crater_depth", "friction")),
+    "concrete": (
+        concrete_law,
+        ("fc", "density"),
+        ("s", "crater_depth", "friction", "s_model", "crater", "size_term"),
+    ),
     "metal": (
         metal_law,
         ("youngs_modulus", "poisson_ratio", "yield_strength", "hardening_exponent", "density"),

@@ -54,6 +54,15 @@ rear face of the last plate), one factor per free face:
 The ring kernel evaluates the free-surface factor at the centre of each surface ring
 (exact for a ring parallel to the surface, i.e. normal incidence); the load-point kernels
 at each point.
+
+Parts that depend on the projectile (off by default). A medium may carry a law whose
+numbers need the projectile: the crater depth of Li & Chen (``crater_rule="li_chen"``:
+``k = 0.707 + H/d`` calibers, H the nose length) and a size term
+(:class:`SizeTerm`: the static coefficient ``a0`` times ``f(d)``). Such a medium is
+resolved for a projectile by :meth:`Medium.for_projectile` (what
+:func:`pencore.run.impact.prepare` and :func:`pencore.closedform.depth` do): the result
+is a plain medium whose ``source`` states the diameter, the factor and the resolved
+numbers, so a run's Dataset records what was used. The kernels never see the rule.
 """
 
 from __future__ import annotations
@@ -71,6 +80,8 @@ from pencore.inputs.limits import as_float, count, number, plausible
 
 __all__ = [
     "WINDOW_COLUMNS",
+    "LI_CHEN_CRATER",
+    "SizeTerm",
     "Medium",
     "Layer",
     "Target",
@@ -85,6 +96,73 @@ WINDOW_COLUMNS = 10
 #: polynomial, its smoothed step (one degree more) and the Jacobian's moments (three
 #: more) in arrays of ``pencore.kernels.arcs._MAXD + 2`` entries (tests/run/test_impact.py checks).
 MAX_COEFFICIENTS = 8
+
+
+#: Li & Chen's crater depth ``k = 0.707 + H/d`` (their Eq. 25): the 0.707 calibers of the
+#: Prandtl slip depth of a flat punch, plus the nose length over the diameter. Source:
+#: Q.M. Li & X.W. Chen, "Dimensionless formulae for penetration depth of concrete target
+#: impacted by a non-deformable projectile", IJIE 28 (2003) 93-116, as quoted (secondary)
+#: by github.com/endofwave/engineering-tools, content/series-a/a4-penetration-depth.
+LI_CHEN_CRATER = 0.707
+#: Crater rules a medium may carry ("" : the crater depth as given).
+CRATER_RULES = ("", "li_chen")
+
+
+@dataclass(frozen=True)
+class SizeTerm:
+    """A size term on the static resistance: ``a0(d) = a0 f(d)``, of the form of
+    Bazant's size-effect law (Z.P. Bazant, "Size effect in blunt fracture: concrete, rock,
+    metal", J. Eng. Mech. 110 (1984) 518-535: a nominal strength falling as
+    ``(1 + D/D0)^-1/2``), normalised to 1 at a reference diameter::
+
+        f(d) = ((1 + d_ref / d0) / (1 + d / d0)) ** exponent
+
+    Parameters
+    ----------
+    d_ref : float
+        Reference diameter (m) at which the law without the term holds (``f = 1``).
+    d0 : float
+        Transitional diameter (m) of the size-effect law: ``f`` falls as ``d^-exponent``
+        well above it and tends to a constant well below it.
+    exponent : float
+        0.5 in Bazant's law.
+    source : str
+        Where the constants come from (a fit: which rows, which function, when).
+    s_ref : float
+        The medium's ``S`` at ``d_ref`` (dimensionless; NaN when not known), for reporting
+        the resolved ``S = s_ref f(d)``.
+
+    Examples
+    --------
+    >>> from pencore.inputs.target import SizeTerm
+    >>> t = SizeTerm(d_ref=0.025, d0=0.05, exponent=0.5)
+    >>> print(f"{t.factor(0.025):.3f} {t.factor(0.2):.3f}")
+    1.000 0.548
+    """
+
+    d_ref: float
+    d0: float
+    exponent: float = 0.5
+    source: str = ""
+    s_ref: float = float("nan")
+
+    def __post_init__(self) -> None:
+        for key in ("d_ref", "d0"):
+            v = as_float(getattr(self, key), allow_str=False)
+            if v is None or not (math.isfinite(v) and v > 0.0):
+                raise TargetError(
+                    f"size term: {key} must be a positive number of m, got "
+                    f"{brief(getattr(self, key))}"
+                )
+            object.__setattr__(self, key, v)
+        e = as_float(self.exponent, allow_str=False)
+        if e is None or not 0.0 <= e <= 1.0:
+            raise TargetError(f"size term: exponent must be in [0, 1], got {brief(self.exponent)}")
+        object.__setattr__(self, "exponent", e)
+
+    def factor(self, diameter: float) -> float:
+        """``f(d)`` (dimensionless) at the projectile ``diameter`` (m); 1 at ``d_ref``."""
+        return ((1.0 + self.d_ref / self.d0) / (1.0 + diameter / self.d0)) ** self.exponent
 
 
 def _check(key: str, value: float, what: str, plausibility: bool = True) -> float:
@@ -121,6 +199,11 @@ class Medium:
         Free-surface reduction from the spherical cavity in a finite sphere (Hill 1950):
         the plastic-zone radius over the cavity radius, ``c/a`` of the half-space law
         (0: off; otherwise > 1); see the module docstring.
+    crater_rule : {"", "li_chen"}
+        ``"li_chen"``: the crater depth is Li & Chen's ``0.707 + H/d`` calibers, set by
+        :meth:`for_projectile` (then ``crater_depth`` must be 0); ``""``: as given.
+    size_term : SizeTerm, optional
+        A size term on ``a0``, applied by :meth:`for_projectile`.
 
     Raises
     ------
@@ -148,9 +231,17 @@ class Medium:
     crater_depth: float = 0.0
     free_surface_depth: float = 0.0
     plastic_zone_ratio: float = 0.0
+    crater_rule: str = ""
+    size_term: SizeTerm | None = None
 
     def __post_init__(self) -> None:
         what = f"medium {brief(self.name)}"
+        if self.crater_rule not in CRATER_RULES:
+            raise TargetError(
+                f"{what}: crater_rule must be 'li_chen' or empty, got {brief(self.crater_rule)}"
+            )
+        if self.size_term is not None and not isinstance(self.size_term, SizeTerm):
+            raise TargetError(f"{what}: size_term must be a SizeTerm, got {brief(self.size_term)}")
         for key in ("crater_depth", "free_surface_depth", "plastic_zone_ratio"):
             object.__setattr__(self, key, _check(key, getattr(self, key), what))
         if 0.0 < self.plastic_zone_ratio <= 1.0:
@@ -194,6 +285,63 @@ class Medium:
             _check("medium_density", self.density, what)
         object.__setattr__(self, "friction_speeds", sp)
         object.__setattr__(self, "friction_mu", mu)
+        if self.crater_rule and self.crater_depth > 0.0:
+            raise TargetError(
+                f"{what}: give crater_depth or the crater rule {self.crater_rule!r}, not both "
+                f"(crater_depth = {self.crater_depth:g})"
+            )
+
+    @property
+    def needs_projectile(self) -> bool:
+        """True when a part of the law depends on the projectile (a crater rule or a size
+        term): resolve it with :meth:`for_projectile` before a run."""
+        return bool(self.crater_rule) or self.size_term is not None
+
+    def for_projectile(self, diameter: float, nose_length: float) -> Medium:
+        """This medium resolved for a projectile: the crater rule's depth and the size
+        term's factor applied, as a plain medium whose ``source`` says what was used.
+
+        Parameters
+        ----------
+        diameter : float
+            Projectile diameter ``d`` (m).
+        nose_length : float
+            Nose length ``H`` (m).
+
+        Returns
+        -------
+        Medium
+            Itself when nothing depends on the projectile; otherwise a copy with
+            ``crater_depth = 0.707 + H/d`` (rule ``li_chen``) and ``a0`` times ``f(d)``
+            (size term), with no rule and no size term left.
+
+        Examples
+        --------
+        >>> import pencore
+        >>> m = pencore.concrete_law(40e6, 2300.0, crater="li_chen")
+        >>> r = m.for_projectile(0.0269, 0.0269 * 1.75**0.5)
+        >>> print(f"k = {r.crater_depth:.4f}")
+        k = 2.0299
+        """
+        if not self.needs_projectile:
+            return self
+        d = _check("diameter", diameter, f"medium {brief(self.name)}")
+        notes = [f"resolved for d = {d:g} m"]
+        changes: dict = {"crater_rule": "", "size_term": None}
+        if self.crater_rule == "li_chen":
+            k = LI_CHEN_CRATER + float(nose_length) / d
+            changes["crater_depth"] = k
+            notes.append(f"crater k = 0.707 + H/d = {k:.4g} calibers (H = {nose_length:g} m)")
+        if self.size_term is not None:
+            f = self.size_term.factor(d)
+            c = list(self.coefficients)
+            c[0] *= f
+            changes["coefficients"] = tuple(c)
+            s_ref = self.size_term.s_ref
+            s_note = f", S = {s_ref * f:.4g}" if math.isfinite(s_ref) else ""
+            notes.append(f"size term f(d) = {f:.4g}, a0 = {c[0]:.4g} Pa{s_note}")
+        changes["source"] = f"{self.source}; {'; '.join(notes)}"
+        return replace(self, **changes)
 
     @property
     def frictionless(self) -> bool:
@@ -432,6 +580,25 @@ class Target:
         )
         return Target(self.name, layers)
 
+    @property
+    def needs_projectile(self) -> bool:
+        """True when a medium's law depends on the projectile (:meth:`Medium.for_projectile`)."""
+        return any(lay.medium.needs_projectile for lay in self.solid_layers)
+
+    def for_projectile(self, diameter: float, nose_length: float) -> Target:
+        """This target with every medium resolved for a projectile of ``diameter`` (m) and
+        nose length ``nose_length`` (m) (:meth:`Medium.for_projectile`); itself when no
+        medium depends on the projectile."""
+        if not self.needs_projectile:
+            return self
+        layers = tuple(
+            lay
+            if lay.is_gap
+            else Layer(lay.medium.for_projectile(diameter, nose_length), lay.thickness)
+            for lay in self.layers
+        )
+        return Target(self.name, layers)
+
     def check_plates(self, diameter: float) -> None:
         """Warn (:class:`~pencore.PlausibilityWarning`) for each finite layer thinner than
         the plausible plate (:data:`~pencore.inputs.limits.PLAUSIBLE` ``"plate"``, in
@@ -485,6 +652,11 @@ class Target:
             embedded: ``k d >= L_n``).
         """
         solid = self.solid_layers
+        if self.needs_projectile:
+            raise TargetError(
+                f"target {brief(self.name)}: a medium's law depends on the projectile (a crater "
+                "rule or a size term); resolve it first (Target.for_projectile)"
+            )
         n = len(solid)
         p = max(len(lay.medium.coefficients) for lay in solid)
         k = max(len(lay.medium.friction_speeds) for lay in solid)

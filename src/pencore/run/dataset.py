@@ -56,6 +56,19 @@ def _layer_dict(lay: Any) -> dict[str, Any]:
     }
 
 
+def _law_resolved(t: Target) -> dict[str, str]:
+    """``law_resolved``: what a law that depends on the projectile was resolved to (the
+    diameter, the crater depth, the size term's factor and ``S``:
+    :meth:`pencore.inputs.target.Medium.for_projectile`), per medium; absent otherwise (a
+    default run records what it always did)."""
+    notes = [
+        f"{lay.medium.name}: {lay.medium.source.split('; resolved for ', 1)[1]}"
+        for lay in t.solid_layers
+        if "; resolved for " in lay.medium.source
+    ]
+    return {"law_resolved": "resolved for " + " | ".join(notes)} if notes else {}
+
+
 def _target_dict(t: Target) -> dict[str, Any]:
     return {"name": t.name, "layers": [_layer_dict(lay) for lay in t.layers]}
 
@@ -349,6 +362,7 @@ def trajectory_dataset(
             "pencore_version": __version__,
             "Conventions": "CF-1.8",
             **peaks,
+            **_law_resolved(target),
         },
     )
     if run.outcome == "perforated":

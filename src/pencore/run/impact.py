@@ -127,7 +127,9 @@ def prepare(
             "use method 'rosenbrock'"
         )
     p = get_projectile(projectile)
-    t = get_target(target)
+    # a law that depends on the projectile (a crater rule, a size term) resolved for it:
+    # the run's Dataset records the resolved medium and its source
+    t = get_target(target).for_projectile(p.diameter, p.nose_length)
     t.check_plates(p.diameter)
     mp = p.mass_properties()
     ring_set = p.rings(num.n_nose, num.n_shank, num.n_face)
