@@ -20,7 +20,7 @@ from pencore.inputs import laws
 from pencore.inputs.gate import load_yaml_text
 from pencore.inputs.library import target_from_dict
 from pencore.inputs.target import SizeTerm
-from pencore.paper.shots import read_body_shot_table
+from pencore.measured.shots import read_body_shot_table
 from pencore.studies.validation import size_term
 
 ROOT = Path(__file__).resolve().parents[3]

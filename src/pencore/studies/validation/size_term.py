@@ -43,7 +43,7 @@ import pandas as pd
 from pencore.closedform import depth
 from pencore.errors import InputError, PlausibilityWarning
 from pencore.inputs.laws import CRATERS, S_MODELS, concrete_law, size_term_constants
-from pencore.paper.shots import read_body_shot_table
+from pencore.measured.shots import read_body_shot_table
 from pencore.studies.validation.bodies import body_projectile
 
 __all__ = ["SizeFit", "fit_rows", "implied_factor", "fit_size_term", "fit_all"]
