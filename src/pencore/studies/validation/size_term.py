@@ -36,6 +36,7 @@ import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -46,7 +47,15 @@ from pencore.inputs.laws import CRATERS, S_MODELS, concrete_law, size_term_const
 from pencore.measured.shots import read_body_shot_table
 from pencore.studies.validation.bodies import body_projectile
 
-__all__ = ["SizeFit", "fit_rows", "implied_factor", "fit_size_term", "fit_all"]
+__all__ = [
+    "SizeFit",
+    "fit_rows",
+    "implied_factor",
+    "implied_factors",
+    "fit_d0",
+    "fit_size_term",
+    "fit_all",
+]
 
 #: Tolerances of the two solves (see the module notes).
 BRENT_TOL = 1e-10
@@ -145,11 +154,29 @@ def fit_size_term(
     -------
     SizeFit
     """
+    f = implied_factors(shots, s_model, crater)
+    return fit_d0(shots["diameter_m"].to_numpy(float), f, shots["row"], d_ref, exponent)
+
+
+def implied_factors(shots: pd.DataFrame, s_model: str, crater: str) -> np.ndarray:
+    """:func:`implied_factor` of every row (NaN where the option cannot score it)."""
+    return np.array([implied_factor(r, s_model, crater) for _, r in shots.iterrows()])
+
+
+def fit_d0(
+    diameter: np.ndarray,
+    factor: np.ndarray,
+    rows: Sequence[Any],
+    d_ref: float,
+    exponent: float = 0.5,
+) -> SizeFit:
+    """Fit ``d0`` to the implied factors ``factor`` (NaN: a row left out) of shots of the
+    given ``diameter`` (m); ``rows`` names them (module notes)."""
     from scipy.optimize import least_squares
 
-    f = np.array([implied_factor(r, s_model, crater) for _, r in shots.iterrows()])
+    f = np.asarray(factor, dtype=float)
     ok = np.isfinite(f)
-    d = shots["diameter_m"].to_numpy(float)[ok]
+    d = np.asarray(diameter, dtype=float)[ok]
     lf = np.log(f[ok])
 
     def residual(x: np.ndarray) -> np.ndarray:
@@ -162,7 +189,7 @@ def fit_size_term(
     return SizeFit(
         d0=float(math.exp(sol.x[0])),
         rows_used=int(ok.sum()),
-        rows_skipped=tuple(str(r) for r in shots["row"][~ok]),
+        rows_skipped=tuple(str(r) for r, k in zip(rows, ok, strict=True) if not k),
         rms_log_factor=float(np.sqrt(np.mean(sol.fun**2))),
         rms_log_factor_without=float(np.sqrt(np.mean(lf**2))),
     )
