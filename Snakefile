@@ -81,6 +81,7 @@ PLOTTING_CODE = plotting_source_hash()
 
 include: "workflow/rules/common.smk"
 include: "workflow/rules/validation.smk"
+include: "workflow/rules/record.smk"
 include: "workflow/rules/section4.smk"
 include: "workflow/rules/attribution.smk"
 include: "workflow/rules/ensemble.smk"

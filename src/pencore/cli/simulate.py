@@ -233,6 +233,15 @@ def summary_fields(ds: Any, args: argparse.Namespace) -> list[Field]:
         Field("final_deviation", "final deviation from normal", dev, "degree",
               text=f"{dev:.4g} deg"),
     ]  # fmt: skip
+    if "depth_band" in a:
+        band = ds["depth_band"].values if "depth_band" in ds else [math.nan, math.nan]
+        fields += [
+            Field("depth_band", "depth band (measured shots)", None, text=str(a["depth_band"]),
+                  in_data=False),
+            Field("depth_band_lo", "depth band, low end", float(band[0]), "m", **data),
+            Field("depth_band_hi", "depth band, high end", float(band[1]), "m", **data),
+            Field("depth_band_note", "depth band", str(a["depth_band"]), in_text=False),
+        ]  # fmt: skip
     if "peak_deceleration_m_s2" in a:
         fields += [
             Field(

@@ -87,6 +87,7 @@ import numpy as np
 from pencore.errors import InputError, PlausibilityWarning, TargetError
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import LIMITS, _caller_level, as_float, check_keys, number
+from pencore.inputs.record import DEFAULT_RECORD_LAW, RECORD_LAWS
 from pencore.inputs.target import Medium, SizeTerm
 
 __all__ = [
@@ -353,7 +354,11 @@ def concrete_law(
             crater_rule = "li_chen"
             s_from += "; crater 0.707 + H/d calibers (Li & Chen 2003, Eq. 25)"
     term = None
-    if size_term is not None and _choice(size_term, "size_term", SIZE_TERMS) == "fit":
+    if size_term is None:  # the default law: the record's (DEFAULT_RECORD_LAW) when S is a form
+        size_term = RECORD_LAWS[DEFAULT_RECORD_LAW]["size_term"]
+        if s is not None or crater_given:
+            size_term = "none"
+    if _choice(size_term, "size_term", SIZE_TERMS) == "fit":
         if s is not None or crater_given:
             given = f"s = {brief(s)}" if s is not None else f"crater_depth = {brief(crater_depth)}"
             raise TargetError(
@@ -386,7 +391,20 @@ def concrete_law(
         crater_depth=crater_depth,
         crater_rule=crater_rule,
         size_term=term,
+        fc=fc,
+        record_law=_record_law(s, crater_given, friction, model, crater, size_term),
     )
+
+
+def _record_law(
+    s: Any, crater_given: bool, friction: Any, model: str, crater: str | None, size_term: str
+) -> str:
+    """The record's name of a concrete law (:data:`pencore.inputs.record.RECORD_LAWS`), or
+    "" for one the record did not score (a given S or crater depth, friction)."""
+    if s is not None or crater_given or friction not in (0, 0.0):
+        return ""
+    options = {"s_model": model, "crater": crater or "none", "size_term": size_term}
+    return next((k for k, v in RECORD_LAWS.items() if v == options), "")
 
 
 @dataclass(frozen=True)

@@ -53,6 +53,7 @@ __all__ = [
     "MIN_SHOTS",
     "WINDOWS",
     "RECORD_LAWS",
+    "DEFAULT_RECORD_LAW",
     "RECORD_COLUMNS",
     "RECORD_FILE",
     "BANDS_FILE",
@@ -89,6 +90,12 @@ RECORD_LAWS: dict[str, dict[str, str]] = {
     "forrestal_crater_size": {"s_model": "forrestal", "crater": "forrestal", "size_term": "fit"},
     "li_chen_size": {"s_model": "li_chen", "crater": "li_chen", "size_term": "fit"},
 }
+
+#: The law ``law: concrete`` gives by default (:func:`pencore.inputs.laws.concrete_law`
+#: with ``s`` not given): the record law with the smallest median ``|e|`` on the sources no
+#: law was fitted to (the archived ``concrete_record_stats.nc``'s ``best_law``; a test
+#: checks the two agree).
+DEFAULT_RECORD_LAW = "forrestal_size"
 
 _DATA = Path(__file__).parent / "data"
 #: The scored shots: one row per law and clean shot of the compilation.
@@ -290,7 +297,7 @@ def read_scores(path: Path | str = RECORD_FILE, bands: Path | str = BANDS_FILE) 
         rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
     if not rows or tuple(rows[0]) != RECORD_COLUMNS:
         raise InputError(f"{path}: columns must be {', '.join(RECORD_COLUMNS)}")
-    cal = read_yaml(bands)
+    cal = read_yaml(bands, "concrete record bands")
     if not isinstance(cal, dict) or not isinstance(cal.get("laws"), dict):
         raise InputError(f"{bands}: needs a mapping 'laws: {{law: {{nominal_level, ...}}}}'")
     out = {}

@@ -77,6 +77,7 @@ import numpy as np
 from pencore.errors import InputError, TargetError
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import as_float, count, number, plausible
+from pencore.inputs.record import RECORD_LAWS
 
 __all__ = [
     "WINDOW_COLUMNS",
@@ -204,6 +205,14 @@ class Medium:
         :meth:`for_projectile` (then ``crater_depth`` must be 0); ``""``: as given.
     size_term : SizeTerm, optional
         A size term on ``a0``, applied by :meth:`for_projectile`.
+    fc : float
+        The unconfined compressive strength a concrete law was computed from (Pa; NaN:
+        none), for the depth band (:mod:`pencore.inputs.record`).
+    record_law : str
+        The concrete record's name of the law this medium is
+        (:data:`pencore.inputs.record.RECORD_LAWS`; empty: none), set by
+        :func:`~pencore.inputs.laws.concrete_law` and cleared when a window option changes:
+        a run into it carries the law's depth band from comparable measured shots.
 
     Raises
     ------
@@ -233,9 +242,24 @@ class Medium:
     plastic_zone_ratio: float = 0.0
     crater_rule: str = ""
     size_term: SizeTerm | None = None
+    fc: float = float("nan")
+    record_law: str = ""
 
     def __post_init__(self) -> None:
         what = f"medium {brief(self.name)}"
+        if not isinstance(self.record_law, str) or (
+            self.record_law and self.record_law not in RECORD_LAWS
+        ):
+            raise TargetError(
+                f"{what}: record_law must be empty or one of {', '.join(RECORD_LAWS)}, "
+                f"got {brief(self.record_law)}"
+            )
+        fc = as_float(self.fc, allow_str=False)
+        if fc is None or not (math.isnan(fc) or (math.isfinite(fc) and fc > 0.0)):
+            raise TargetError(
+                f"{what}: fc must be a positive number of Pa (or NaN), got {brief(self.fc)}"
+            )
+        object.__setattr__(self, "fc", fc)
         if self.crater_rule not in CRATER_RULES:
             raise TargetError(
                 f"{what}: crater_rule must be 'li_chen' or empty, got {brief(self.crater_rule)}"
@@ -574,8 +598,14 @@ class Target:
             kw["free_surface_depth"] = free_surface_depth
         if plastic_zone_ratio is not None:
             kw["plastic_zone_ratio"] = plastic_zone_ratio
+
+        def changed(m: Medium) -> dict:
+            # a window the law was not scored with: no longer the record's law
+            moved = any(getattr(m, k) != v for k, v in kw.items())
+            return {**kw, "record_law": ""} if moved else kw
+
         layers = tuple(
-            lay if lay.is_gap else Layer(replace(lay.medium, **kw), lay.thickness)
+            lay if lay.is_gap else Layer(replace(lay.medium, **changed(lay.medium)), lay.thickness)
             for lay in self.layers
         )
         return Target(self.name, layers)

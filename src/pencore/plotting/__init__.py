@@ -11,6 +11,7 @@ module             figures
 ``critical``       Figs 8, 12 (Vcr), 15 (Vci), 18 (omega_c)
 ``turning``        Fig. 9 (turning angle)
 ``perforation``    beyond the paper: ballistic limit, residual velocity, measured vs predicted
+``record``         the concrete record: measured vs predicted, error against diameter, speed
 ``attribution``    why the numbers differ from the paper: one panel per disputed number
 ``ensemble``       Monte Carlo ensembles: distributions and convergence against N
 ``run``            one :func:`pencore.simulate` result (:func:`~pencore.plot_run`)
@@ -61,6 +62,7 @@ __getattr__, __dir__, __all__ = attach(
         "plot_ballistic_map": "perforation",
         "plot_residual_velocity": "perforation",
         "plot_measurements": "perforation",
+        "plot_concrete_record": "record",
         "plot_attribution": "attribution",
         "plot_ensemble": "ensemble",
         "plot_run": "run",
@@ -79,6 +81,7 @@ _OTHER_PLOTS: dict[str, str] = {
     "ballistic_limit": "plot_ballistic_limit",
     "residual_velocity": "plot_residual_velocity",
     "measurements": "plot_measurements",
+    "concrete_record": "plot_concrete_record",
     "attribution": "plot_attribution",
     "ensemble": "plot_ensemble",
 }

@@ -44,6 +44,7 @@ from pencore.kernels.cache import COMPILE_NOTICE, compiled_in_cache
 from pencore.kernels.cache import compile_notice as _compile_notice
 from pencore.kernels.forces import kernel_model, rhs_model
 from pencore.kernels.state import body_reach
+from pencore.run.band import attach_depth_band
 from pencore.run.dataset import trajectory_dataset
 from pencore.run.initial import (
     _check_inputs,
@@ -282,6 +283,7 @@ def simulate(
         ),
         loads=body_loads(pr, run) if loads else None,
     )
+    ds = attach_depth_band(ds, pr.projectile, pr.target, velocity, bool(obliquity or yaw))
     return _record_model(ds, pr, spin_about)
 
 

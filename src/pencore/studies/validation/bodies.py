@@ -101,7 +101,7 @@ def concrete_target(row: Mapping[str, Any], law: str) -> Target | None:
     if law == "paper_s21":
         return get_target("concrete") if fc == PAPER_FC else None
     if law == "s_of_fc":
-        return Target.half_space(concrete_law(fc, rho, name="s_of_fc"))
+        return Target.half_space(concrete_law(fc, rho, name="s_of_fc", size_term="none"))
     raise InputError(f"unknown concrete law {law!r}; use one of {', '.join(LAWS)}")
 
 

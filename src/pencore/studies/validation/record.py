@@ -60,6 +60,7 @@ __all__ = [
     "score_law",
     "gather_record",
     "record_statistics",
+    "statistics_table",
     "record_rows",
     "bands_document",
 ]
@@ -87,10 +88,12 @@ CRITERION = "median_abs_error"
 ROW_GROUPS = {"clean": (), "eroding": ("eroding",)}
 
 
-def record_rows_to_score() -> pd.DataFrame:
+def record_rows_to_score(every: int = 1) -> pd.DataFrame:
     """The compilation's rows the record scores: the clean rows (``group`` ``clean``) and
     those set aside only as eroding (``group`` ``eroding``), with ``in_fit`` (a row the size
-    term was fitted to)."""
+    term was fitted to); ``every``: keep every n-th of them (1: all; a quick check)."""
+    if isinstance(every, bool) or not isinstance(every, int) or every < 1:
+        raise InputError(f"record: every must be a whole number >= 1, got {every!r}")
     df = read_compilation()
     clean = df[df["status"] == "clean"]
     eroding = rows_allowing(df, ROW_GROUPS["eroding"])
@@ -98,7 +101,8 @@ def record_rows_to_score() -> pd.DataFrame:
     out = pd.concat([clean.assign(group="clean"), eroding.assign(group="eroding")])
     fit = {str(r) for r in size_term_constants()["rows"]}
     out = out.assign(in_fit=out["row"].astype(str).isin(fit))
-    return out.sort_values("row", key=lambda s: s.astype(int)).reset_index(drop=True)
+    out = out.sort_values("row", key=lambda s: s.astype(int)).reset_index(drop=True)
+    return out.iloc[::every].reset_index(drop=True)
 
 
 def law_medium(row: Mapping[str, Any], law: str, d0: float | None = None):
@@ -222,8 +226,8 @@ def _closed_forms(r: pd.Series) -> tuple[float, float, float]:
     fc, rho = float(r["fc_pa"]), float(r["target_density_kg_m3"])
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", PlausibilityWarning)
-        forrestal = concrete_law(fc, rho)
-        li_chen = concrete_law(fc, rho, s_model="li_chen")
+        forrestal = concrete_law(fc, rho, size_term="none")
+        li_chen = concrete_law(fc, rho, s_model="li_chen", size_term="none")
     out = [closedform.tunnel_depth(proj, forrestal, v)]
     try:
         out.append(closedform.forrestal_crater_depth(proj, forrestal, v))
@@ -520,10 +524,85 @@ def bands_document(stats: xr.Dataset) -> dict[str, Any]:
     for i, m in enumerate(stats["model"].to_numpy().astype(str)):
         if m not in RECORD_LAWS:
             continue
-        laws[m] = {
+        laws[str(m)] = {
             "nominal_level": float(stats["nominal_level"][i]),
             "held_out_coverage": round(float(stats["held_out_coverage"][i]), 4),
             "coverage_at_stated": round(float(stats["coverage_at_stated"][i]), 4),
             "n_with_band": int(stats["n_with_band"][i]),
         }
-    return {"stated_level": STATED_LEVEL, "best_law": stats.attrs["best_law"], "laws": laws}
+    return {"stated_level": STATED_LEVEL, "best_law": str(stats.attrs["best_law"]), "laws": laws}
+
+
+def statistics_table(stats: xr.Dataset) -> pd.DataFrame:
+    """:func:`record_statistics` as one long table: ``model``, ``kind``, ``grouping``
+    (``overall``, a quantity of :data:`BINS`, or ``source``), ``group`` (its bin, rows or
+    source) and the :data:`pencore.analysis.record.STATISTICS`."""
+    frames = []
+    for grouping, dim in (
+        ("overall", "rows"),
+        *((q, f"{q}_bin") for q in BINS),
+        ("source", "source"),
+    ):
+        prefix = grouping
+        cols = {k: stats[f"{prefix}_{k}"].to_pandas().stack() for k in STATISTICS}
+        df = pd.DataFrame(cols).reset_index().rename(columns={dim: "group"})
+        df.insert(1, "grouping", grouping)
+        frames.append(df)
+    out = pd.concat(frames, ignore_index=True)
+    kinds = dict(
+        zip(stats["model"].values.astype(str), stats["kind"].values.astype(str), strict=True)
+    )
+    out.insert(1, "kind", out["model"].map(kinds))
+    out["n"] = out["n"].astype(int)
+    return out
+
+
+#: The header of the shipped record (:data:`pencore.inputs.record.RECORD_FILE`).
+RECORD_HEADER = """\
+# The concrete record: per concrete law and clean shot of the public compilation
+# (config/concrete_compilation.csv: its row numbers, sources and reasons; a declared
+# secondary source), the shot's diameter (m), fc (Pa), striking speed (m/s), CRH and
+# ratio = measured / predicted depth, the prediction held out (the size term refitted
+# without the shot's source). GENERATED from the archived concrete-record study by
+# `python -m pencore.studies.validation.record results/archive/validation` (do not edit);
+# tests/studies/validation/test_record.py checks it against the archive.
+"""
+
+
+def write_record(archive: str, record: str | None = None, bands: str | None = None) -> None:
+    """Write the shipped record and its calibration from an archived study folder
+    (``concrete_record.nc`` and ``concrete_record_stats.nc`` in ``archive``)."""
+    from pathlib import Path
+
+    import yaml
+
+    from pencore.inputs.record import BANDS_FILE, RECORD_FILE
+    from pencore.io.atomic import atomic_path
+    from pencore.io.netcdf import read_netcdf
+
+    folder = Path(archive)
+    ds = read_netcdf(folder / "concrete_record.nc")
+    stats = read_netcdf(folder / "concrete_record_stats.nc")
+    import csv
+    import io
+
+    buf = io.StringIO()
+    writer = csv.DictWriter(buf, RECORD_COLUMNS, lineterminator="\n")
+    writer.writeheader()
+    writer.writerows(record_rows(ds))
+    with atomic_path(record or RECORD_FILE) as tmp:
+        Path(tmp).write_text(RECORD_HEADER + buf.getvalue(), encoding="utf-8")
+    doc = bands_document(stats)
+    text = (
+        "# Each concrete law's depth band, calibrated one source left out at a time\n"
+        "# (pencore.analysis.record.calibrate_level) on the rows of concrete_record.csv.\n"
+        "# GENERATED with it (do not edit).\n" + yaml.safe_dump(doc, sort_keys=False)
+    )
+    with atomic_path(bands or BANDS_FILE) as tmp:
+        Path(tmp).write_text(text, encoding="utf-8")
+
+
+if __name__ == "__main__":  # pragma: no cover - regenerates the shipped record
+    import sys
+
+    write_record(sys.argv[1] if len(sys.argv) > 1 else "results/archive/validation")

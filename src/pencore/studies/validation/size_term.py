@@ -114,7 +114,11 @@ def implied_factor(row: pd.Series, s_model: str, crater: str) -> float:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", PlausibilityWarning)  # fc beyond 108 MPa: as built
         base = concrete_law(
-            row["fc_pa"], row["target_density_kg_m3"], s_model=s_model, crater=crater
+            row["fc_pa"],
+            row["target_density_kg_m3"],
+            s_model=s_model,
+            crater=crater,
+            size_term="none",
         )
     a0, _, a2 = base.coefficients
     v, measured = float(row["striking_velocity_m_s"]), float(row["depth_m"])
