@@ -15,6 +15,7 @@ from pencore.errors import InputError, TargetError
 from pencore.inputs import laws
 from pencore.inputs.gate import load_yaml_text
 from pencore.inputs.library import target_from_dict
+from pencore.inputs.record import DEFAULT_RECORD_LAW, RECORD_LAWS
 
 
 def crh3_rod(d: float = 0.0269) -> pencore.Projectile:
@@ -32,15 +33,25 @@ def test_li_chen_s_is_72_over_root_fc_in_mpa():
     assert "S = 72 fc^-0.5 = 12" in m.source and "secondary" in m.source
 
 
-def test_the_default_law_is_unchanged_and_forrestal_is_selectable_by_name():
+def test_the_default_law_is_the_records_best_and_every_option_is_selectable_by_name():
     default = laws.concrete_law(40e6, 2300.0)
-    assert default.coefficients[0] == 82.6 * 40**-0.544 * 40e6
-    assert default.crater_depth == 0.0 and not default.needs_projectile
-    named = laws.concrete_law(40e6, 2300.0, s_model="forrestal", crater="none")
-    assert named.coefficients == default.coefficients and named.crater_depth == 0.0
-    crater = laws.concrete_law(40e6, 2300.0, crater="forrestal")
-    assert crater.crater_depth == 2.0
-    assert crater.coefficients == laws.concrete_law(40e6, 2300.0, crater_depth=2.0).coefficients
+    opts = RECORD_LAWS[DEFAULT_RECORD_LAW]
+    assert default.record_law == DEFAULT_RECORD_LAW and default.fc == 40e6
+    named = laws.concrete_law(40e6, 2300.0, **opts)
+    assert named == default
+    assert default.coefficients[0] == 82.6 * 40**-0.544 * 40e6  # S(fc) before the size term
+    assert default.needs_projectile == (opts["size_term"] == "fit")
+    plain = laws.concrete_law(40e6, 2300.0, s_model="forrestal", crater="none", size_term="none")
+    assert plain.coefficients == default.coefficients and not plain.needs_projectile
+    assert plain.record_law == "forrestal"
+    crater = laws.concrete_law(40e6, 2300.0, crater="forrestal", size_term="none")
+    assert crater.crater_depth == 2.0 and crater.record_law == "forrestal_crater"
+    given = laws.concrete_law(40e6, 2300.0, crater_depth=2.0)  # by number: no size term
+    assert crater.coefficients == given.coefficients and given.size_term is None
+    assert given.record_law == "" and laws.concrete_law(40e6, 2300.0, s=11.0).record_law == ""
+    # a named crater with the fitted size term is a scored law (it was once refused)
+    both = laws.concrete_law(40e6, 2300.0, crater="forrestal", size_term="fit")
+    assert both.crater_depth == 2.0 and both.record_law == "forrestal_crater_size"
 
 
 def test_li_chen_crater_depth_of_a_crh3_ogive():

@@ -294,7 +294,7 @@ def test_cli_simulate_into_a_law_target_file(tmp_path, capsys):
     assert main([*args, "--mass", "20"]) == 0
     out = capsys.readouterr().out
     p = pencore.get_projectile("p2").with_mass(20.0)
-    ref = closedform.depth(p, laws.concrete_law(40e6, 2300.0), 300.0)
+    ref = closedform.depth(p, laws.concrete_law(40e6, 2300.0), 300.0)  # the size term resolved
     depth = float(out.split("penetration depth:")[1].split()[0])
     assert depth == pytest.approx(ref, rel=2e-3)
 

@@ -42,7 +42,7 @@ def test_the_factor_is_one_at_the_reference_diameter_and_falls_with_size():
 
 @pytest.mark.parametrize(("s_model", "crater"), [("forrestal", "none"), ("li_chen", "li_chen")])
 def test_the_fitted_law_reduces_to_the_plain_law_at_d_ref(s_model, crater):
-    plain = laws.concrete_law(40e6, 2400.0, s_model=s_model, crater=crater)
+    plain = laws.concrete_law(40e6, 2400.0, s_model=s_model, crater=crater, size_term="none")
     sized = laws.concrete_law(40e6, 2400.0, s_model=s_model, crater=crater, size_term="fit")
     assert sized.coefficients == plain.coefficients and sized.needs_projectile
     d_ref, nose = SPEC["d_ref_m"], 0.04
@@ -61,7 +61,7 @@ def test_closed_form_and_run_use_the_resolved_law():
         "rod", 0.1, pencore.OgiveNose(2.0, 7850.0), (pencore.Cylinder(0.65, 7850.0),)
     )
     sized = laws.concrete_law(40e6, 2400.0, size_term="fit")
-    plain = laws.concrete_law(40e6, 2400.0)
+    plain = laws.concrete_law(40e6, 2400.0, size_term="none")
     f = sized.size_term.factor(0.1)
     by_hand = replace(plain, coefficients=(plain.coefficients[0] * f, 0.0, 2400.0))
     ref = closedform.depth(rod, by_hand, 450.0)
