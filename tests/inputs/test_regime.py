@@ -149,3 +149,13 @@ def test_wus_scaled_series_is_inside_the_regime():
                                yield_strength=r["projectile_yield_pa"])  # fmt: skip
         medium = pencore.concrete_law(r["fc_pa"], r["target_density_kg_m3"])
         assert rigid_regime(p, medium, r["striking_velocity_m_s"]).rigid
+
+
+def test_the_guide_states_the_criterion():
+    """docs/user-guide/own-projectile-and-target.md types these numbers."""
+    page = " ".join((ROOT / "docs/user-guide/own-projectile-and-target.md").read_text().split())
+    assert f"must not exceed a bound of {SPEC['bound']:g}" in page
+    assert f"pencore assumes {SPEC['assumed_yield_strength_pa'] / 1e6:g} MPa" in page
+    shots = al_shots().set_index("shot")
+    only = shots.loc["4-1843"]  # the one rigid rod the bound calls deformed (test above)
+    assert f"one rigid rod ({only['striking_velocity_m_s']} m/s) deformed too" in page

@@ -338,6 +338,7 @@ def concrete_law(
         s_val = _value(s, "s_factor", what, "S")
         s_from = f"S = {s_val:g} given"
     crater_rule = ""
+    depth_given = crater_depth not in (0, 0.0)  # a number, not a named crater
     if crater is not None:
         crater = _choice(crater, "crater", CRATERS)
         if crater_depth not in (0, 0.0):
@@ -353,7 +354,7 @@ def concrete_law(
             s_from += "; crater 0.707 + H/d calibers (Li & Chen 2003, Eq. 25)"
     term = None
     if size_term is not None and _choice(size_term, "size_term", SIZE_TERMS) == "fit":
-        if s is not None or crater_depth not in (0, 0.0):
+        if s is not None or depth_given:
             given = f"s = {brief(s)}" if s is not None else f"crater_depth = {brief(crater_depth)}"
             raise TargetError(
                 f"{what}: size_term 'fit' was fitted with S from fc and a named crater, not "
