@@ -227,11 +227,12 @@ class PlausibilityWarning(UserWarning):
 
 
 class RigidRegimeWarning(PlausibilityWarning):
-    """An impact outside the rigid regime: the nose-tip stress of the target's law at the
-    striking speed is more than the declared bound times the projectile's yield strength
-    (:mod:`pencore.inputs.regime`), where real noses deform or erode and a rigid body's
-    depth is not to be trusted. The run goes on; issued once per prepared problem (a run,
-    or a whole search). A subclass of :class:`PlausibilityWarning`: the same filters
+    """An impact outside the rigid regime, where a rigid body's depth is not to be trusted.
+
+    The nose-tip stress of the target's law at the striking speed is more than the
+    declared bound times the projectile's yield strength (:mod:`pencore.inputs.regime`),
+    where real noses deform or erode. The run goes on; issued once per prepared problem (a
+    run, or a whole search). A subclass of :class:`PlausibilityWarning`: the same filters
     silence it, and the command line prints it as ``pencore: warning: ...``.
 
     Examples
