@@ -159,3 +159,27 @@ def test_the_guide_states_the_criterion():
     shots = al_shots().set_index("shot")
     only = shots.loc["4-1843"]  # the one rigid rod the bound calls deformed (test above)
     assert f"one rigid rod ({only['striking_velocity_m_s']} m/s) deformed too" in page
+
+
+def test_a_search_warns_at_most_once():
+    # a 3 mm aluminium plate: the scan up to 3000 m/s runs many speeds outside the regime
+    al = pencore.get_target("aluminium").medium
+    plate = pencore.Target("plate", (pencore.Layer(al, 0.003),))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        pencore.ballistic_limit(rod(), plate, lo=100.0, hi=3000.0, tol=50.0)
+    assert [c.category for c in caught].count(RigidRegimeWarning) == 1
+
+
+def test_the_command_line_takes_the_strength_and_warns_in_one_line(capsys):
+    from pencore.cli.main import main
+
+    args = ["simulate", "--projectile", "al_ogive_var4340", "--target", "aluminium"]
+    assert main([*args, "--velocity", "1365", "--yield-strength", "1.14e9"]) == 0
+    err = capsys.readouterr().err
+    assert err.startswith("pencore: warning: rigid regime: at 1365 m/s") and err.count("\n") == 1
+    assert main([*args, "--velocity", "1365"]) == 0  # 1720 MPa assumed: inside the bound
+    assert "rigid regime" not in capsys.readouterr().err
+    assert main([*args, "--velocity", "1365", "--yield-strength", "1140"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "yield strength Y must be in [100000, 1e+10] Pa" in err
