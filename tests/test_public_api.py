@@ -40,6 +40,7 @@ ENTRY_POINTS = [
     "InputError",
     "SolverError",
     "PlausibilityWarning",
+    "RigidRegimeWarning",
 ]
 
 

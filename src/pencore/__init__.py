@@ -85,6 +85,7 @@ _EXPORTS = {
     "WriteError": "errors",
     "ResultError": "errors",
     "PlausibilityWarning": "errors",
+    "RigidRegimeWarning": "errors",
 }
 
 __getattr__, __dir__, __all__ = attach(__name__, _EXPORTS, defined=("__version__",))
@@ -111,6 +112,7 @@ if TYPE_CHECKING:  # for type checkers and editors: the names as if imported eag
         InputError,
         PlausibilityWarning,
         ResultError,
+        RigidRegimeWarning,
         SolverError,
         TargetError,
         WriteError,

@@ -325,7 +325,10 @@ def depth(projectile: Projectile, medium: Medium, velocity: float) -> float:
     region (``medium.crater_depth`` calibers) Forrestal's form
     (:func:`~pencore.closedform.forrestal_crater_depth`), which is pencore's crater
     (:mod:`pencore.kernels.crater`) in this limit. :func:`~pencore.simulate` gives the
-    same depth for such an impact (``tests/test_closedform.py``).
+    same depth for such an impact (``tests/test_closedform.py``). A medium whose law
+    depends on the projectile (Li & Chen's crater depth, a size term) is first resolved for
+    it (:meth:`~pencore.inputs.target.Medium.for_projectile`), as a run is; the other
+    functions here take the medium as given.
 
     Parameters
     ----------

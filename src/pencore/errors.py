@@ -18,7 +18,8 @@ ResultError        a result file cannot be read (corrupt or truncated)
 
 One warning class, :class:`PlausibilityWarning`, marks a value that is allowed but
 implausible: where a law is extrapolated, or of a size that suggests a slip of unit
-(the likely slip is named); it never stops a run.
+(the likely slip is named); it never stops a run. Its subclass :class:`RigidRegimeWarning`
+marks an impact outside the rigid regime (:mod:`pencore.inputs.regime`).
 """
 
 from __future__ import annotations
@@ -34,6 +35,7 @@ __all__ = [
     "WriteError",
     "ResultError",
     "PlausibilityWarning",
+    "RigidRegimeWarning",
 ]
 
 #: What the command line says when Ctrl-C ends it (exit status 130).
@@ -221,4 +223,25 @@ class PlausibilityWarning(UserWarning):
     ...     _ = pencore.concrete_law(fc=150e6, density=2500.0)
     >>> issubclass(caught[0].category, pencore.PlausibilityWarning)
     True
+    """
+
+
+class RigidRegimeWarning(PlausibilityWarning):
+    """An impact outside the rigid regime, where a rigid body's depth is not to be trusted.
+
+    The nose-tip stress of the target's law at the striking speed is more than the
+    declared bound times the projectile's yield strength (:mod:`pencore.inputs.regime`),
+    where real noses deform or erode. The run goes on; issued once per prepared problem (a
+    run, or a whole search). A subclass of :class:`PlausibilityWarning`: the same filters
+    silence it, and the command line prints it as ``pencore: warning: ...``.
+
+    Examples
+    --------
+    >>> import warnings
+    >>> import pencore
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     _ = pencore.simulate("al_ogive_var4340", "aluminium", 2500.0)
+    >>> print(caught[-1].category.__name__, str(caught[-1].message).split(" the nose")[0])
+    RigidRegimeWarning rigid regime: at 2500 m/s
     """

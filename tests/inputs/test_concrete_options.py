@@ -132,3 +132,22 @@ def test_cli_law_round_trip_and_refusal(capsys):
     assert main([*args, "--s", "9", "--s-model", "li_chen"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "give s or s_model, not both" in err
+
+
+def test_the_guide_states_the_options_as_the_code_has_them():
+    """docs/user-guide/own-projectile-and-target.md types these numbers."""
+    from pathlib import Path
+
+    from pencore.inputs.target import LI_CHEN_CRATER
+
+    root = Path(__file__).resolve().parents[2]
+    page = " ".join((root / "docs/user-guide/own-projectile-and-target.md").read_text().split())
+    assert laws.li_chen_s(1e6) == 72.0 and "$S = 72 f_c^{-1/2}$" in page
+    assert laws.forrestal_s(1e6) == 82.6 and "$S = 82.6 f_c^{-0.544}$" in page
+    assert LI_CHEN_CRATER == 0.707 and "$k = 0.707 + H/d$ calibers" in page
+    assert (
+        laws.FORRESTAL_CRATER == 2.0 and "over 2 calibers (Forrestal et al., IJIE 15, 1994)" in page
+    )
+    # a CRH-4.25 tangent ogive is exactly 2 calibers long: longer noses do not fit the crater
+    nose = pencore.Projectile("n", 0.02, pencore.OgiveNose(4.25, 7850.0)).nose_length
+    assert nose / 0.02 == pytest.approx(2.0, rel=1e-14) and "(CRH above 4.25)" in page

@@ -18,6 +18,7 @@ import stat
 import sys
 import tempfile
 from collections.abc import Callable, Sequence
+from dataclasses import replace
 from pathlib import Path
 from typing import Any, NoReturn
 
@@ -365,10 +366,19 @@ def add_mass_options(p: argparse.ArgumentParser) -> None:
         help="measured moments of inertia about the centre of mass in kg m^2 (default: "
         "from the outline)",
     )
+    p.add_argument(
+        "--yield-strength",
+        type=number_type("yield_strength"),
+        default=None,
+        metavar="PA",
+        help="the projectile material's yield strength in Pa (1.3 GPa: 1.3e9), for the "
+        "rigid-regime check only (default: the projectile's own, else 1720 MPa assumed)",
+    )
 
 
 def with_mass(projectile: Any, args: argparse.Namespace) -> Any:
-    """Apply the mass options of :func:`add_mass_options` to a projectile.
+    """Apply the mass options of :func:`add_mass_options` (and the yield strength) to a
+    projectile.
 
     Parameters
     ----------
@@ -387,6 +397,9 @@ def with_mass(projectile: Any, args: argparse.Namespace) -> Any:
     pencore.errors.GeometryError
         A value no body of this outline can have (one line naming it).
     """
+    strength = getattr(args, "yield_strength", None)
+    if strength is not None:
+        projectile = replace(projectile, yield_strength=strength)
     mass = getattr(args, "mass", None)
     lc = getattr(args, "centre_of_mass", None)
     inertia = getattr(args, "inertia", None)

@@ -46,6 +46,7 @@ simulate options (all SI, angles in degrees):
   --mass KG               measured projectile mass (outline distribution scaled)
   --centre-of-mass M      measured tip-to-centre-of-mass distance Lc (m)
   --inertia IA IT         measured axial, transverse inertia about the c.m. (kg m^2)
+  --yield-strength PA     projectile yield strength, for the rigid-regime check (Pa)
   --stop-at-reversal      end the run at the first trajectory reversal
   --crater-depth K        Forrestal's crater region (F = c z) over K calibers
   --free-surface-depth K  resistance ramp within K calibers of a free face

@@ -341,6 +341,10 @@ class Projectile:
     inertia : (float, float), optional
         Measured moments of inertia ``(i_axial, i_transverse)`` about the centre of mass
         (kg m^2).
+    yield_strength : float, optional
+        The projectile material's yield strength (Pa). Not used by the rigid-body
+        solution; the rigid-regime check (:func:`pencore.inputs.regime.rigid_regime`) compares
+        the nose's stress with it (an assumed strength when not given).
 
     Notes
     -----
@@ -411,6 +415,7 @@ class Projectile:
     mass: float | None = None
     centre_of_mass: float | None = None
     inertia: tuple[float, float] | None = None
+    yield_strength: float | None = None
 
     def __post_init__(self) -> None:
         _check("diameter", self.diameter)
@@ -448,6 +453,9 @@ class Projectile:
     def _check_given(self, what: str) -> None:
         """Check the given mass, centre of mass and inertias (types and ranges here; the
         bounds that need the outline in :meth:`mass_properties`, called at once)."""
+        if self.yield_strength is not None:
+            y = _check("yield_strength", self.yield_strength, what)
+            object.__setattr__(self, "yield_strength", y)
         if self.mass is not None:
             object.__setattr__(self, "mass", _check("mass", self.mass, what))
         if self.centre_of_mass is not None:

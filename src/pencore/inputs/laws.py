@@ -20,6 +20,14 @@ Concrete and grout (:func:`concrete_law`)
     21 is the value fitted by Forrestal and co-authors to their own grout shots; the fitting
     paper was not readable here, so ``S`` can be given. The crater option of the medium
     (``crater_depth``, Forrestal's ``F = c z`` over 2 calibers) is passed through.
+
+    Named options (none changes the default): ``s_model="li_chen"``, ``S = 72 fc^-0.5``
+    (Li & Chen, IJIE 28 (2003) 93-116, Eq. 21; secondary, :data:`S_LI_CHEN_SOURCE`);
+    ``crater="forrestal"`` (2 calibers) or ``"li_chen"`` (``0.707 + H/d`` calibers, their
+    Eq. 25, H the nose length, set with the projectile); ``size_term="fit"``, ``S(fc) f(d)``
+    of the form of Bazant's size-effect law with a declared fitted constant
+    (:data:`SIZE_TERM_FILE`, :mod:`pencore.studies.validation.size_term`), set with the
+    projectile's diameter (:meth:`~pencore.inputs.target.Medium.for_projectile`).
 Metals (:func:`metal_law`, :func:`cavity_expansion`)
     The spherical cavity-expansion solution for an elastic-plastic solid with power-law
     strain hardening, ``sigma = E eps`` below ``Y`` and ``sigma = Y (E eps / Y)^n`` above:

@@ -320,7 +320,17 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
     what = f"projectile {brief(name)}"
     check_keys(
         d,
-        ("name", "diameter", "nose", "shank", "source", "mass", "centre_of_mass", "inertia"),
+        (
+            "name",
+            "diameter",
+            "nose",
+            "shank",
+            "source",
+            "mass",
+            "centre_of_mass",
+            "inertia",
+            "yield_strength",
+        ),
         what,
     )
     diameter = _num(d, "diameter", what)
@@ -358,6 +368,8 @@ def projectile_from_dict(d: dict[str, Any]) -> Projectile:
         given["mass"] = _num(d, "mass", what)
     if "centre_of_mass" in d:
         given["centre_of_mass"] = _num(d, "centre_of_mass", what)
+    if "yield_strength" in d:
+        given["yield_strength"] = _num(d, "yield_strength", what)
     if "inertia" in d:
         inertia = d["inertia"]
         if not isinstance(inertia, dict):

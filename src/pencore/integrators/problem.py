@@ -52,6 +52,9 @@ class Problem:
         The rings the ring kernel loads under a non-default model (None: ``rings``).
     model : tuple of ndarray or None
         The kernel tuple of :mod:`pencore.kernels.forces` (None: the DAFL on rings).
+    regime_warned : bool
+        True once a run of this problem has warned that it is outside the rigid regime
+        (:func:`pencore.inputs.regime.warn_outside`): a search warns at most once.
     """
 
     projectile: Projectile
@@ -68,6 +71,7 @@ class Problem:
     emulation: Emulation = Emulation()
     kernel_rings: np.ndarray | None = None
     model: tuple[np.ndarray, ...] | None = None
+    regime_warned: bool = False
 
     @property
     def loaded_rings(self) -> np.ndarray:

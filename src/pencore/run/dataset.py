@@ -76,7 +76,7 @@ def _target_dict(t: Target) -> dict[str, Any]:
 def _projectile_dict(p: Projectile) -> dict[str, Any]:
     d = asdict(p)
     d["nose"]["kind"] = type(p.nose).__name__
-    for key in ("mass", "centre_of_mass", "inertia"):  # recorded only when given
+    for key in ("mass", "centre_of_mass", "inertia", "yield_strength"):  # only when given
         if d[key] is None:
             del d[key]
     return d

@@ -36,6 +36,7 @@ from pencore.inputs.library import get_projectile, get_target
 from pencore.inputs.limits import flag
 from pencore.inputs.models import Emulation, ShankModel, emulation, shank_model, to_json
 from pencore.inputs.numerics import Numerics, check_keywords, resolve_numerics
+from pencore.inputs.regime import warn_outside
 from pencore.inputs.target import Target
 from pencore.integrators.driver import CHUNK_STEPS, RunResult
 from pencore.integrators.problem import Problem
@@ -342,6 +343,8 @@ def _impact(a: Mapping[str, Any], loads: bool = False) -> tuple[Problem, RunResu
         a["projectile"], a["target"], a["numerics"], shank=shank, emulation=emulation,
         **a["overrides"],
     )  # fmt: skip
+    if not pr.regime_warned:  # once per prepared problem: a search warns at most once
+        pr.regime_warned = warn_outside(pr.projectile, pr.target, velocity)
     num = pr.numerics
     y0 = initial_state(
         pr.projectile,

@@ -139,3 +139,56 @@ def test_the_fit_function_reproduces_the_stored_constants(key):
     assert round(fit.rms_log_factor, 4) == stored["rms_log_factor"]
     assert round(fit.rms_log_factor_without, 4) == stored["rms_log_factor_without"]
     assert fit.rms_log_factor < fit.rms_log_factor_without
+
+
+def test_a_named_crater_goes_with_the_fit():
+    m = laws.concrete_law(40e6, 2400.0, crater="forrestal", size_term="fit")
+    assert m.crater_depth == 2.0
+    assert m.size_term.d0 == SPEC["constants"]["forrestal/forrestal"]["d0_m"]
+
+
+def test_the_guide_states_what_the_fit_does_on_its_rows():
+    """docs/user-guide/own-projectile-and-target.md types these numbers."""
+    import numpy as np
+
+    from pencore.studies.validation.bodies import body_projectile
+
+    page = (ROOT / "docs/user-guide/own-projectile-and-target.md").read_text()
+    page = " ".join(page.split())
+    rows = size_term.fit_rows(ROOT)
+    stats: dict[str, list[float]] = {"small_fit": [], "small": [], "big_fit": [], "big": []}
+    for key in SPEC["constants"]:
+        s_model, crater = key.split("/")
+        err: dict[str, list[float]] = {k: [] for k in stats}
+        for _, r in rows.iterrows():
+            p = body_projectile(r, "rod")
+            try:
+                e = {
+                    st: closedform.depth(
+                        p,
+                        laws.concrete_law(
+                            r["fc_pa"], r["target_density_kg_m3"], s_model=s_model,
+                            crater=crater, size_term=st,
+                        ),
+                        r["striking_velocity_m_s"],
+                    ) / r["depth_m"] - 1.0
+                    for st in ("fit", "none")
+                }  # fmt: skip
+            except InputError:  # a crater shorter than the nose
+                continue
+            if r["diameter_m"] == 0.0129:
+                err["small_fit"].append(e["fit"])
+                err["small"].append(e["none"])
+            if r["diameter_m"] >= 0.0762:
+                err["big_fit"].append(abs(e["fit"]))
+                err["big"].append(abs(e["none"]))
+        for k in stats:
+            stats[k].append(round(100 * abs(float(np.median(err[k])))))
+    rng = {k: f"{min(v)}-{max(v)} %" for k, v in stats.items()}
+    assert f"76.2-203 mm shots from {rng['big']} down to {rng['big_fit']}" in page
+    assert f"the plain law meets within {max(stats['small'])} %" in page
+    assert f"{rng['small_fit']} shallow" in page
+    xd = read_body_shot_table(ROOT / "config/concrete_scaled_series.csv")
+    xd = (xd["depth_m"] / xd["diameter_m"]).round(1)
+    assert f"penetrates {xd.iloc[0]} calibers at 10.1 mm and {xd.iloc[-1]} at 203 mm" in page
+    assert f"1 at $d_{{ref}}$ = {SPEC['d_ref_m'] * 1e3:g} mm" in page
