@@ -305,9 +305,20 @@ def test_solid_mass_is_the_geometry_s():
 # -- the Sandia/WES subset ------------------------------------------------------------------
 
 
-def test_the_sandia_rows_are_a_subset_with_the_same_numbers(df):
-    old = pd.read_csv(SANDIA, comment="#")
-    assert len(old) == 107
+STRENGTHS = {
+    "projectile_ultimate_pa": "ultimate_strength_pa",
+    "projectile_yield_pa": "yield_strength_pa",
+}
+
+
+@pytest.mark.parametrize(
+    ("path", "rows"), [(SANDIA, 107), (REPO / "config" / "concrete_scaled_series.csv", 7)]
+)
+def test_the_shot_files_are_subsets_with_the_same_numbers(df, path, rows):
+    """The Sandia/WES rows and Wu et al.'s scaled series (the size term's fit rows) are
+    rows of the compilation, number for number."""
+    old = pd.read_csv(path, comment="#").rename(columns=STRENGTHS)
+    assert len(old) == rows
     new = df.set_index("row").loc[old["row"]]
     for column in old.columns:
         if column in ("row", "reference"):  # the reference: a short form there, in full here

@@ -44,7 +44,14 @@ from pencore.analysis.record import LEVELS, STATISTICS, WITHIN, binned, calibrat
 from pencore.errors import InputError, PlausibilityWarning, SolverError, TargetError
 from pencore.inputs.laws import concrete_law, size_term_constants
 from pencore.inputs.numerics import Numerics, resolve_numerics
-from pencore.inputs.record import RECORD_COLUMNS, RECORD_LAWS, STATED_LEVEL, Scores
+from pencore.inputs.record import (
+    DEFAULT_RECORD_LAW,
+    RECORD_COLUMNS,
+    RECORD_LAWS,
+    STATED_LEVEL,
+    Scores,
+)
+from pencore.inputs.regime import rigid_regime
 from pencore.inputs.target import Target
 from pencore.measured.compilation import read_compilation, rows_allowing
 from pencore.run.impact import simulate
@@ -124,13 +131,16 @@ def _run(row: pd.Series, medium, num: Numerics) -> tuple[float, str]:
     """pencore's depth (m; the tip's path below the face) of one shot and its outcome."""
     proj = body_projectile(row, f"row {row['row']}")
     try:
-        ds = simulate(
-            proj,
-            Target.half_space(medium),
-            float(row["striking_velocity_m_s"]),
-            numerics=num,
-            loads=False,
-        )
+        with warnings.catch_warnings():
+            # fc beyond the built range, the rigid regime: the record keeps its own verdict
+            warnings.simplefilter("ignore", PlausibilityWarning)
+            ds = simulate(
+                proj,
+                Target.half_space(medium),
+                float(row["striking_velocity_m_s"]),
+                numerics=num,
+                loads=False,
+            )
     except TargetError as err:  # a crater shorter than the nose
         return math.nan, f"not applicable: {err}"
     except SolverError as err:
@@ -238,6 +248,18 @@ def _closed_forms(r: pd.Series) -> tuple[float, float, float]:
     return out[0], out[1], out[2]
 
 
+def _regime(r: pd.Series) -> tuple[float, bool, bool]:
+    """The rigid-regime verdict of a shot under the default law: ``R``, rigid, and whether
+    the projectile's yield strength was compiled (else the assumed one)."""
+    body = body_projectile(r, f"row {r['row']}")
+    y = r.get("yield_strength_pa", math.nan)
+    given = bool(pd.notna(y) and float(y) > 0)
+    p = replace(body, yield_strength=float(y) if given else None)
+    medium = law_medium(r, DEFAULT_RECORD_LAW).for_projectile(p.diameter, p.nose_length)
+    v = rigid_regime(p, medium, float(r["striking_velocity_m_s"]))
+    return v.ratio, v.rigid, given
+
+
 def gather_record(parts: Sequence[xr.Dataset], rows: pd.DataFrame | None = None) -> xr.Dataset:
     """The scored laws side by side with the shots' inputs and the closed forms.
 
@@ -261,6 +283,7 @@ def gather_record(parts: Sequence[xr.Dataset], rows: pd.DataFrame | None = None)
         if not np.array_equal(p["shot"].to_numpy(), shot):
             raise InputError(f"record: law {p.attrs['law']!r} scored other shots")
     cf = np.array([_closed_forms(r) for _, r in rows.iterrows()]).T
+    regime = [_regime(r) for _, r in rows.iterrows()]
     models = [*laws, *CLOSED_FORMS]
     pred = np.vstack([*(p["predicted"].to_numpy() for p in parts), cf])
     held = np.vstack([*(p["held_out_predicted"].to_numpy() for p in parts), cf])
@@ -297,6 +320,25 @@ def gather_record(parts: Sequence[xr.Dataset], rows: pd.DataFrame | None = None)
                 "shot",
                 held_out.to_numpy(bool),
                 {"long_name": "clean row of a source no law was fitted to"},
+            ),
+            "regime_ratio": (
+                "shot",
+                np.array([g[0] for g in regime]),
+                {
+                    "units": "1",
+                    "long_name": "nose-tip stress of the default law over the projectile's "
+                    "yield strength (pencore.inputs.regime)",
+                },
+            ),
+            "rigid": (
+                "shot",
+                np.array([g[1] for g in regime]),
+                {"long_name": "within the rigid regime (pencore.inputs.regime)"},
+            ),
+            "strength_given": (
+                "shot",
+                np.array([g[2] for g in regime]),
+                {"long_name": "projectile yield strength compiled (else assumed)"},
             ),
             "predicted": (("model", "shot"), pred, {"units": "m", "long_name": "predicted depth"}),
             "held_out_predicted": (
@@ -376,8 +418,10 @@ def record_statistics(ds: xr.Dataset) -> xr.Dataset:
         sources no law was fitted to, ``all_clean`` for every clean row with held-out
         predictions); ``<quantity>_<stat>`` on ``(model, <quantity>_bin)`` over the
         held-out rows for each of :data:`BINS`; ``source_<stat>`` on ``(model, source)``
-        over every clean row (held-out predictions); ``<stat>`` one of ``n``,
-        ``median_error``, ``mean_abs_error``, ``within``. Per law: ``nominal_level``,
+        over every clean row (held-out predictions); ``regime_<stat>`` on ``(model,
+        regime)``: the clean and the eroding rows, each kept (``rigid``) or flagged by the
+        rigid-regime criterion; ``<stat>`` one of
+        :data:`pencore.analysis.record.STATISTICS`. Per law: ``nominal_level``,
         ``held_out_coverage``, ``coverage_at_stated``, ``n_with_band`` of the band; the
         attribute ``best_law`` (smallest held-out :data:`CRITERION` among the laws) and
         ``best_law_loses`` (the bins where another law has a smaller one).
@@ -436,6 +480,22 @@ def record_statistics(ds: xr.Dataset) -> xr.Dataset:
             per[k][i] = b[k]
     coords["source"] = ("source", sources)
     put("source", ("model", "source"), per)
+
+    # the rigid-regime criterion: rows it keeps and flags, clean and eroding
+    rigid = ds["rigid"].to_numpy().astype(bool)
+    regime_groups = {
+        f"{g}, {v}": (ds["group"].to_numpy() == g) & (rigid == (v == "rigid"))
+        for g in ROW_GROUPS
+        for v in ("rigid", "flagged")
+    }
+    rg = {k: np.full((len(models), len(regime_groups)), np.nan) for k in stats}
+    for i in range(len(models)):
+        for j, m in enumerate(regime_groups.values()):
+            b = binned(e_all[i][m], np.zeros(int(m.sum())), [-1.0, 1.0])
+            for k in stats:
+                rg[k][i, j] = b[k][0]
+    coords["regime"] = ("regime", list(regime_groups))
+    put("regime", ("model", "regime"), rg)
 
     # the band's calibration, per law
     cal = {
@@ -535,13 +595,14 @@ def bands_document(stats: xr.Dataset) -> dict[str, Any]:
 
 def statistics_table(stats: xr.Dataset) -> pd.DataFrame:
     """:func:`record_statistics` as one long table: ``model``, ``kind``, ``grouping``
-    (``overall``, a quantity of :data:`BINS`, or ``source``), ``group`` (its bin, rows or
-    source) and the :data:`pencore.analysis.record.STATISTICS`."""
+    (``overall``, a quantity of :data:`BINS`, ``source`` or ``regime``), ``group`` (its
+    bin, rows, source or regime group) and the :data:`pencore.analysis.record.STATISTICS`."""
     frames = []
     for grouping, dim in (
         ("overall", "rows"),
         *((q, f"{q}_bin") for q in BINS),
         ("source", "source"),
+        ("regime", "regime"),
     ):
         prefix = grouping
         cols = {k: stats[f"{prefix}_{k}"].to_pandas().stack() for k in STATISTICS}
