@@ -73,6 +73,77 @@ def test_quantile_interval_covers_the_true_median():
     assert hits / 400 >= 0.92
 
 
+def _wilson_by_hand(k, n, z=1.959963984540054):
+    """The Wilson score interval as pencore wrote it before it called scipy."""
+    p = k / n
+    den = 1.0 + z * z / n
+    centre = (p + z * z / (2 * n)) / den
+    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / den
+    return (0.0 if k == 0 else centre - half), (1.0 if k == n else centre + half)
+
+
+def _quantile_by_hand(x, q, level=0.95):
+    """The order-statistic interval as pencore wrote it before it called scipy."""
+    from scipy import stats
+
+    xs = np.sort(np.asarray(x, float))
+    n = xs.size
+    lo = int(stats.binom.ppf((1 - level) / 2, n, q))
+    hi = int(stats.binom.ppf(1 - (1 - level) / 2, n, q)) + 1
+    return (
+        float(np.quantile(xs, q)),
+        float(xs[max(lo - 1, 0)]) if lo >= 1 else -math.inf,
+        float(xs[hi - 1]) if hi <= n else math.inf,
+    )
+
+
+def test_scipys_wilson_interval_is_the_hand_written_one():
+    """scipy's Wilson interval against the formula it replaced: the same interval, to
+    round-off. The two evaluate it in a different order; each end is a centre and a
+    half-width below 1, so they differ by a few machine epsilons absolute (measured 1.5
+    eps over n = 1..199 and every k; 4 eps allowed), and the ends 0 and 1 are exact."""
+    eps = np.finfo(float).eps
+    for n in (1, 2, 3, 5, 8, 16, 32, 50, 100, 1000, 1024, 4000):
+        for k in range(0, n + 1, max(1, n // 37)):
+            got, ref = wilson_interval(k, n), _wilson_by_hand(k, n)
+            np.testing.assert_allclose(got, ref, rtol=0.0, atol=4 * eps)
+        assert wilson_interval(0, n)[0] == 0.0 and wilson_interval(n, n)[1] == 1.0
+
+
+def test_scipys_quantile_interval_is_the_hand_written_one():
+    """scipy's quantile_test interval picks the same order statistics, so the same
+    numbers bit for bit, and the same infinite ends where so few samples bound nothing."""
+    rng = np.random.default_rng(1)
+    for n in (1, 2, 3, 5, 8, 10, 16, 20, 31, 50, 101, 256, 1024):
+        x = rng.normal(size=n)
+        for q in (0.05, 0.1, 0.25, 0.5, 0.75, 0.9, 0.95):
+            assert quantile_interval(x, q) == _quantile_by_hand(x, q), (n, q)
+
+
+def test_the_archived_ensembles_statistics_are_unchanged():
+    """The gathered statistics of the archived ensemble, recomputed from its samples with
+    scipy's intervals: quantile intervals bit for bit; Wilson intervals bit for bit but
+    one end of the running interval at N = 32, one unit in the last place away (the
+    order of the operations)."""
+    from pathlib import Path
+
+    import xarray as xr
+
+    path = Path(__file__).resolve().parents[2] / "results/archive/ensemble/p2_soil_oblique.nc"
+    with xr.open_dataset(path) as arch:
+        ds = arch.load()
+    n = ds.sizes["sample"]
+    for k in ("reversed", "perforated"):
+        assert wilson_interval(int(ds[k].sum()), n) == tuple(ds[f"p_{k}_ci95"].values)
+    rev = ds["reversed"].values
+    got = [wilson_interval(int(rev[:m].sum()), int(m)) for m in ds["n_used"].values]
+    np.testing.assert_array_max_ulp(np.array(got), ds["running_p_reversed_ci95"].values, 1)
+    for name in ("penetration_depth", "path_length", "downrange", "final_deviation"):
+        qs = [quantile_interval(ds[name].values, q) for q in ds["quantile"].values]
+        np.testing.assert_array_equal([q[0] for q in qs], ds[f"{name}_quantile"].values)
+        np.testing.assert_array_equal([q[1:] for q in qs], ds[f"{name}_quantile_ci95"].values)
+
+
 def test_samples_are_the_solver_runs_and_gather_joins_chunks():
     case = {**CASE, "n_samples": 6, "n_chunks": 2}
     parts = [run_chunk(case, 1), run_chunk(case, 0)]

@@ -27,8 +27,9 @@ tip's horizontal travel in the impact plane (``downrange``) and across it
 (``cross_range``; zero by the model's symmetry, a check), and the final attitude
 (deviation of the velocity from the normal, angle of the axis from the normal).
 :func:`gather` adds probabilities with Wilson 95 % intervals, means with Student-t 95 %
-intervals, quantiles with distribution-free (binomial order-statistic) 95 % intervals,
-and the running estimates against N for the convergence plot.
+intervals, quantiles with distribution-free (binomial order-statistic) 95 % intervals
+(both intervals scipy's: :func:`wilson_interval`, :func:`quantile_interval`), and the
+running estimates against N for the convergence plot.
 """
 
 from __future__ import annotations
@@ -158,31 +159,65 @@ def run_chunk(case: Mapping[str, Any], chunk: int, numerics: Any = None) -> xr.D
     return ds
 
 
-def wilson_interval(k: int, n: int, z: float = 1.959963984540054) -> tuple[float, float]:
-    """Wilson score interval (95 % by default) of a probability from k successes in n."""
+def wilson_interval(k: int, n: int, level: float = 0.95) -> tuple[float, float]:
+    """Wilson score interval of a probability from ``k`` successes in ``n`` trials.
+
+    scipy's ``scipy.stats.binomtest(k, n).proportion_ci(level, method="wilson")``
+    (Wilson, JASA 22 (1927) 209-212; Newcombe, Stat. Med. 17 (1998) 857-872), with the
+    ends exactly 0 at ``k = 0`` and 1 at ``k = n``.
+
+    Parameters
+    ----------
+    k, n : int
+        Successes and trials, ``0 <= k <= n``, ``n > 0``.
+    level : float, default 0.95
+        Confidence level, in (0, 1).
+
+    Returns
+    -------
+    tuple of float
+        Lower and upper end (probabilities, dimensionless).
+
+    Raises
+    ------
+    InputError
+        ``k`` or ``n`` outside those ranges.
+    """
     if n <= 0 or not 0 <= k <= n:
         raise InputError(f"wilson_interval needs 0 <= k <= n and n > 0, got k={k}, n={n}")
-    p = k / n
-    den = 1.0 + z * z / n
-    centre = (p + z * z / (2 * n)) / den
-    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / den
-    # exact ends at k = 0 and k = n (the formula gives them up to round-off)
-    return (0.0 if k == 0 else centre - half), (1.0 if k == n else centre + half)
+    ci = stats.binomtest(int(k), int(n)).proportion_ci(level, method="wilson")
+    return float(ci.low), float(ci.high)
 
 
 def quantile_interval(x: np.ndarray, q: float, level: float = 0.95) -> tuple[float, float, float]:
-    """Sample quantile and its distribution-free interval from order statistics: the
-    number of samples below the true quantile is Binomial(n, q)."""
-    xs = np.sort(np.asarray(x, float))
-    n = xs.size
+    """Sample quantile and its distribution-free interval from order statistics.
+
+    The number of samples below the true ``q`` quantile is Binomial(n, q), which gives an
+    interval between two order statistics with coverage at least ``level`` (Conover,
+    *Practical Nonparametric Statistics*, 3rd ed., 1999, Sec. 3.2): scipy's
+    ``scipy.stats.quantile_test(x, p=q).confidence_interval(level)``.
+
+    Parameters
+    ----------
+    x : numpy.ndarray
+        The samples (any units).
+    q : float
+        Probability of the quantile, in (0, 1).
+    level : float, default 0.95
+        Confidence level, in (0, 1).
+
+    Returns
+    -------
+    tuple of float
+        The sample quantile (``numpy.quantile``, linear), the lower and the upper end of
+        the interval (units of ``x``); an end that no order statistic of so few samples
+        can give is ``-inf`` or ``+inf`` (scipy's NaN).
+    """
+    xs = np.asarray(x, float)
     est = float(np.quantile(xs, q))
-    lo = int(stats.binom.ppf((1 - level) / 2, n, q))
-    hi = int(stats.binom.ppf(1 - (1 - level) / 2, n, q)) + 1
-    return (
-        est,
-        float(xs[max(lo - 1, 0)]) if lo >= 1 else -math.inf,
-        (float(xs[hi - 1]) if hi <= n else math.inf),
-    )
+    ci = stats.quantile_test(xs, q=0.0, p=q).confidence_interval(level)
+    lo, hi = float(ci.low), float(ci.high)
+    return est, (-math.inf if math.isnan(lo) else lo), (math.inf if math.isnan(hi) else hi)
 
 
 def gather(parts: Sequence[xr.Dataset]) -> xr.Dataset:
