@@ -155,7 +155,8 @@ def residual_curve(
         perforate), ``recht_ipson`` (the fitted curve, m/s; NaN without a fit),
         ``exit_pitch`` (deg), ``outcome``; attributes ``recht_ipson_a``, ``_p`` and
         ``v_bl_m_s`` (fitted, all three free; NaN with fewer than three perforating runs)
-        as :func:`pencore.plotting.perforation.plot_residual_velocity` draws them.
+        as :func:`pencore.plotting.perforation.plot_residual_velocity` draws them, and
+        ``thickness_m``, the target's total thickness (m, gaps included).
     """
     v = axis_values(velocities, "velocities")
     pr = prepare(projectile, target, resolve_numerics(numerics))
@@ -166,9 +167,10 @@ def residual_curve(
         )
     vr, pitch, outcome = residual_runs(pr, v, obliquity, yaw, progress, start=start)
     fit = {"a": math.nan, "p": math.nan, "v_bl": math.nan, "rms": math.nan}
+    curve = np.full(v.size, math.nan)  # no fit, no curve (recht_ipson refuses NaN)
     if (vr > 0).sum() >= 3:
         fit = fit_recht_ipson(v, vr)
-    curve = recht_ipson(v, fit["v_bl"], fit["a"], fit["p"])
+        curve = recht_ipson(v, fit["v_bl"], fit["a"], fit["p"])
     return xr.Dataset(
         residual_variables(vr, curve, pitch, outcome, "target"),
         coords=_velocity_coord(v),
@@ -176,6 +178,7 @@ def residual_curve(
             "title": "pencore residual velocity against impact velocity",
             "projectile": pr.projectile.name,
             "medium": pr.target.name,
+            "thickness_m": float(pr.target.thickness),  # m, gaps included
             "obliquity_deg": float(obliquity),
             "yaw_deg": float(yaw),
             **_start_attrs(start),
