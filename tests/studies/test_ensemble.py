@@ -187,3 +187,65 @@ def test_azimuth_only_turns_the_trajectory():
     assert np.ptp(ds["downrange"].values) < tol
     assert np.ptp(ds["penetration_depth"].values) < tol
     assert np.abs(ds["cross_range"].values).max() < tol
+
+
+ANGLE_OF_ATTACK = {
+    **CASE,
+    "yaw_convention": "axis_tilted",
+    "obliquity_deg": {"dist": "uniform", "min": 0, "max": 30},
+    "yaw_deg": {"dist": "normal", "mean": 0, "sd": 2.0, "min": -5, "max": 5},
+}
+
+
+def test_an_angle_of_attack_draws_obliquity_and_yaw_tied():
+    """axis_tilted: the draws are the same numbers as the default reading's (same seed),
+    read as the velocity's angle and the axis's tilt from it, so every sample has
+    simulate's obliquity = drawn obliquity + drawn yaw and simulate's yaw = -drawn yaw:
+    the velocity stays at the drawn obliquity (obliquity + yaw), the axis moves."""
+    from pencore.studies.ensemble import run_angles
+
+    cond = sample_conditions(ANGLE_OF_ATTACK)
+    same = sample_conditions({**ANGLE_OF_ATTACK, "yaw_convention": "velocity_tilted"})
+    for k in cond:
+        np.testing.assert_array_equal(cond[k], same[k])
+    obl, yaw = run_angles(cond, "axis_tilted")
+    np.testing.assert_array_equal(yaw, -cond["yaw_deg"])
+    np.testing.assert_array_equal(obl, cond["obliquity_deg"] + cond["yaw_deg"])
+    # the velocity's angle, obliquity + yaw, is the drawn one to round-off (one addition
+    # and one subtraction: within 2 ulp of 30 deg)
+    np.testing.assert_allclose(obl + yaw, cond["obliquity_deg"], rtol=0, atol=1e-14)
+    assert np.std(yaw) > 1.0  # the axis does move
+    o, y = run_angles(cond, "velocity_tilted")
+    assert o is not None and np.array_equal(o, cond["obliquity_deg"])
+    assert np.array_equal(y, cond["yaw_deg"])
+
+
+def test_a_case_says_which_reading_it_draws_and_runs_it():
+    """The output's attributes name the reading; an axis_tilted case records its draws
+    beside simulate's angles, and each run has the velocity at the drawn obliquity and
+    the axis tilted from it by the drawn angle of attack."""
+    case = {**ANGLE_OF_ATTACK, "n_samples": 3, "n_chunks": 1, "velocity_m_s": 800.0}
+    ds = gather([run_chunk(case, 0)])
+    assert ds.attrs["yaw_convention"] == "axis_tilted"
+    assert ds.attrs["yaw_reading"].startswith("angle of attack")
+    np.testing.assert_array_equal(ds["yaw"].values, -ds["angle_of_attack"].values)
+    np.testing.assert_array_equal(
+        ds["obliquity"].values, ds["velocity_obliquity"].values + ds["angle_of_attack"].values
+    )
+    i = 1
+    run = simulate("p2", "soil", 800.0, float(ds["obliquity"][i]), float(ds["yaw"][i]),
+                   float(ds["omega"][i]), azimuth=float(ds["azimuth"][i]))  # fmt: skip
+    assert float(ds["path_length"][i]) == float(run["path_length"])
+    # at t = 0 the velocity is at the drawn obliquity, the axis at it plus the drawn angle
+    vel = math.degrees(math.atan2(math.hypot(float(run.vel_x[0]), float(run.vel_z[0])),
+                                  -float(run.vel_y[0])))  # fmt: skip
+    axis = math.degrees(math.atan2(math.hypot(float(run.axis_x[0]), float(run.axis_z[0])),
+                                   -float(run.axis_y[0])))  # fmt: skip
+    drawn_v, drawn_a = float(ds["velocity_obliquity"][i]), float(ds["angle_of_attack"][i])
+    assert vel == pytest.approx(drawn_v, abs=1e-9)
+    assert axis == pytest.approx(abs(drawn_v + drawn_a), abs=1e-9)
+    # the default reading says so too, and keeps its variables as they were
+    plain = run_chunk({**CASE, "n_samples": 1, "n_chunks": 1}, 0)
+    assert plain.attrs["yaw_convention"] == "velocity_tilted"
+    assert plain.attrs["yaw_reading"].startswith("velocity yaw")
+    assert "angle_of_attack" not in plain and "velocity_obliquity" not in plain

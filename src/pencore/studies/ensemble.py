@@ -9,10 +9,20 @@ key                units      meaning (as in :func:`pencore.simulate`)
 =================  =========  ==========================================================
 ``velocity_m_s``   m/s        impact speed
 ``obliquity_deg``  degree     angle of the projectile axis from the target normal
-``yaw_deg``        degree     velocity angle minus axis angle
+``yaw_deg``        degree     velocity angle minus axis angle (a velocity yaw)
 ``omega_rad_s``    rad/s      initial angular velocity about the in-plane normal
 ``azimuth_deg``    degree     rotation of the whole impact about the target normal
 =================  =========  ==========================================================
+
+The table's ``obliquity_deg`` and ``yaw_deg`` are the case's default reading,
+``yaw_convention: velocity_tilted``. With ``yaw_convention: axis_tilted`` the case draws an
+angle of attack instead: ``obliquity_deg`` is the velocity's angle from the normal and
+``yaw_deg`` tilts the axis from the velocity, so each run has simulate's obliquity
+``obliquity_deg + yaw_deg`` and yaw ``-yaw_deg``, tied
+(:func:`pencore.inputs.conventions.impact_angles`). Every output says which it drew
+(attributes ``yaw_convention`` and ``yaw_reading``), and an ``axis_tilted`` case records
+the draws as ``velocity_obliquity`` and ``angle_of_attack`` beside simulate's
+``obliquity`` and ``yaw``.
 
 A distribution is ``{dist: fixed, value}``, ``{dist: uniform, min, max}`` or
 ``{dist: normal, mean, sd}`` with optional ``min`` / ``max`` (a truncated normal, drawn by
@@ -44,12 +54,14 @@ import xarray as xr
 from scipy import stats
 
 from pencore.errors import InputError
+from pencore.inputs.conventions import impact_angles
 from pencore.run.impact import prepare, simulate
 from pencore.studies.common import t_half_width
-from pencore.workflowconfig.ensemble_cases import VARIABLES, check_case
+from pencore.workflowconfig.ensemble_cases import VARIABLES, YAW_READINGS, check_case
 
 __all__ = [
     "sample_conditions",
+    "run_angles",
     "chunk_indices",
     "run_chunk",
     "gather",
@@ -91,6 +103,19 @@ def sample_conditions(case: Mapping[str, Any]) -> dict[str, np.ndarray]:
     return {k: _transform(c[k], u[:, j]) for j, k in enumerate(VARIABLES)}
 
 
+def run_angles(cond: Mapping[str, np.ndarray], convention: str) -> tuple[np.ndarray, np.ndarray]:
+    """simulate's obliquity and yaw (deg) of drawn conditions (:func:`sample_conditions`)
+    read by the case's ``yaw_convention``: the draws themselves for
+    ``velocity_tilted``; ``obliquity_deg + yaw_deg`` and ``-yaw_deg`` (the axis tilted
+    from the velocity by the drawn angle of attack) for ``axis_tilted``."""
+    obl = np.asarray(cond["obliquity_deg"], float)
+    yaw = np.asarray(cond["yaw_deg"], float)
+    if convention == "axis_tilted":
+        return obl + yaw, -yaw
+    impact_angles(0.0, 0.0, convention)  # refuses an unknown convention
+    return obl, yaw
+
+
 def chunk_indices(n_samples: int, n_chunks: int, chunk: int) -> np.ndarray:
     """Sample indices of chunk ``chunk`` (0-based) of ``n_chunks`` nearly equal chunks."""
     if not 0 <= chunk < n_chunks:
@@ -98,8 +123,9 @@ def chunk_indices(n_samples: int, n_chunks: int, chunk: int) -> np.ndarray:
     return np.array_split(np.arange(n_samples), n_chunks)[chunk]
 
 
-def _one(pr: Any, cond: Mapping[str, float]) -> dict[str, Any]:
+def _one(pr: Any, cond: Mapping[str, float], convention: str) -> dict[str, Any]:
     kw = {VARIABLES[k][0]: float(v) for k, v in cond.items()}
+    kw["obliquity"], kw["yaw"] = impact_angles(kw["obliquity"], kw["yaw"], convention)
     ds = simulate(pr.projectile, pr.target, prepared=pr, **kw)  # checked once, at prepare
     az = math.radians(kw["azimuth"])
     dx = float(ds["tip_x"][-1] - ds["tip_x"][0])
@@ -130,11 +156,22 @@ def run_chunk(case: Mapping[str, Any], chunk: int, numerics: Any = None) -> xr.D
     c = check_case(case)
     idx = chunk_indices(c["n_samples"], c["n_chunks"], chunk)
     cond = sample_conditions(c)
+    convention = c["yaw_convention"]
     pr = prepare(c["projectile"], c["target"], numerics)
-    runs = [_one(pr, {k: v[i] for k, v in cond.items()}) for i in idx]
+    runs = [_one(pr, {k: v[i] for k, v in cond.items()}, convention) for i in idx]
     data: dict[str, Any] = {}
+    given = dict(cond)
+    if convention == "axis_tilted":  # the draws, and simulate's angles beside them
+        obl, yaw = run_angles(cond, convention)
+        data["velocity_obliquity"] = ("sample", cond["obliquity_deg"][idx], {
+            "units": "degree", "long_name": "angle of the velocity from the target normal "
+            "(drawn obliquity_deg)"})  # fmt: skip
+        data["angle_of_attack"] = ("sample", cond["yaw_deg"][idx], {
+            "units": "degree", "long_name": "angle of the axis from the velocity, the axis "
+            "tilted (drawn yaw_deg)"})  # fmt: skip
+        given.update(obliquity_deg=obl, yaw_deg=yaw)
     for k, (arg, units, long_name) in VARIABLES.items():
-        data[arg] = ("sample", cond[k][idx], {"units": units, "long_name": long_name})
+        data[arg] = ("sample", given[k][idx], {"units": units, "long_name": long_name})
     units = dict((r[0], (r[1], r[2])) for r in RESULTS)
     units["cross_range"] = ("m", "horizontal travel of the tip across the impact plane")
     for k in runs[0] if runs else ():
@@ -155,7 +192,13 @@ def run_chunk(case: Mapping[str, Any], chunk: int, numerics: Any = None) -> xr.D
             )
         },
     )
-    ds.attrs.update(case_json=json.dumps(c, sort_keys=True), chunk=chunk, n_chunks=c["n_chunks"])
+    ds.attrs.update(
+        case_json=json.dumps(c, sort_keys=True),
+        chunk=chunk,
+        n_chunks=c["n_chunks"],
+        yaw_convention=convention,
+        yaw_reading=YAW_READINGS[convention],
+    )
     return ds
 
 
