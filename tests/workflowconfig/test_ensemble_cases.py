@@ -64,6 +64,6 @@ def test_the_ensembles_pages_angle_of_attack_case_is_a_valid_case():
 
     page = (REPO / "docs" / "user-guide" / "ensembles.md").read_text()
     (block,) = [b for b in re.findall(r"```yaml\n(.*?)```", page, re.S) if "axis_tilted" in b]
-    (case,) = yaml.safe_load(block)
+    (case,) = yaml.safe_load(block)["ensemble"]["cases"]
     out = check_case(case)
     assert out["yaw_convention"] == "axis_tilted" and out["obliquity_deg"]["value"] == 20.0
