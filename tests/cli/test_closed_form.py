@@ -110,6 +110,7 @@ def test_the_crater_option_is_the_models_crater_form(capsys):
     "extra, target_text, needle",
     [
         (["--free-surface-depth", "2"], "concrete", "no free-surface reduction"),
+        (["--plastic-zone-ratio", "3"], "concrete", "plastic_zone_ratio 3"),
         ([], "LAYERED", "half-space of one medium"),
         ([], "FRICTION", "frictionless"),
     ],

@@ -123,6 +123,11 @@ def run(args: argparse.Namespace) -> int:
     target = run_target(args)
     medium = _half_space_medium(target)
     v0 = args.velocity
+    if medium.plastic_zone_ratio > 0.0:  # closedform.depth would leave it out silently
+        raise InputError(
+            f"target {target.name!r}: closed forms have no free-surface reduction "
+            f"(plastic_zone_ratio {medium.plastic_zone_ratio:g}); give 0 or leave it out"
+        )
     try:  # a law or a window no closed form takes (friction, free surface, a3...)
         model = closedform.depth(projectile, medium, v0)
         full_nose = closedform.tunnel_depth(projectile, medium, v0)
