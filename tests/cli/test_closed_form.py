@@ -138,3 +138,12 @@ def test_help_lists_the_command(capsys):
     assert main(["closed-form", "--help"]) == 0
     text = " ".join(capsys.readouterr().out.split())
     assert "impact speed in m/s" in text and "first contact" in text
+
+
+def test_a_run_that_would_stop_before_it_starts_is_refused(capsys):
+    argv = ["closed-form", "--projectile", "p2", "--target", "soil", "--velocity", "300",
+            "--numerics", "v_stop=400"]  # fmt: skip
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "v_stop = 400 m/s is not below the impact speed" in err
+    assert main([*argv, "--no-run"]) == 0  # the closed forms alone need no run

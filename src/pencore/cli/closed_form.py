@@ -177,7 +177,14 @@ def run(args: argparse.Namespace) -> int:
         from pencore.run.impact import simulate
 
         exit_at_once_on_interrupt()
-        ds = simulate(projectile, target, v0, numerics=run_numerics(args), loads=False)
+        numerics = run_numerics(args)
+        if numerics.v_stop >= v0:  # the run would end before its first step, at depth 0
+            raise InputError(
+                f"numerics v_stop = {numerics.v_stop:g} m/s is not below the impact speed "
+                f"{v0:g} m/s: the run would stop before it starts (lower v_stop, or "
+                "--no-run for the closed forms alone)"
+            )
+        ds = simulate(projectile, target, v0, numerics=numerics, loads=False)
         depth = float(ds["penetration_depth"])
         fields.append(
             Field(
