@@ -71,3 +71,56 @@ def test_bad_range_is_one_line(capsys):
     assert main(["vcr", *P2, "--obliquity", "45", "--lo", "500", "--hi", "400"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "--lo 500 must be below --hi 400" in err
+
+
+def test_start_reaches_the_runs_of_omega_c(tmp_path, capsys):
+    """A start 1 m above the surface lets the spinning body turn in flight before it
+    touches (0.67 ms at 1500 m/s), so much less spin turns it back: the search's answer
+    moves from 156-172 rad/s to 31-47 rad/s, and the file records the start."""
+    argv = ["omega-c", *P2, "--velocity", "1500", "--lo", "0", "--hi", "500", "--tol", "25",
+            "--scan", "0", "--format", "json"]  # fmt: skip
+    assert main(argv) == 0
+    touching = _json(capsys)
+    out = tmp_path / "omega_c.nc"
+    assert main([*argv, "--start", "0", "1", "0", "--out", str(out)]) == 0
+    above = _json(capsys)
+    assert touching["omega_c_lo"]["value"] > 150.0
+    assert above["omega_c_hi"]["value"] < touching["omega_c_lo"]["value"] / 3
+    import xarray as xr
+
+    with xr.open_dataset(out) as ds:
+        assert list(ds.attrs["start_m"]) == [0.0, 1.0, 0.0]
+
+
+START_COMMANDS = {
+    "vcr": ["vcr", *P2, "--obliquity", "45"],
+    "vci": ["vci", *P2, "--yaw", "0.1", "--threshold", "1"],
+    "omega-c": ["omega-c", *P2, "--velocity", "300", "--hi", "50"],
+    "ballistic-limit": ["ballistic-limit", "--projectile", "p2", "--target", "SLAB"],
+    "depth-curve": ["depth-curve", *P2, "--velocities", "300"],
+    "residual-velocity": ["residual-velocity", "--projectile", "p2", "--target", "SLAB"]
+    + ["--velocities", "300"],
+    "ballistic-table": ["ballistic-table", "--projectile", "p2", "--medium", "concrete"]
+    + ["--thicknesses", "0.5"],
+}
+
+
+def test_every_search_and_sweep_command_passes_its_start_to_the_runs(tmp_path, capsys):
+    """Each command's runs refuse a start from which the body cannot reach the target
+    within t_max (the check of pencore.simulate, made by each run before it integrates):
+    the start reached them. The same option as 'simulate --start': three numbers in m."""
+    slab = tmp_path / "slab.yaml"
+    slab.write_text("name: slab\nlayers:\n  - {medium: concrete, thickness: 0.5}\n")
+    for name, argv in START_COMMANDS.items():
+        argv = [str(slab) if a == "SLAB" else a for a in argv]
+        high = ["--start", "0", "100", "0", "--numerics", "t_max=0.01"]
+        assert main([*argv, *high]) == 2, name
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "start height" in err and "t_max" in err, (name, err)
+        assert main([*argv, "--start", "0", "-1", "0"]) == 2, name
+        err = capsys.readouterr().err
+        assert "start y must be >= 0 m" in err, (name, err)
+        assert main([*argv, "--start", "0", "1"]) == 2, name  # three numbers
+        assert "--start" in capsys.readouterr().err
+        assert main([name, "--help"]) == 0
+        assert "--start X Y Z" in capsys.readouterr().out, name

@@ -5,6 +5,7 @@ threshold."""
 import json
 
 import numpy as np
+import pytest
 import xarray as xr
 
 import pencore
@@ -92,3 +93,22 @@ def test_ballistic_table_refuses_a_thickness_that_is_not_positive(tmp_path, caps
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "thickness must be in (0, " in err[0], err
     assert list(tmp_path.iterdir()) == []
+
+
+def test_depth_curve_runs_from_the_start_given(tmp_path, capsys):
+    """--start moves every run: the runs are simulate's with that start, bit for bit,
+    and the table records it; the half-space is the same everywhere along x, so the
+    depth from 1 m above and 1 m back is the default's to the integration's accuracy
+    (rtol 1e-5 of the path; 1e-4 allowed)."""
+    out = tmp_path / "depth.nc"
+    argv = ["depth-curve", "--projectile", "p2", "--target", "soil", "--velocities", "300",
+            "--start", "-1", "1", "0", "--out", str(out), "--quiet"]  # fmt: skip
+    assert main(argv) == 0
+    capsys.readouterr()
+    with xr.open_dataset(out) as ds:
+        assert list(ds.attrs["start_m"]) == [-1.0, 1.0, 0.0]
+        depth = float(ds.penetration_depth[0])
+    ref = pencore.simulate("p2", "soil", 300.0, start=(-1.0, 1.0, 0.0))
+    assert depth == float(ref.penetration_depth)
+    touching = float(pencore.simulate("p2", "soil", 300.0).penetration_depth)
+    assert depth == pytest.approx(touching, rel=1e-4)

@@ -29,3 +29,67 @@ def test_ballistic_map_with_the_obliquity_ratio(figure_check):
     )
     assert len([ax for ax in fig.axes if ax.axison]) == 2
     figure_check(fig)
+
+
+def _table(thicknesses, obliquities, values):
+    """A ballistic table as ballistic_table writes it, from synthetic searches."""
+    import numpy as np
+    import xarray as xr
+    from helpers import search_results
+
+    from pencore.studies.common import search_variables
+
+    res = search_results(np.asarray(values, float))
+    return xr.Dataset(
+        search_variables(res, "v_bl", "m s-1", "ballistic limit", ("thickness", "obliquity")),
+        coords={"thickness": ("thickness", thicknesses), "obliquity": ("obliquity", obliquities)},
+        attrs={"projectile": "p2", "medium": "concrete", "search_tol_m_s": 5.0},
+    )
+
+
+def test_one_thickness_table_is_drawn_against_obliquity():
+    """One thickness, three obliquities: one line of three points against obliquity (not
+    three dots on a vertical line at the thickness), the thickness in the legend."""
+    import numpy as np
+
+    fig = plotting.plot_ballistic_limit(_table([0.5], [0.0, 30.0, 60.0], [[400, 450, 600]]))
+    ax = fig.axes[0]
+    (bars,) = ax.containers  # one errorbar set: the points and their brackets
+    x, y = bars.lines[0].get_data()
+    np.testing.assert_array_equal(x, [0.0, 30.0, 60.0])
+    np.testing.assert_array_equal(y, [400.0, 450.0, 600.0])
+    assert ax.get_xlabel() == "Obliquity (deg)"
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == ["slab 0.5 m"]
+
+
+def test_several_thicknesses_are_drawn_against_thickness():
+    import numpy as np
+
+    ds = _table([0.3, 0.5], [0.0, 30.0], [[300, 320], [400, 450]])
+    ax = plotting.plot_ballistic_limit(ds).axes[0]
+    assert ax.get_xlabel() == "Slab thickness (m)"
+    assert len(ax.containers) == 2
+    np.testing.assert_array_equal(ax.containers[1].lines[0].get_data()[1], [320.0, 450.0])
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == ["obliquity 0°", "obliquity 30°"]
+
+
+def test_residual_velocity_title_gives_the_targets_thickness():
+    """The command line's residual curve records the target's thickness, and the title
+    shows it (it read 'slab nan m'); a dataset without one names the target alone. Two
+    speeds that perforate are too few for a fit: the curve is NaN, the runs are drawn."""
+    import warnings
+
+    import pencore
+    from pencore.studies.sweeps import residual_curve
+
+    plate = pencore.Target("plate", (pencore.Layer(pencore.get_target("aluminium").medium, 0.02),))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", pencore.PlausibilityWarning)  # a thin plate
+        ds = residual_curve("p2", plate, [300.0, 400.0])
+    assert ds.attrs["thickness_m"] == 0.02
+    assert (ds["residual_velocity"].values > 0).all() and ds["recht_ipson"].isnull().all()
+    title = plotting.plot_residual_velocity(ds).axes[0].get_title()
+    assert "plate slab 0.02 m" in title and "nan" not in title
+    del ds.attrs["thickness_m"]
+    title = plotting.plot_residual_velocity(ds).axes[0].get_title()
+    assert ", plate, obliquity 0°" in title and "nan" not in title

@@ -54,3 +54,32 @@ def test_a_study_dataset_is_refused_in_one_line():
         plot_run(xr.Dataset({"velocity": ("velocity", [1.0])}))
     with pytest.raises(InputError, match="against"):
         plot_run(pencore.simulate("p2", "soil", 300.0), against="speed")
+
+
+def test_a_layered_targets_path_shows_each_interface():
+    """Concrete 0.3 m, an air gap of 0.1 m, soil 0.5 m: the interfaces and the rear face
+    dashed at y = -0.3, -0.4 and -0.9 m, the gap shaded, each layer named; a half-space of
+    one medium has its surface only (the first test: two lines)."""
+    import warnings
+
+    concrete, soil = pencore.get_target("concrete").medium, pencore.get_target("soil").medium
+    target = pencore.Target(
+        "stack",
+        (pencore.Layer(concrete, 0.3), pencore.Layer.gap(0.1), pencore.Layer(soil, 0.5)),
+    )
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", pencore.PlausibilityWarning)  # thin plates
+        ds = pencore.simulate("p2", target, 400.0, loads=False)
+    path = plot_run(ds).axes[0]
+    dashed = [ln for ln in path.lines if ln.get_linestyle() == "--"]
+    heights = sorted(float(ln.get_ydata()[0]) for ln in dashed)
+    assert heights == pytest.approx([-0.9, -0.4, -0.3], abs=1e-12)
+    assert all(np.ptp(ln.get_ydata()) == 0 for ln in dashed)  # horizontal
+    (gap,) = path.patches  # the shaded gap spans y = -0.4 to -0.3 m
+    ys = gap.get_transform().transform(gap.get_path().vertices)[:, 1]
+    data_ys = path.transData.inverted().transform(np.c_[np.zeros_like(ys), ys])[:, 1]
+    assert sorted({round(y, 9) for y in data_ys}) == [-0.4, -0.3]
+    names = [t.get_text().strip() for t in path.texts]
+    assert names == ["concrete", "air gap", "soil"]
+    half_space = plot_run(pencore.simulate("p2", "soil", 300.0, loads=False)).axes[0]
+    assert len(half_space.lines) == 2 and not half_space.texts and not half_space.patches

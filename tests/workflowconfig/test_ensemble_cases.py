@@ -49,3 +49,21 @@ def test_bad_cases_one_line(edit, needle):
     with pytest.raises(InputError, match=needle) as e:
         check_case({**CASE, **edit})
     assert "\n" not in str(e.value)
+
+
+def test_the_yaw_convention_is_checked_and_spelt_out():
+    assert check_case(CASE)["yaw_convention"] == "velocity_tilted"
+    assert check_case({**CASE, "yaw_convention": "axis_tilted"})["yaw_convention"] == "axis_tilted"
+    with pytest.raises(InputError, match="yaw_convention must be one of axis_tilted") as e:
+        check_case({**CASE, "yaw_convention": "axis"})
+    assert "\n" not in str(e.value)
+
+
+def test_the_ensembles_pages_angle_of_attack_case_is_a_valid_case():
+    import re
+
+    page = (REPO / "docs" / "user-guide" / "ensembles.md").read_text()
+    (block,) = [b for b in re.findall(r"```yaml\n(.*?)```", page, re.S) if "axis_tilted" in b]
+    (case,) = yaml.safe_load(block)["ensemble"]["cases"]
+    out = check_case(case)
+    assert out["yaw_convention"] == "axis_tilted" and out["obliquity_deg"]["value"] == 20.0

@@ -18,9 +18,11 @@ from pencore.cli.summary import (
     NOT_FOUND,
     add_search_outputs,
     add_speed_bracket,
+    add_start_option,
     check_bracket,
     check_outputs,
     search_fields,
+    start_of,
     write_outputs,
 )
 
@@ -64,6 +66,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
             "width of the final bracket in m/s (default: 5)",
         ),
     )
+    add_start_option(p)
     add_search_outputs(p)
 
 
@@ -77,6 +80,8 @@ def run(args: argparse.Namespace) -> int:
     out, plot = check_outputs(args)
     projectile = run_projectile(args)
     target = run_target(args)
+    start = start_of(args)
+    at = {} if start is None else {"start": start}  # every run's start (m), where given
     r = ballistic_limit(
         projectile,
         target,
@@ -87,6 +92,7 @@ def run(args: argparse.Namespace) -> int:
         args.tol,
         scan=args.scan or None,
         numerics=run_numerics(args),
+        **at,
     )
     ds = search_dataset(
         r,
@@ -97,6 +103,7 @@ def run(args: argparse.Namespace) -> int:
         target=args.target,
         obliquity_deg=args.obliquity,
         yaw_deg=args.yaw,
+        **({} if start is None else {"start_m": list(start)}),
     )
     fields = search_fields(r, "v_bl", "m s-1", "m/s", label="ballistic limit")
     write_outputs(ds, fields, out, plot, args)

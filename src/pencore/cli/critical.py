@@ -28,9 +28,11 @@ from pencore.cli.summary import (
     NOT_FOUND,
     add_search_outputs,
     add_speed_bracket,
+    add_start_option,
     check_bracket,
     check_outputs,
     search_fields,
+    start_of,
     write_outputs,
 )
 
@@ -95,6 +97,7 @@ def add_parsers(sub: argparse._SubParsersAction) -> None:
         help="velocity angle minus axis angle in deg (as for 'simulate'; default 0)",
     )
     _speed_bracket(p, 100.0)
+    add_start_option(p)
     add_search_outputs(p)
 
     p = sub.add_parser(
@@ -129,6 +132,7 @@ def add_parsers(sub: argparse._SubParsersAction) -> None:
         help="which of the axis or the velocity the yaw tilts (default: axis_tilted)",
     )
     _speed_bracket(p, 200.0)
+    add_start_option(p)
     add_search_outputs(p)
 
     p = sub.add_parser(
@@ -163,6 +167,7 @@ def add_parsers(sub: argparse._SubParsersAction) -> None:
         metavar="RAD_S",
         help="width of the final bracket (default: 0.5 rad/s)",
     )
+    add_start_option(p)
     add_search_outputs(p)
 
 
@@ -183,18 +188,24 @@ def run_search(args: argparse.Namespace) -> int:
     scan = args.scan or None
     quantity, units, text_units, long_name = QUANTITIES[args.command]
     inputs: dict[str, Any] = {"projectile": args.projectile, "target": args.target}
+    start = start_of(args)
+    # the runs' start, where given (m): passed to every run and recorded in the result
+    at: dict[str, Any] = {} if start is None else {"start": start}
+    if start is not None:
+        inputs["start_m"] = list(start)
     if args.command == "vcr":
         r = critical.vcr(projectile, target, args.obliquity, args.yaw, args.lo, args.hi,
-                         args.tol, scan=scan, numerics=num)  # fmt: skip
+                         args.tol, scan=scan, numerics=num, **at)  # fmt: skip
         inputs.update(obliquity_deg=args.obliquity, yaw_deg=args.yaw)
     elif args.command == "vci":
         r = critical.vci(projectile, target, args.yaw, args.lo, args.hi, args.threshold,
-                         args.tol, convention=args.convention, scan=scan, numerics=num)  # fmt: skip
+                         args.tol, convention=args.convention, scan=scan, numerics=num,
+                         **at)  # fmt: skip
         inputs.update(yaw_deg=args.yaw, threshold_deg=args.threshold,
                       yaw_convention=args.convention)  # fmt: skip
     else:
         r = critical.omega_c(projectile, target, args.velocity, args.lo, args.hi, args.tol,
-                             scan=scan, numerics=num)  # fmt: skip
+                             scan=scan, numerics=num, **at)  # fmt: skip
         inputs.update(impact_velocity_m_s=args.velocity)
     ds = search_dataset(r, quantity, units, long_name, **inputs)
     write_outputs(ds, search_fields(r, quantity, units, text_units), out, plot, args)

@@ -1,4 +1,4 @@
-"""Command-line interface: ``pencore simulate | ballistic-limit | fit-table3 | list``.
+"""Command-line interface: ``pencore simulate | ballistic-limit | vcr | ... | closed-form``.
 
 Every user error ends the program with exit status 2 and a single line on stderr,
 ``pencore: error: <message>``, naming the offending value and what is allowed; a solver
@@ -17,7 +17,7 @@ import os
 import sys
 from collections.abc import Callable, Sequence
 
-from pencore.cli import ballistic, critical, law, library, simulate, sweeps
+from pencore.cli import ballistic, closed_form, critical, law, library, simulate, sweeps
 from pencore.cli.options import INTERRUPTED, PROG, CommandFailure, Parser, one_line
 from pencore.errors import InputError, SolverError, interrupted_import
 from pencore.inputs.limits import one_line_warnings
@@ -39,6 +39,7 @@ COMMANDS: dict[str, Callable[[argparse.Namespace], int]] = {
     "fit-table3": library.fit_table3,
     "list": library.list_library,
     "law": law.run,
+    "closed-form": closed_form.run,
 }
 
 
@@ -48,8 +49,8 @@ def build_parser() -> argparse.ArgumentParser:
     Returns
     -------
     argparse.ArgumentParser
-        Parser with the ``simulate``, ``ballistic-limit``, ``fit-table3``, ``list`` and
-        ``law`` subcommands.
+        Parser with the ``simulate``, ``ballistic-limit``, ``vcr``, ``vci``, ``omega-c``,
+        the sweeps, ``fit-table3``, ``list``, ``law`` and ``closed-form`` subcommands.
     """
     parser = Parser(
         prog=PROG,
@@ -73,6 +74,7 @@ def build_parser() -> argparse.ArgumentParser:
     sweeps.add_parsers(sub)
     library.add_parsers(sub)
     law.add_parser(sub)
+    closed_form.add_parser(sub)
     return parser
 
 

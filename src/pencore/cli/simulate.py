@@ -26,8 +26,10 @@ from pencore.cli.options import (
 from pencore.cli.summary import (
     Field,
     add_format_option,
+    add_start_option,
     check_plot_output,
     print_summary,
+    start_of,
     write_plot,
 )
 
@@ -120,13 +122,9 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
         help="initial angular velocity about the centre of mass, about +z, in "
         "rad/s; positive turns the nose towards +x (default: 0 rad/s)",
     )
-    sim.add_argument(
-        "--start",
-        type=number_type("start"),
-        nargs=3,
-        default=None,
-        metavar=("X", "Y", "Z"),
-        help="initial nose-tip position in m (default: tip at x = z = 0, "
+    add_start_option(
+        sim,
+        "initial nose-tip position in m (default: tip at x = z = 0, "
         "body just touching the surface y = 0 m)",
     )
     sim.add_argument(
@@ -314,7 +312,7 @@ def run(args: argparse.Namespace) -> int:
         args.obliquity,
         args.yaw,
         args.omega,
-        start=None if args.start is None else tuple(args.start),
+        start=start_of(args),
         stop_at_reversal=args.stop_at_reversal,
         numerics=numerics,
     )

@@ -43,6 +43,8 @@ __all__ = [
     "EXIT_NOTE",
     "add_search_outputs",
     "add_run_options",
+    "add_start_option",
+    "start_of",
     "add_speed_bracket",
     "check_bracket",
     "check_outputs",
@@ -312,6 +314,35 @@ def add_run_options(p: argparse.ArgumentParser, numerics_help: str) -> None:
         metavar="KEY=VALUE",
         help=numerics_help,
     )
+
+
+#: Help of ``--start`` where the subcommand does not give its own.
+START_HELP = (
+    "initial nose-tip position of every run in m, e.g. -1 1 0 (the paper starts its Vcr "
+    "runs there); y >= 0 (default: tip at x = z = 0, body just touching the surface y = 0 m)"
+)
+
+
+def add_start_option(p: argparse.ArgumentParser, help_text: str = START_HELP) -> None:
+    """``--start X Y Z`` (m): the initial nose-tip position of every run of the command,
+    each coordinate checked against ``LIMITS["start"]`` as it is read; ``y >= 0`` and a
+    start from which the body reaches the target within ``t_max`` are checked by the run
+    (:func:`pencore.simulate`), before it integrates. Default ``None``: the body just
+    touching the surface."""
+    p.add_argument(
+        "--start",
+        type=number_type("start"),
+        nargs=3,
+        default=None,
+        metavar=("X", "Y", "Z"),
+        help=help_text,
+    )
+
+
+def start_of(args: argparse.Namespace) -> tuple[float, float, float] | None:
+    """The ``--start`` of a command as the API's ``start=`` (m), or None when not given."""
+    start = getattr(args, "start", None)
+    return None if start is None else (float(start[0]), float(start[1]), float(start[2]))
 
 
 def add_speed_bracket(

@@ -32,8 +32,10 @@ from pencore.cli.summary import (
     add_format_option,
     add_run_options,
     add_speed_bracket,
+    add_start_option,
     check_bracket,
     check_outputs,
+    start_of,
     write_outputs,
 )
 
@@ -65,6 +67,7 @@ def _impacts(p: argparse.ArgumentParser, target_metavar: str, target_help: str) 
 
 
 def _outputs(p: argparse.ArgumentParser, plot: bool) -> None:
+    add_start_option(p)
     add_run_options(p, "numerical parameter override (repeatable)")
     p.add_argument(
         "--out",
@@ -184,7 +187,7 @@ def run_sweep(args: argparse.Namespace) -> int:
         ds = sweeps.ballistic_table(
             projectile, args.medium, args.thicknesses, args.obliquities, lo=args.lo,
             hi=args.hi, tol=args.tol, numerics=num, progress=Progress(n, args.quiet),
-            windows=window_values(args),
+            windows=window_values(args), start=start_of(args),
         )  # fmt: skip
         found = np.isfinite(ds["v_bl"].values)
         status = 0 if found.all() else NOT_FOUND
@@ -201,7 +204,8 @@ def run_sweep(args: argparse.Namespace) -> int:
         progress = Progress(v.size, args.quiet)
         if args.command == "depth-curve":
             ds = sweeps.depth_curve(projectile, target, v, args.obliquity, args.yaw,
-                                    numerics=num, progress=progress)  # fmt: skip
+                                    numerics=num, progress=progress,
+                                    start=start_of(args))  # fmt: skip
             d = ds["penetration_depth"].values
             g = ds["peak_deceleration_g"].values
             fields = [
@@ -212,7 +216,7 @@ def run_sweep(args: argparse.Namespace) -> int:
             ]  # fmt: skip
         else:
             ds = sweeps.residual_curve(projectile, target, v, args.obliquity, numerics=num,
-                                       progress=progress)  # fmt: skip
+                                       progress=progress, start=start_of(args))  # fmt: skip
             a = ds.attrs
             fields = [
                 Field("points", "points", int(v.size), "1", text=str(v.size)),

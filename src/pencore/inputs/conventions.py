@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from pencore.errors import InputError
 
-__all__ = ["YAW_CONVENTIONS", "SPIN_CENTRES", "normal_impact_angles"]
+__all__ = ["YAW_CONVENTIONS", "SPIN_CENTRES", "normal_impact_angles", "impact_angles"]
 
 #: Readings of "normal impact with yaw" (:func:`normal_impact_angles`).
 YAW_CONVENTIONS = ("axis_tilted", "velocity_tilted")
@@ -43,3 +43,27 @@ def normal_impact_angles(yaw: float, convention: str = "axis_tilted") -> tuple[f
     if convention == "axis_tilted":
         return yaw, -yaw
     return 0.0, yaw
+
+
+def impact_angles(obliquity: float, yaw: float, convention: str) -> tuple[float, float]:
+    """``(obliquity, yaw)`` arguments of :func:`pencore.simulate` for an impact given as an
+    obliquity and a yaw (deg) read by ``convention``.
+
+    ``"velocity_tilted"``
+        ``obliquity`` is the axis's angle from the target normal and ``yaw`` tilts the
+        velocity from the axis (simulate's own reading): returned as they are.
+    ``"axis_tilted"``
+        ``obliquity`` is the velocity's angle from the normal (the line of fire) and
+        ``yaw`` tilts the axis from the velocity (an angle of attack): the axis at
+        ``obliquity + yaw``, the velocity at ``obliquity``, so simulate's obliquity is
+        ``obliquity + yaw`` and its yaw ``-yaw`` (the two tied). At ``obliquity = 0``
+        this is :func:`normal_impact_angles`.
+    """
+    if convention not in YAW_CONVENTIONS:
+        raise InputError(
+            f"yaw convention must be one of {', '.join(YAW_CONVENTIONS)}, got {convention!r}"
+        )
+    obliquity, yaw = float(obliquity), float(yaw)
+    if convention == "axis_tilted":
+        return obliquity + yaw, -yaw
+    return obliquity, yaw

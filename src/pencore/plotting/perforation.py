@@ -22,16 +22,27 @@ __all__ = [
 
 @styled
 def plot_ballistic_limit(ds: xr.Dataset) -> Figure:
-    """v_bl against slab thickness, one line per obliquity, with the search brackets."""
+    """v_bl against slab thickness, one line per obliquity, with the search brackets.
+
+    With one thickness and several obliquities, v_bl against obliquity instead (one
+    line, the thickness in the legend): a single thickness on the abscissa would stack
+    every obliquity's point on one vertical line.
+    """
     fig = new_figure(6.4, 4.6)
     ax = fig.add_subplot()
     th = ds["thickness"].values
-    for k, o in enumerate(ds["obliquity"].values):
-        sub = ds.sel(obliquity=o)
-        _search_errorbars(
-            ax, th, sub, "v_bl", _c(k), _MARKERS[k % len(_MARKERS)], f"obliquity {o:g}°"
-        )
-    ax.set_xlabel("Slab thickness (m)")
+    obl = ds["obliquity"].values
+    if th.size == 1 and obl.size > 1:
+        sub = ds.isel(thickness=0)
+        _search_errorbars(ax, obl, sub, "v_bl", _c(0), _MARKERS[0], f"slab {th[0]:g} m")
+        ax.set_xlabel("Obliquity (deg)")
+    else:
+        for k, o in enumerate(obl):
+            sub = ds.sel(obliquity=o)
+            _search_errorbars(
+                ax, th, sub, "v_bl", _c(k), _MARKERS[k % len(_MARKERS)], f"obliquity {o:g}°"
+            )
+        ax.set_xlabel("Slab thickness (m)")
     ax.set_ylabel(r"Ballistic limit $v_{bl}$ (m/s)")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8, frameon=False)
@@ -67,9 +78,12 @@ def plot_residual_velocity(ds: xr.Dataset) -> Figure:
     ax.set_ylabel(r"Residual velocity $v_r$ (m/s)")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8, frameon=False)
+    thickness = float(ds.attrs.get("thickness_m", np.nan))
+    body = str(ds.attrs.get("medium", ""))
+    if np.isfinite(thickness):  # a target without its thickness is named alone
+        body += f" slab {thickness:g} m"
     ax.set_title(
-        f"{_pname(ds.attrs.get('projectile', ''))}, {ds.attrs.get('medium', '')} slab "
-        f"{ds.attrs.get('thickness_m', np.nan):g} m, obliquity "
+        f"{_pname(ds.attrs.get('projectile', ''))}, {body}, obliquity "
         f"{ds.attrs.get('obliquity_deg', 0.0):g}° (model prediction)",
         fontsize=9,
     )

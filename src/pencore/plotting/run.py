@@ -10,6 +10,8 @@ Dataset read back from a file (:func:`pencore.read_netcdf`) is plotted the same 
 
 from __future__ import annotations
 
+import json
+import math
 import os
 
 import numpy as np
@@ -19,7 +21,7 @@ from matplotlib.figure import Figure
 from pencore.errors import InputError
 from pencore.plotting.style import _c, _pname, new_figure, save_figure, styled
 
-__all__ = ["plot_run", "AGAINST"]
+__all__ = ["plot_run", "AGAINST", "layer_faces"]
 
 #: What the histories can be drawn against: time (ms) or the nose tip's depth (m).
 AGAINST = ("time", "depth")
@@ -49,7 +51,9 @@ def plot_run(
     Returns
     -------
     matplotlib.figure.Figure
-        Four panels (axes labelled with units): path, deviation (deg), speed (m/s),
+        Four panels (axes labelled with units): path (with the target's layer
+        interfaces and rear face dashed, air gaps shaded, each layer named, when the
+        target has more than one layer or a rear face), deviation (deg), speed (m/s),
         deceleration (g on the left axis, m/s^2 on the right).
 
     Raises
@@ -82,6 +86,7 @@ def plot_run(
     ax = axs[0, 0]
     ax.plot(tx, ty, color=_c(0), label="nose tip")
     ax.axhline(0.0, color="0.5", lw=0.8)
+    _draw_layers(ax, layer_faces(ds))
     ax.set_xlabel("Nose tip x (m)")
     ax.set_ylabel("Nose tip y (m)")
     ax.set_aspect("equal", adjustable="datalim")
@@ -121,3 +126,36 @@ def plot_run(
     if path is not None:
         save_figure(fig, path)
     return fig
+
+
+def layer_faces(ds: xr.Dataset) -> list[tuple[float, float, str]]:
+    """The target's layers as the run recorded them (``inputs_json``): ``(top, bottom,
+    name)`` per layer from the surface down, heights ``y`` in m (the target is
+    ``y <= 0``; the last bottom ``-inf`` for a half-space), ``name`` the medium's or
+    ``"air gap"``; empty when the Dataset does not record its target."""
+    try:
+        layers = json.loads(ds.attrs["inputs_json"])["target"]["layers"]
+    except (KeyError, TypeError, ValueError):
+        return []
+    out, top = [], 0.0
+    for lay in layers:
+        bottom = top - float(lay["thickness"])
+        name = "air gap" if lay.get("gap") else str(lay.get("medium", {}).get("name", ""))
+        out.append((top, bottom, name))
+        top = bottom
+    return out
+
+
+def _draw_layers(ax, faces: list[tuple[float, float, str]]) -> None:  # noqa: ANN001
+    """Each interface between layers and a finite target's rear face as a dashed line,
+    an air gap shaded, and each layer's medium named at its top, when the target has more
+    than one layer or a rear face (a half-space of one medium has only its surface)."""
+    if len(faces) < 2 and all(math.isinf(b) for _, b, _ in faces):
+        return
+    for top, bottom, name in faces:
+        if name == "air gap":
+            ax.axhspan(bottom, top, color="0.9", lw=0, label="_air gap")
+        if math.isfinite(bottom):
+            ax.axhline(bottom, color="0.45", lw=0.8, ls="--", label="_layer face")
+        ax.text(0.01, top, f" {name}", transform=ax.get_yaxis_transform(), va="top",
+                fontsize=7, color="0.3")  # fmt: skip

@@ -9,10 +9,20 @@ key                units      meaning (as in :func:`pencore.simulate`)
 =================  =========  ==========================================================
 ``velocity_m_s``   m/s        impact speed
 ``obliquity_deg``  degree     angle of the projectile axis from the target normal
-``yaw_deg``        degree     velocity angle minus axis angle
+``yaw_deg``        degree     velocity angle minus axis angle (a velocity yaw)
 ``omega_rad_s``    rad/s      initial angular velocity about the in-plane normal
 ``azimuth_deg``    degree     rotation of the whole impact about the target normal
 =================  =========  ==========================================================
+
+The table's ``obliquity_deg`` and ``yaw_deg`` are the case's default reading,
+``yaw_convention: velocity_tilted``. With ``yaw_convention: axis_tilted`` the case draws an
+angle of attack instead: ``obliquity_deg`` is the velocity's angle from the normal and
+``yaw_deg`` tilts the axis from the velocity, so each run has simulate's obliquity
+``obliquity_deg + yaw_deg`` and yaw ``-yaw_deg``, tied
+(:func:`pencore.inputs.conventions.impact_angles`). Every output says which it drew
+(attributes ``yaw_convention`` and ``yaw_reading``), and an ``axis_tilted`` case records
+the draws as ``velocity_obliquity`` and ``angle_of_attack`` beside simulate's
+``obliquity`` and ``yaw``.
 
 A distribution is ``{dist: fixed, value}``, ``{dist: uniform, min, max}`` or
 ``{dist: normal, mean, sd}`` with optional ``min`` / ``max`` (a truncated normal, drawn by
@@ -27,8 +37,9 @@ tip's horizontal travel in the impact plane (``downrange``) and across it
 (``cross_range``; zero by the model's symmetry, a check), and the final attitude
 (deviation of the velocity from the normal, angle of the axis from the normal).
 :func:`gather` adds probabilities with Wilson 95 % intervals, means with Student-t 95 %
-intervals, quantiles with distribution-free (binomial order-statistic) 95 % intervals,
-and the running estimates against N for the convergence plot.
+intervals, quantiles with distribution-free (binomial order-statistic) 95 % intervals
+(both intervals scipy's: :func:`wilson_interval`, :func:`quantile_interval`), and the
+running estimates against N for the convergence plot.
 """
 
 from __future__ import annotations
@@ -43,12 +54,14 @@ import xarray as xr
 from scipy import stats
 
 from pencore.errors import InputError
+from pencore.inputs.conventions import impact_angles
 from pencore.run.impact import prepare, simulate
 from pencore.studies.common import t_half_width
-from pencore.workflowconfig.ensemble_cases import VARIABLES, check_case
+from pencore.workflowconfig.ensemble_cases import VARIABLES, YAW_READINGS, check_case
 
 __all__ = [
     "sample_conditions",
+    "run_angles",
     "chunk_indices",
     "run_chunk",
     "gather",
@@ -90,6 +103,19 @@ def sample_conditions(case: Mapping[str, Any]) -> dict[str, np.ndarray]:
     return {k: _transform(c[k], u[:, j]) for j, k in enumerate(VARIABLES)}
 
 
+def run_angles(cond: Mapping[str, np.ndarray], convention: str) -> tuple[np.ndarray, np.ndarray]:
+    """simulate's obliquity and yaw (deg) of drawn conditions (:func:`sample_conditions`)
+    read by the case's ``yaw_convention``: the draws themselves for
+    ``velocity_tilted``; ``obliquity_deg + yaw_deg`` and ``-yaw_deg`` (the axis tilted
+    from the velocity by the drawn angle of attack) for ``axis_tilted``."""
+    obl = np.asarray(cond["obliquity_deg"], float)
+    yaw = np.asarray(cond["yaw_deg"], float)
+    if convention == "axis_tilted":
+        return obl + yaw, -yaw
+    impact_angles(0.0, 0.0, convention)  # refuses an unknown convention
+    return obl, yaw
+
+
 def chunk_indices(n_samples: int, n_chunks: int, chunk: int) -> np.ndarray:
     """Sample indices of chunk ``chunk`` (0-based) of ``n_chunks`` nearly equal chunks."""
     if not 0 <= chunk < n_chunks:
@@ -97,8 +123,9 @@ def chunk_indices(n_samples: int, n_chunks: int, chunk: int) -> np.ndarray:
     return np.array_split(np.arange(n_samples), n_chunks)[chunk]
 
 
-def _one(pr: Any, cond: Mapping[str, float]) -> dict[str, Any]:
+def _one(pr: Any, cond: Mapping[str, float], convention: str) -> dict[str, Any]:
     kw = {VARIABLES[k][0]: float(v) for k, v in cond.items()}
+    kw["obliquity"], kw["yaw"] = impact_angles(kw["obliquity"], kw["yaw"], convention)
     ds = simulate(pr.projectile, pr.target, prepared=pr, **kw)  # checked once, at prepare
     az = math.radians(kw["azimuth"])
     dx = float(ds["tip_x"][-1] - ds["tip_x"][0])
@@ -129,11 +156,22 @@ def run_chunk(case: Mapping[str, Any], chunk: int, numerics: Any = None) -> xr.D
     c = check_case(case)
     idx = chunk_indices(c["n_samples"], c["n_chunks"], chunk)
     cond = sample_conditions(c)
+    convention = c["yaw_convention"]
     pr = prepare(c["projectile"], c["target"], numerics)
-    runs = [_one(pr, {k: v[i] for k, v in cond.items()}) for i in idx]
+    runs = [_one(pr, {k: v[i] for k, v in cond.items()}, convention) for i in idx]
     data: dict[str, Any] = {}
+    given = dict(cond)
+    if convention == "axis_tilted":  # the draws, and simulate's angles beside them
+        obl, yaw = run_angles(cond, convention)
+        data["velocity_obliquity"] = ("sample", cond["obliquity_deg"][idx], {
+            "units": "degree", "long_name": "angle of the velocity from the target normal "
+            "(drawn obliquity_deg)"})  # fmt: skip
+        data["angle_of_attack"] = ("sample", cond["yaw_deg"][idx], {
+            "units": "degree", "long_name": "angle of the axis from the velocity, the axis "
+            "tilted (drawn yaw_deg)"})  # fmt: skip
+        given.update(obliquity_deg=obl, yaw_deg=yaw)
     for k, (arg, units, long_name) in VARIABLES.items():
-        data[arg] = ("sample", cond[k][idx], {"units": units, "long_name": long_name})
+        data[arg] = ("sample", given[k][idx], {"units": units, "long_name": long_name})
     units = dict((r[0], (r[1], r[2])) for r in RESULTS)
     units["cross_range"] = ("m", "horizontal travel of the tip across the impact plane")
     for k in runs[0] if runs else ():
@@ -154,35 +192,75 @@ def run_chunk(case: Mapping[str, Any], chunk: int, numerics: Any = None) -> xr.D
             )
         },
     )
-    ds.attrs.update(case_json=json.dumps(c, sort_keys=True), chunk=chunk, n_chunks=c["n_chunks"])
+    ds.attrs.update(
+        case_json=json.dumps(c, sort_keys=True),
+        chunk=chunk,
+        n_chunks=c["n_chunks"],
+        yaw_convention=convention,
+        yaw_reading=YAW_READINGS[convention],
+    )
     return ds
 
 
-def wilson_interval(k: int, n: int, z: float = 1.959963984540054) -> tuple[float, float]:
-    """Wilson score interval (95 % by default) of a probability from k successes in n."""
+def wilson_interval(k: int, n: int, level: float = 0.95) -> tuple[float, float]:
+    """Wilson score interval of a probability from ``k`` successes in ``n`` trials.
+
+    scipy's ``scipy.stats.binomtest(k, n).proportion_ci(level, method="wilson")``
+    (Wilson, JASA 22 (1927) 209-212; Newcombe, Stat. Med. 17 (1998) 857-872), with the
+    ends exactly 0 at ``k = 0`` and 1 at ``k = n``.
+
+    Parameters
+    ----------
+    k, n : int
+        Successes and trials, ``0 <= k <= n``, ``n > 0``.
+    level : float, default 0.95
+        Confidence level, in (0, 1).
+
+    Returns
+    -------
+    tuple of float
+        Lower and upper end (probabilities, dimensionless).
+
+    Raises
+    ------
+    InputError
+        ``k`` or ``n`` outside those ranges.
+    """
     if n <= 0 or not 0 <= k <= n:
         raise InputError(f"wilson_interval needs 0 <= k <= n and n > 0, got k={k}, n={n}")
-    p = k / n
-    den = 1.0 + z * z / n
-    centre = (p + z * z / (2 * n)) / den
-    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / den
-    # exact ends at k = 0 and k = n (the formula gives them up to round-off)
-    return (0.0 if k == 0 else centre - half), (1.0 if k == n else centre + half)
+    ci = stats.binomtest(int(k), int(n)).proportion_ci(level, method="wilson")
+    return float(ci.low), float(ci.high)
 
 
 def quantile_interval(x: np.ndarray, q: float, level: float = 0.95) -> tuple[float, float, float]:
-    """Sample quantile and its distribution-free interval from order statistics: the
-    number of samples below the true quantile is Binomial(n, q)."""
-    xs = np.sort(np.asarray(x, float))
-    n = xs.size
+    """Sample quantile and its distribution-free interval from order statistics.
+
+    The number of samples below the true ``q`` quantile is Binomial(n, q), which gives an
+    interval between two order statistics with coverage at least ``level`` (Conover,
+    *Practical Nonparametric Statistics*, 3rd ed., 1999, Sec. 3.2): scipy's
+    ``scipy.stats.quantile_test(x, p=q).confidence_interval(level)``.
+
+    Parameters
+    ----------
+    x : numpy.ndarray
+        The samples (any units).
+    q : float
+        Probability of the quantile, in (0, 1).
+    level : float, default 0.95
+        Confidence level, in (0, 1).
+
+    Returns
+    -------
+    tuple of float
+        The sample quantile (``numpy.quantile``, linear), the lower and the upper end of
+        the interval (units of ``x``); an end that no order statistic of so few samples
+        can give is ``-inf`` or ``+inf`` (scipy's NaN).
+    """
+    xs = np.asarray(x, float)
     est = float(np.quantile(xs, q))
-    lo = int(stats.binom.ppf((1 - level) / 2, n, q))
-    hi = int(stats.binom.ppf(1 - (1 - level) / 2, n, q)) + 1
-    return (
-        est,
-        float(xs[max(lo - 1, 0)]) if lo >= 1 else -math.inf,
-        (float(xs[hi - 1]) if hi <= n else math.inf),
-    )
+    ci = stats.quantile_test(xs, q=0.0, p=q).confidence_interval(level)
+    lo, hi = float(ci.low), float(ci.high)
+    return est, (-math.inf if math.isnan(lo) else lo), (math.inf if math.isnan(hi) else hi)
 
 
 def gather(parts: Sequence[xr.Dataset]) -> xr.Dataset:

@@ -51,6 +51,7 @@ def depth_curve(
     *,
     numerics: Numerics | Mapping[str, Any] | None = None,
     progress: Progress = None,
+    start: Sequence[float] | None = None,
 ) -> xr.Dataset:
     """Depth and peak loads against impact speed.
 
@@ -65,6 +66,9 @@ def depth_curve(
     numerics : Numerics or mapping, optional
     progress : callable, optional
         Called with a text after each run.
+    start : sequence of 3 float, optional
+        Initial nose-tip position of every run (m), as for :func:`pencore.simulate`;
+        recorded as the attribute ``start_m``. Default: the body touching the surface.
 
     Returns
     -------
@@ -93,7 +97,8 @@ def depth_curve(
     outcome = np.empty(v.size, dtype=STRING_DTYPE)
     attrs: dict[str, dict] = {}
     for k, vi in enumerate(v):
-        ds = simulate(pr.projectile, pr.target, float(vi), obliquity, yaw, prepared=pr)
+        ds = simulate(pr.projectile, pr.target, float(vi), obliquity, yaw, prepared=pr,
+                      start=start)  # fmt: skip
         for n in names:
             cols[n][k] = float(ds[n])
             attrs[n] = dict(ds[n].attrs)
@@ -116,9 +121,15 @@ def depth_curve(
             "target": pr.target.name,
             "obliquity_deg": float(obliquity),
             "yaw_deg": float(yaw),
+            **_start_attrs(start),
             "Conventions": "CF-1.8",
         },
     )
+
+
+def _start_attrs(start: Sequence[float] | None) -> dict[str, list[float]]:
+    """``{"start_m": [x, y, z]}`` (m) for a given start, else nothing."""
+    return {} if start is None else {"start_m": [float(c) for c in start]}
 
 
 def residual_curve(
@@ -130,8 +141,12 @@ def residual_curve(
     *,
     numerics: Numerics | Mapping[str, Any] | None = None,
     progress: Progress = None,
+    start: Sequence[float] | None = None,
 ) -> xr.Dataset:
     """Residual speed against impact speed on a finite target, with the Recht-Ipson fit.
+
+    ``start``: the initial nose-tip position of every run (m), as for
+    :func:`depth_curve`.
 
     Returns
     -------
@@ -140,7 +155,8 @@ def residual_curve(
         perforate), ``recht_ipson`` (the fitted curve, m/s; NaN without a fit),
         ``exit_pitch`` (deg), ``outcome``; attributes ``recht_ipson_a``, ``_p`` and
         ``v_bl_m_s`` (fitted, all three free; NaN with fewer than three perforating runs)
-        as :func:`pencore.plotting.perforation.plot_residual_velocity` draws them.
+        as :func:`pencore.plotting.perforation.plot_residual_velocity` draws them, and
+        ``thickness_m``, the target's total thickness (m, gaps included).
     """
     v = axis_values(velocities, "velocities")
     pr = prepare(projectile, target, resolve_numerics(numerics))
@@ -149,11 +165,12 @@ def residual_curve(
             f"target {pr.target.name!r} has no rear face (its last layer is a half-space): "
             "a residual velocity needs a finite target (a thickness on every layer)"
         )
-    vr, pitch, outcome = residual_runs(pr, v, obliquity, yaw, progress)
+    vr, pitch, outcome = residual_runs(pr, v, obliquity, yaw, progress, start=start)
     fit = {"a": math.nan, "p": math.nan, "v_bl": math.nan, "rms": math.nan}
+    curve = np.full(v.size, math.nan)  # no fit, no curve (recht_ipson refuses NaN)
     if (vr > 0).sum() >= 3:
         fit = fit_recht_ipson(v, vr)
-    curve = recht_ipson(v, fit["v_bl"], fit["a"], fit["p"])
+        curve = recht_ipson(v, fit["v_bl"], fit["a"], fit["p"])
     return xr.Dataset(
         residual_variables(vr, curve, pitch, outcome, "target"),
         coords=_velocity_coord(v),
@@ -161,8 +178,10 @@ def residual_curve(
             "title": "pencore residual velocity against impact velocity",
             "projectile": pr.projectile.name,
             "medium": pr.target.name,
+            "thickness_m": float(pr.target.thickness),  # m, gaps included
             "obliquity_deg": float(obliquity),
             "yaw_deg": float(yaw),
+            **_start_attrs(start),
             "v_bl_m_s": float(fit["v_bl"]),
             "recht_ipson_a": float(fit["a"]),
             "recht_ipson_p": float(fit["p"]),
@@ -185,15 +204,17 @@ def ballistic_table(
     numerics: Numerics | Mapping[str, Any] | None = None,
     progress: Progress = None,
     windows: tuple[float | None, float | None, float | None] | None = None,
+    start: Sequence[float] | None = None,
 ) -> xr.Dataset:
     """Ballistic limit (m/s) of a slab of ``medium`` on ``(thickness m, obliquity deg)``,
     as :func:`pencore.studies.perforation.slabs.ballistic_limit_map` with progress;
     ``windows`` (``crater_depth``, ``free_surface_depth`` in calibers,
     ``plastic_zone_ratio``; None keeps the medium's own) are set on every slab and
-    recorded in the attributes."""
+    recorded in the attributes; ``start`` (m) is every run's initial nose-tip position,
+    as for :func:`depth_curve`."""
     ds = ballistic_limit_grid(projectile, medium, thicknesses, obliquities, lo=lo, hi=hi,
                               tol=tol, scan=scan, numerics=numerics, progress=progress,
-                              windows=windows)  # fmt: skip
+                              windows=windows, start=start)  # fmt: skip
     keys = ("crater_depth_calibers", "free_surface_depth_calibers", "plastic_zone_ratio")
     given = dict(zip(keys, windows or (None, None, None), strict=True))
     ds.attrs = {
@@ -204,6 +225,7 @@ def ballistic_table(
         "search_lo_m_s": float(lo),
         "search_hi_m_s": float(hi),
         "search_tol_m_s": float(tol),
+        **_start_attrs(start),
         "Conventions": "CF-1.8",
     }
     return ds

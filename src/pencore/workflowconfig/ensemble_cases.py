@@ -13,10 +13,11 @@ from collections.abc import Mapping
 from typing import Any
 
 from pencore.errors import InputError
+from pencore.inputs.conventions import YAW_CONVENTIONS
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import LIMITS, as_float, check_keys, integer
 
-__all__ = ["VARIABLES", "CASE_KEYS", "check_case"]
+__all__ = ["VARIABLES", "CASE_KEYS", "YAW_READINGS", "check_case"]
 
 #: Impact variables: config key -> (simulate argument, units, long name).
 VARIABLES: dict[str, tuple[str, str, str]] = {
@@ -26,7 +27,30 @@ VARIABLES: dict[str, tuple[str, str, str]] = {
     "omega_rad_s": ("omega", "rad s-1", "initial angular velocity"),
     "azimuth_deg": ("azimuth", "degree", "azimuth of the impact plane about the normal"),
 }
-CASE_KEYS = ("name", "projectile", "target", "n_samples", "n_chunks", "seed", *VARIABLES)
+CASE_KEYS = (
+    "name",
+    "projectile",
+    "target",
+    "n_samples",
+    "n_chunks",
+    "seed",
+    "yaw_convention",
+    *VARIABLES,
+)
+
+#: What a case's ``obliquity_deg`` and ``yaw_deg`` draw, by its ``yaw_convention``
+#: (:func:`pencore.inputs.conventions.impact_angles`); the default is ``velocity_tilted``.
+YAW_READINGS: dict[str, str] = {
+    "velocity_tilted": (
+        "velocity yaw: obliquity_deg is the axis's angle from the normal and yaw_deg tilts "
+        "the velocity from the axis (simulate's obliquity and yaw as drawn)"
+    ),
+    "axis_tilted": (
+        "angle of attack: obliquity_deg is the velocity's angle from the normal and "
+        "yaw_deg tilts the axis from the velocity (simulate's obliquity = obliquity_deg + "
+        "yaw_deg, yaw = -yaw_deg, drawn tied)"
+    ),
+}
 
 
 def _num(value: Any, where: str) -> float:
@@ -76,12 +100,18 @@ def _dist(spec: Any, where: str) -> dict[str, float | str]:
 def check_case(case: Mapping[str, Any]) -> dict[str, Any]:
     """One ensemble case, checked, with every variable's distribution spelt out.
 
+    ``yaw_convention`` (default ``"velocity_tilted"``) says what ``obliquity_deg`` and
+    ``yaw_deg`` are (:data:`YAW_READINGS`): the axis's angle and a velocity yaw, or the
+    velocity's angle and an angle of attack (the axis tilted). Either way
+    ``|obliquity| + |yaw|`` stays below 90 deg, which keeps simulate's obliquity and
+    ``obliquity + yaw`` inside (-90, 90) deg.
+
     Raises
     ------
     InputError
         One line naming the key: unknown keys (with a hint), N < 1, chunks outside
-        1..N, a bad distribution, or ranges the solver refuses (speed <= 0, obliquity
-        outside [0, 90) deg).
+        1..N, a bad distribution, an unknown ``yaw_convention``, or ranges the solver
+        refuses (speed <= 0, obliquity outside [0, 90) deg).
     """
     if not isinstance(case, Mapping):
         raise InputError(f"ensemble case must be a mapping, got {case!r}")
@@ -103,6 +133,7 @@ def check_case(case: Mapping[str, Any]) -> dict[str, Any]:
         "n_samples": n,
         "n_chunks": chunks,
         "seed": _int(case.get("seed", 0), f"{where}.seed"),
+        "yaw_convention": _convention(case.get("yaw_convention", "velocity_tilted"), where),
     }
     defaults = {"velocity_m_s": None, "obliquity_deg": 0.0, "yaw_deg": 0.0,
                 "omega_rad_s": 0.0, "azimuth_deg": 0.0}  # fmt: skip
@@ -125,6 +156,15 @@ def check_case(case: Mapping[str, Any]) -> dict[str, Any]:
             "must stay below 90 deg for every draw (narrow the distributions)"
         )
     return out
+
+
+def _convention(value: Any, where: str) -> str:
+    if not isinstance(value, str) or value not in YAW_CONVENTIONS:
+        raise InputError(
+            f"{where}.yaw_convention must be one of {', '.join(YAW_CONVENTIONS)}, got "
+            f"{brief(value)}"
+        )
+    return value
 
 
 #: Standard deviations from the mean that a normal without min/max is taken to reach:

@@ -106,6 +106,7 @@ def ballistic_limit_grid(
     numerics: Numerics | Mapping[str, Any] | None,
     windows: tuple[float | None, float | None, float | None] | None = None,
     progress: Callable[[str], None] | None = None,
+    start: Sequence[float] | None = None,
 ) -> xr.Dataset:
     """The ballistic-limit searches of :func:`ballistic_limit_map` on ``(thickness m,
     obliquity deg)``, without the Dataset's attributes (each caller records its own).
@@ -129,6 +130,9 @@ def ballistic_limit_grid(
         medium's own, 0 is off); None: the medium's own.
     progress : callable, optional
         Called with a text after each cell.
+    start : sequence of 3 float, optional
+        Initial nose-tip position of every run (m), as for :func:`pencore.simulate`;
+        default: the body touching the surface.
 
     Returns
     -------
@@ -139,13 +143,14 @@ def ballistic_limit_grid(
     obl = axis_values(obliquities, "obliquities")
     num = resolve_numerics(numerics)
     res = np.empty((th.size, obl.size), dtype=object)
+    at = {} if start is None else {"start": tuple(start)}
     for i, h in enumerate(th):
         t = slab_target(medium, h)
         if windows is not None:
             t = t.with_windows(*windows)
         for j, o in enumerate(obl):
             r = ballistic_limit(projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan,
-                                numerics=num)  # fmt: skip
+                                numerics=num, **at)  # fmt: skip
             res[i, j] = r
             if progress is not None:
                 shown = f"{r.value:.5g} m/s" if r.converged else f"not found ({r.status})"
@@ -225,6 +230,8 @@ def residual_runs(
     obliquity: float = 0.0,
     yaw: float = 0.0,
     progress: Callable[[str], None] | None = None,
+    *,
+    start: Sequence[float] | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """One impact per speed on a prepared finite target.
 
@@ -238,6 +245,9 @@ def residual_runs(
         As for :func:`pencore.simulate` (deg).
     progress : callable, optional
         Called with a text after each run.
+    start : sequence of 3 float, optional
+        Initial nose-tip position of every run (m); default: the body touching the
+        surface.
 
     Returns
     -------
@@ -250,7 +260,7 @@ def residual_runs(
     outcome = np.empty(velocities.size, dtype=STRING_DTYPE)
     for k, vi in enumerate(velocities):
         ds = simulate(pr.projectile, pr.target, float(vi), obliquity, yaw, prepared=pr,
-                      loads=False)  # fmt: skip
+                      loads=False, start=start)  # fmt: skip
         outcome[k] = ds.attrs["outcome"]
         if outcome[k] == "perforated":
             vr[k] = ds.attrs["residual_velocity"]
