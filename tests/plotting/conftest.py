@@ -35,6 +35,7 @@ ARCHIVED: dict[str, tuple[str, ...]] = {
     "fig5": ("validation/fig5.nc",),
     "verification": ("validation/verification.nc",),
     "measurements": ("validation/measurements.nc",),
+    "concrete_record": ("validation/concrete_record.nc",),
     "fig7": ("fig7/trajectories.nc",),
     "fig8": ("fig8/vcr.nc",),
     "fig9": ("fig9/turning_angle.nc",),
@@ -52,13 +53,14 @@ ARCHIVED: dict[str, tuple[str, ...]] = {
 }
 
 #: The units an axis label may end with, in parentheses ("(m/s)", "(deg, signed)").
-UNITS = {"m", "m/s", "s", "deg", "rad/s", "%", "kg"}
+UNITS = {"m", "mm", "m/s", "s", "deg", "rad/s", "%", "kg"}
 
 #: Quantities without a unit, recognised by name: ratios, counts, probabilities, slopes
 #: and test numbers.
 UNITLESS = (
     r"L_c/L",  # nose-to-centre-of-mass length over the length
     r"^slope dy/dx",
+    r"^median relative error \(predicted / measured - 1\)$",
     r"^Samples$",
     r"^Number of samples",
     r"^Probability of",
