@@ -26,7 +26,7 @@ import numpy as np
 
 from pencore.errors import GeometryError, InputError
 from pencore.inputs.gate import brief
-from pencore.inputs.limits import LIMITS, count, number
+from pencore.inputs.limits import LIMITS, count, number, plausible
 
 __all__ = [
     "OgiveNose",
@@ -586,6 +586,9 @@ class Projectile:
                     f"osmium, {rho_max:g} kg/m^3), got {brief(self.mass)}"
                 )
             m = self.mass
+            # the solid outline at its segments' densities: a tonne or a pound slip
+            where = f"{what} (mass {m:g} kg, solid outline {mo.mass:.4g} kg)"
+            plausible(m / mo.mass, "mass_ratio", where)
         else:
             m = mo.mass
         f = m / mo.mass

@@ -38,6 +38,7 @@ with one :class:`~pencore.PlausibilityWarning` naming the value and the slip
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import difflib
 import math
 import numbers
@@ -514,7 +515,9 @@ def _caller_level() -> int:
     while frame is not None and (
         frame.f_code.co_filename.startswith(_PACKAGE)
         or (frame.f_code.co_filename == "<string>" and frame.f_code.co_name == "__init__")
-    ):  # a dataclass's generated __init__ is pencore's code too
+        or frame.f_code.co_filename == dataclasses.__file__
+    ):  # a dataclass's generated __init__ is pencore's code too, and so is the
+        # dataclasses.replace that pencore calls (Projectile.with_mass, numerics overrides)
         caller = frame.f_back
         if caller is not None and not isinstance(caller.f_globals.get("__name__"), str):
             # code run without a module name (a Snakefile): Python drops a warning
