@@ -14,6 +14,7 @@ from pencore.cli.options import (
     add_window_options,
     check_output,
     cli_inputs,
+    each_of,
     exit_at_once_on_interrupt,
     number_type,
     numerics_option,
@@ -121,7 +122,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     )
     sim.add_argument(
         "--start",
-        type=number_type("start"),
+        action=each_of(*[number_type("start")] * 3),
         nargs=3,
         default=None,
         metavar=("X", "Y", "Z"),

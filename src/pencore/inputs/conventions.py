@@ -8,7 +8,7 @@ checking a configuration names a bad choice without loading the solver's kernels
 
 from __future__ import annotations
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 
 __all__ = ["YAW_CONVENTIONS", "SPIN_CENTRES", "normal_impact_angles"]
 
@@ -43,3 +43,6 @@ def normal_impact_angles(yaw: float, convention: str = "axis_tilted") -> tuple[f
     if convention == "axis_tilted":
         return yaw, -yaw
     return 0.0, yaw
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -24,7 +24,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from pencore.errors import GeometryError, InputError
+from pencore.errors import GeometryError, InputError, hint_keywords
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import LIMITS, count, number, plausible
 
@@ -784,3 +784,6 @@ def nose_factor(nose: Nose) -> float:
     if isinstance(nose, ConeNose):
         return math.sin(nose.half_angle) ** 2
     return 1.0
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

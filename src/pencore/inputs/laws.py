@@ -82,7 +82,7 @@ from typing import Any
 
 import numpy as np
 
-from pencore.errors import InputError, PlausibilityWarning, TargetError
+from pencore.errors import InputError, PlausibilityWarning, TargetError, hint_keywords
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import (
     LIMITS,
@@ -764,3 +764,6 @@ def medium_from_law(d: Mapping[str, Any], what: str = "medium") -> Medium:
     if windows:
         medium = replace(medium, **windows)
     return medium
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

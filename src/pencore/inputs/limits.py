@@ -51,7 +51,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
-from pencore.errors import InputError, PlausibilityWarning
+from pencore.errors import InputError, PlausibilityWarning, hint_keywords
 from pencore.inputs.gate import DECIMAL_WORDS, brief, brief_path, decimal, read_yaml
 
 __all__ = [
@@ -604,3 +604,6 @@ def plausible_markdown() -> str:
                           (p.below, p.above) if x)  # fmt: skip
         rows.append(f"| `{key}` | {valid} | {p.describe()} | {slips} |")
     return "\n".join(rows)
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -15,7 +15,7 @@ from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, fields, replace
 from typing import Any
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import check_keys, integer, number
 
@@ -286,3 +286,6 @@ def _apply(base: Numerics, mapping: Mapping[str, Any]) -> Numerics:
     check_keys(mapping, [f.name for f in fields(Numerics)], "numerics")
     given = {k: v for k, v in mapping.items() if v is not None}
     return replace(base, **given) if given else base
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -16,7 +16,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.plotting.style import _c, _pname, new_figure, save_figure, styled
 
 __all__ = ["plot_run", "AGAINST"]
@@ -121,3 +121,6 @@ def plot_run(
     if path is not None:
         save_figure(fig, path)
     return fig
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.inputs.conventions import SPIN_CENTRES
 from pencore.inputs.gate import brief
 from pencore.inputs.geometry import Projectile
@@ -144,3 +144,6 @@ def _check_reaches_target(y0: np.ndarray, reach: float, num: Any) -> None:
             f"downward speed of {vy:.4g} m/s the body cannot reach the target within "
             f"t_max = {num.t_max:g} s; lower the start or raise numerics t_max"
         )
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

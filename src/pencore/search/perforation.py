@@ -31,7 +31,7 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import as_float, plausible
 from pencore.inputs.numerics import keywords_checked
@@ -342,3 +342,6 @@ def fit_recht_ipson(v: np.ndarray, v_r: np.ndarray, v_bl: float | None = None) -
         "v_bl": float(vb),
         "rms": float(math.sqrt(np.mean(sol.fun**2))),
     }
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint
