@@ -586,9 +586,6 @@ class Projectile:
                     f"osmium, {rho_max:g} kg/m^3), got {brief(self.mass)}"
                 )
             m = self.mass
-            # the solid outline at its segments' densities: a tonne or a pound slip
-            where = f"{what} (mass {m:g} kg, solid outline {mo.mass:.4g} kg)"
-            plausible(m / mo.mass, "mass_ratio", where)
         else:
             m = mo.mass
         f = m / mo.mass
@@ -631,6 +628,9 @@ class Projectile:
             i_ax = f * mo.i_axial
             i_tr = f * mo.i_transverse + m * (lc - mo.lc) ** 2
         mp = MassProperties(float(m), float(lc), float(length), float(i_ax), float(i_tr))
+        if self.mass is not None:  # accepted: against the solid outline (a tonne or a pound)
+            where = f"{what} (mass {m:g} kg, solid outline {mo.mass:.4g} kg)"
+            plausible(m / mo.mass, "mass_ratio", where)
         object.__setattr__(self, "_mass_properties", mp)  # a cache, not a field
         return mp
 

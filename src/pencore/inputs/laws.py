@@ -82,7 +82,13 @@ from typing import Any
 
 import numpy as np
 
-from pencore.errors import InputError, PlausibilityWarning, TargetError, hint_keywords
+from pencore.errors import (
+    InputError,
+    PlausibilityWarning,
+    TargetError,
+    hint_keywords,
+    keyword_hints,
+)
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import (
     LIMITS,
@@ -200,6 +206,7 @@ def forrestal_s(fc: float) -> float:
     return 82.6 * (fc / 1e6) ** -0.544
 
 
+@keyword_hints  # before LAWS holds it
 def concrete_law(
     fc: float,
     density: float,
@@ -515,8 +522,12 @@ def compressible_inertia(
             f"{what}: the compressible solution needs nu < 0.5, got {nu:g} (an incompressible "
             "solid: inertia='incompressible', B = 3/2)"
         )
-    if not e / (3.0 * (1.0 - nu) * y) > 1.0:
-        raise TargetError(f"{what}: E / (3 (1 - nu) Y) must be > 1 for a plastic zone to form")
+    k = e / (3.0 * (1.0 - nu) * y)
+    if not k > 1.0:
+        raise TargetError(
+            f"{what}: E / (3 (1 - nu) Y) must be > 1 for a plastic zone to form, got "
+            f"{k:.4g} (E = {e:g} Pa, nu = {nu:g}, Y = {y:g} Pa)"
+        )
     v_fit = math.sqrt(B_FIT_MIN_LOAD * y / rho)
     if v_max < v_fit:
         slip = f" (in km/s? {v_max:g} km/s is {v_max * 1e3:g} m/s)" if v_max * 1e3 >= v_fit else ""
@@ -552,6 +563,7 @@ def compressible_inertia(
     )
 
 
+@keyword_hints  # before LAWS holds it
 def metal_law(
     youngs_modulus: float,
     poisson_ratio: float,
@@ -606,29 +618,31 @@ def metal_law(
     A = 4.342, B = 1.061
     """
     what = "metal law"
-    ce = cavity_expansion(youngs_modulus, poisson_ratio, yield_strength, hardening_exponent)
-    v_max = _value(max_speed, "max_speed", what, "max_speed")  # whatever the inertia
-    if inertia == "compressible":
-        b = compressible_inertia(youngs_modulus, poisson_ratio, yield_strength, density, v_max).b
-        b_from = f"B = {b:.4g} (compressible, fitted up to {v_max:g} m/s)"
-    elif inertia == "incompressible":
-        b = ce.b
-        b_from = "B = 1.5 (incompressible)"
-    else:
-        raise TargetError(
-            f"{what}: inertia must be 'compressible' or 'incompressible', got {brief(inertia)}"
-        )
+    # every input first, then the solutions: a refusal comes before any warning
     e = _value(youngs_modulus, "youngs_modulus", what, "E")
     nu = _value(poisson_ratio, "poisson_ratio", what, "nu")
     y = _value(yield_strength, "yield_strength", what, "Y")
     n = _value(hardening_exponent, "hardening_exponent", what, "n")
     rho = _value(density, "medium_density", what, "density")
+    v_max = _value(max_speed, "max_speed", what, "max_speed")  # whatever the inertia
     sphere = _flag(finite_sphere, what, "finite_sphere")
+    mu = _value(friction, "friction", what, "friction")
+    if inertia not in ("compressible", "incompressible"):
+        raise TargetError(
+            f"{what}: inertia must be 'compressible' or 'incompressible', got {brief(inertia)}"
+        )
+    if inertia == "compressible":
+        b = compressible_inertia(e, nu, y, rho, v_max).b
+        b_from = f"B = {b:.4g} (compressible, fitted up to {v_max:g} m/s)"
+    ce = cavity_expansion(e, nu, y, n)
+    if inertia == "incompressible":
+        b = ce.b
+        b_from = "B = 1.5 (incompressible)"
     return Medium(
         name,
         (ce.a * y, 0.0, b * rho),
         (0.0,),
-        (_value(friction, "friction", what, "friction"),),
+        (mu,),
         rho,
         f"metal law (spherical cavity expansion; quasi-static A with power-law hardening by "
         f"Forrestal, Okajima & Luk 1988 with Hill's compressible elastic zone, inertial B of "
@@ -639,6 +653,7 @@ def metal_law(
     )
 
 
+@keyword_hints  # before LAWS holds it
 def soil_law(
     a: float,
     tau0: float,

@@ -33,7 +33,7 @@ import xarray as xr
 from pencore.errors import InputError, SolverError, hint_keywords, interrupted_import
 from pencore.inputs.geometry import Projectile
 from pencore.inputs.library import get_projectile, get_target
-from pencore.inputs.limits import flag
+from pencore.inputs.limits import flag, plausible
 from pencore.inputs.models import Emulation, ShankModel, emulation, shank_model, to_json
 from pencore.inputs.numerics import Numerics, check_keywords, keywords_checked, resolve_numerics
 from pencore.inputs.target import Target
@@ -356,6 +356,8 @@ def _impact(a: Mapping[str, Any], loads: bool = False) -> tuple[Problem, RunResu
     # the nose tip reaches further than the outermost ring (up to ~1.5 mm on an ogive)
     if start is not None:
         _check_reaches_target(y0, max(body_reach(pr.rings), pr.lc), num)
+        for c, n in zip(start, "xyz", strict=True):  # a start in cm or mm
+            plausible(c, "start", f"start {n}")
     t0 = time.perf_counter()
     run = _run(pr, y0, velocity, stop_at_reversal, loads)
     wall = time.perf_counter() - t0

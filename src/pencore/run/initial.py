@@ -115,7 +115,11 @@ def _check_inputs(
             f"start must be three numbers (x, y, z) in m, in order (a list, tuple or "
             f"array), got {brief(start)} ({type(start).__name__})"
         )
-    xyz = tuple(number(c, "start", f"start {n}") for c, n in zip(start, "xyz", strict=True))
+    # judged plausible once the start is accepted (it must also reach the target)
+    xyz = tuple(
+        number(c, "start", f"start {n}", plausibility=False)
+        for c, n in zip(start, "xyz", strict=True)
+    )
     if xyz[1] < 0.0:
         raise InputError(
             f"start y must be >= 0 m: the nose tip starts at or above the target's surface "
