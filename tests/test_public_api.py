@@ -203,6 +203,7 @@ def test_every_public_keyword_typo_is_one_line_with_a_hint(name, obj):
     typo = keyword + keyword[-1]
     with pytest.raises(pencore.InputError) as info:
         obj(**{typo: 1})
+    assert isinstance(info.value, pencore.ArgumentError) and isinstance(info.value, TypeError)
     text = str(info.value)
     assert "\n" not in text
     assert f"{typo!r}" in text and f"did you mean {keyword!r}" in text, text

@@ -8,6 +8,7 @@ message; a Python caller can catch them by these classes.
 class              raised when
 =================  ==========================================================
 InputError         a name, file or value given by the user is not valid
+ArgumentError      a call whose arguments do not bind (a misspelt keyword)
 GeometryError      a projectile definition does not describe a valid body
 TargetError        a target definition cannot be used
 ConfigError        a workflow configuration cannot be run
@@ -17,8 +18,9 @@ ResultError        a result file cannot be read (corrupt or truncated)
 =================  ==========================================================
 
 A call whose arguments do not bind (a misspelt keyword, a missing argument) is an
-:class:`InputError` too, naming the closest keyword (:func:`keyword_hints`, given to every
-public function and class by :func:`hint_keywords`).
+:class:`ArgumentError` (an :class:`InputError` and a ``TypeError``) naming the closest
+keyword (:func:`keyword_hints`, given to every public function and class by
+:func:`hint_keywords`).
 
 One warning class, :class:`PlausibilityWarning`, marks a value that is allowed but
 implausible: where a law is extrapolated, or of a size that suggests a slip of unit
@@ -37,6 +39,7 @@ __all__ = [
     "INTERRUPTED",
     "interrupted_import",
     "InputError",
+    "ArgumentError",
     "GeometryError",
     "TargetError",
     "ConfigError",
@@ -84,6 +87,24 @@ class InputError(ValueError):
     ... except pencore.InputError as exc:
     ...     print(exc)
     velocity must be in (0, 10000] m/s, got -5.0
+    """
+
+
+class ArgumentError(InputError, TypeError):
+    """A call to a public function whose arguments do not bind: a misspelt keyword (named
+    with the closest one), a missing argument, one given twice or too many.
+
+    An :class:`InputError` (one line; the command line's exit status 2) and, as Python's
+    own error for such a call, a :class:`TypeError`.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> try:
+    ...     pencore.concrete_law(fc=40e6, densty=2300.0)
+    ... except pencore.ArgumentError as exc:
+    ...     print(str(exc).split(";")[0])
+    concrete_law: unknown keyword 'densty' (did you mean 'density'?)
     """
 
 
@@ -243,7 +264,7 @@ _MAX_KEYWORD = 60
 
 
 def keyword_hints(function: Callable[..., Any]) -> Callable[..., Any]:
-    """``function`` with its calls' argument errors as one :class:`InputError` line: a
+    """``function`` with its calls' argument errors as one :class:`ArgumentError` line: a
     keyword that is none of its parameters is named with the closest one
     (``concrete_law(fc=40e6, densty=2300)``: ``unknown keyword 'densty' (did you mean
     'density'?)``), and a missing or doubled argument is said in Python's words, prefixed
@@ -270,7 +291,7 @@ def keyword_hints(function: Callable[..., Any]) -> Callable[..., Any]:
     >>> law(fc=40e6, densty=2300.0)
     Traceback (most recent call last):
     ...
-    pencore.errors.InputError: law: unknown keyword 'densty' (did you mean 'density'?); its keywords: fc, density
+    pencore.errors.ArgumentError: law: unknown keyword 'densty' (did you mean 'density'?); its keywords: fc, density
     """  # noqa: E501
     if getattr(function, "__keyword_hints__", False):
         return function
@@ -283,7 +304,7 @@ def keyword_hints(function: Callable[..., Any]) -> Callable[..., Any]:
             problem = _call_problem(function, args, kwargs)
             if problem is None:  # the arguments bind: the error is the function's own
                 raise
-        raise InputError(problem)
+        raise ArgumentError(problem)
 
     hinted.__keyword_hints__ = True  # type: ignore[attr-defined]
     return hinted

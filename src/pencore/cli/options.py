@@ -213,7 +213,7 @@ def each_of(*types: Callable[[str], Any]) -> type[argparse.Action]:
     [100.0, 500.0, 5]
     """
 
-    class EachOf(argparse.Action):
+    class EachOf(_StoreOnce):  # given once, as every option that stores
         def __call__(
             self,
             parser: argparse.ArgumentParser,
@@ -228,7 +228,7 @@ def each_of(*types: Callable[[str], Any]) -> type[argparse.Action]:
                     converted.append(conv(text))
                 except argparse.ArgumentTypeError as exc:
                     raise argparse.ArgumentError(self, f"{name}: {exc}") from None
-            setattr(namespace, self.dest, converted)
+            super().__call__(parser, namespace, converted, option_string)
 
     return EachOf
 
