@@ -78,6 +78,7 @@ _EXPORTS = {
     "table3_fit": "inputs.library",
     # errors
     "InputError": "errors",
+    "ArgumentError": "errors",
     "GeometryError": "errors",
     "TargetError": "errors",
     "ConfigError": "errors",
@@ -107,6 +108,7 @@ if TYPE_CHECKING:  # for type checkers and editors: the names as if imported eag
     )
     from pencore.analysis.turning import TurningAngle, turning_angle
     from pencore.errors import (
+        ArgumentError,
         ConfigError,
         GeometryError,
         InputError,

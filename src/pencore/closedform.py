@@ -33,7 +33,7 @@ import math
 
 import numpy as np
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.inputs.geometry import Projectile
 from pencore.inputs.target import Medium
 
@@ -492,3 +492,6 @@ def forrestal_crater_depth(
         c = math.pi * a * a * (a0 + ns * a2 * velocity**2) / (kd * (1.0 + beta))
         return math.sqrt(m * velocity**2 / c)
     return kd + tunnel_depth(projectile, medium, math.sqrt(v1sq))
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -8,6 +8,7 @@ message; a Python caller can catch them by these classes.
 class              raised when
 =================  ==========================================================
 InputError         a name, file or value given by the user is not valid
+ArgumentError      a call whose arguments do not bind (a misspelt keyword)
 GeometryError      a projectile definition does not describe a valid body
 TargetError        a target definition cannot be used
 ConfigError        a workflow configuration cannot be run
@@ -15,6 +16,11 @@ SolverError        an integration could not finish
 WriteError         a file could not be written (nothing was left behind)
 ResultError        a result file cannot be read (corrupt or truncated)
 =================  ==========================================================
+
+A call whose arguments do not bind (a misspelt keyword, a missing argument) is an
+:class:`ArgumentError` (an :class:`InputError` and a ``TypeError``) naming the closest
+keyword (:func:`keyword_hints`, given to every public function and class by
+:func:`hint_keywords`).
 
 One warning class, :class:`PlausibilityWarning`, marks a value that is allowed but
 implausible: where a law is extrapolated, or of a size that suggests a slip of unit
@@ -24,10 +30,17 @@ marks an impact outside the rigid regime (:mod:`pencore.inputs.regime`).
 
 from __future__ import annotations
 
+import difflib
+import functools
+import inspect
+from collections.abc import Callable
+from typing import Any
+
 __all__ = [
     "INTERRUPTED",
     "interrupted_import",
     "InputError",
+    "ArgumentError",
     "GeometryError",
     "TargetError",
     "ConfigError",
@@ -36,6 +49,8 @@ __all__ = [
     "ResultError",
     "PlausibilityWarning",
     "RigidRegimeWarning",
+    "keyword_hints",
+    "hint_keywords",
 ]
 
 #: What the command line says when Ctrl-C ends it (exit status 130).
@@ -74,6 +89,24 @@ class InputError(ValueError):
     ... except pencore.InputError as exc:
     ...     print(exc)
     velocity must be in (0, 10000] m/s, got -5.0
+    """
+
+
+class ArgumentError(InputError, TypeError):
+    """A call to a public function whose arguments do not bind: a misspelt keyword (named
+    with the closest one), a missing argument, one given twice or too many.
+
+    An :class:`InputError` (one line; the command line's exit status 2) and, as Python's
+    own error for such a call, a :class:`TypeError`.
+
+    Examples
+    --------
+    >>> import pencore
+    >>> try:
+    ...     pencore.concrete_law(fc=40e6, densty=2300.0)
+    ... except pencore.ArgumentError as exc:
+    ...     print(str(exc).split(";")[0])
+    concrete_law: unknown keyword 'densty' (did you mean 'density'?)
     """
 
 
@@ -245,3 +278,142 @@ class RigidRegimeWarning(PlausibilityWarning):
     >>> print(caught[-1].category.__name__, str(caught[-1].message).split(" the nose")[0])
     RigidRegimeWarning rigid regime: at 2500 m/s
     """
+
+
+# ---------------------------------------------------------------- keyword typos
+
+#: Longest keyword quoted whole in a message (characters).
+_MAX_KEYWORD = 60
+
+
+def keyword_hints(function: Callable[..., Any]) -> Callable[..., Any]:
+    """``function`` with its calls' argument errors as one :class:`ArgumentError` line: a
+    keyword that is none of its parameters is named with the closest one
+    (``concrete_law(fc=40e6, densty=2300)``: ``unknown keyword 'densty' (did you mean
+    'density'?)``), and a missing or doubled argument is said in Python's words, prefixed
+    with the function's name. A :class:`TypeError` raised inside the function, after its
+    arguments were bound, is raised as it was. A call that binds costs one ``try``.
+
+    Parameters
+    ----------
+    function : callable
+        A Python function or method (not one taking ``**kwargs``, which checks its own
+        keywords: :func:`pencore.inputs.numerics.keywords_checked`).
+
+    Returns
+    -------
+    callable
+        The checked function (``functools.wraps``: same name, docstring, signature).
+
+    Examples
+    --------
+    >>> from pencore.errors import keyword_hints
+    >>> @keyword_hints
+    ... def law(fc, density):
+    ...     return fc * density
+    >>> law(fc=40e6, densty=2300.0)
+    Traceback (most recent call last):
+    ...
+    pencore.errors.ArgumentError: law: unknown keyword 'densty' (did you mean 'density'?); its keywords: fc, density
+    """  # noqa: E501
+    if getattr(function, "__keyword_hints__", False):
+        return function
+
+    @functools.wraps(function)
+    def hinted(*args: Any, **kwargs: Any) -> Any:
+        try:
+            return function(*args, **kwargs)
+        except TypeError:
+            problem = _call_problem(function, args, kwargs)
+            if problem is None:  # the arguments bind: the error is the function's own
+                raise
+        raise ArgumentError(problem)
+
+    hinted.__keyword_hints__ = True  # type: ignore[attr-defined]
+    return hinted
+
+
+def _call_problem(function: Callable[..., Any], args: tuple, kwargs: dict[str, Any]) -> str | None:
+    """Why ``function(*args, **kwargs)`` cannot bind (one line), or None when it binds."""
+    try:
+        signature = inspect.signature(function)
+    except (TypeError, ValueError):  # no signature to judge by
+        return None
+    try:
+        signature.bind(*args, **kwargs)
+    except TypeError as exc:
+        reason = str(exc)
+    else:
+        return None
+    name = function.__qualname__.removesuffix(".__init__")
+    params = signature.parameters
+    keywords = [
+        k
+        for k, p in params.items()
+        if p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY) and k not in ("self", "cls")
+    ]
+    if not any(p.kind is p.VAR_KEYWORD for p in params.values()):
+        for key in kwargs:
+            if key in keywords:
+                continue
+            lower = {k.lower(): k for k in keywords}
+            hint = difflib.get_close_matches(key.lower(), list(lower), n=1, cutoff=0.6)
+            tip = f" (did you mean {lower[hint[0]]!r}?)" if hint else ""
+            quoted = repr(key) if len(key) <= _MAX_KEYWORD else f"{key[:_MAX_KEYWORD]!r}..."
+            known = ", ".join(keywords) if keywords else "none"
+            return f"{name}: unknown keyword {quoted}{tip}; its keywords: {known}"
+    return f"{name}: {reason}"
+
+
+def hint_keywords(namespace: dict[str, Any]) -> None:
+    """Give :func:`keyword_hints` to every public function and class a module defines:
+    each function of its ``__all__`` (without one, of its names not starting with ``_``)
+    that takes a keyword (aliases stay one object),
+    and each class's ``__init__`` and public methods. Called once at the end of each
+    module of a public subpackage, so a function added to ``__all__`` gets it by
+    construction (``tests/test_public_api.py`` walks the API and checks every one)."""
+    module = namespace["__name__"]
+    done: dict[int, Any] = {}
+    public = namespace.get("__all__") or [n for n in list(namespace) if not n.startswith("_")]
+    for name in public:
+        obj = namespace.get(name)
+        if getattr(obj, "__module__", None) != module:
+            continue  # a re-export: hinted where it is defined
+        if id(obj) in done:
+            namespace[name] = done[id(obj)]
+        elif inspect.isfunction(obj):
+            namespace[name] = done[id(obj)] = _hinted(obj)
+        elif inspect.isclass(obj):
+            _hint_class(obj)
+            done[id(obj)] = obj
+
+
+def _takes_keywords(function: Callable[..., Any]) -> bool:
+    """Whether ``function`` has a parameter given by keyword (not ``self``) and no
+    ``**kwargs`` (a function with them checks its own keywords)."""
+    params = inspect.signature(function).parameters.values()
+    if any(p.kind is p.VAR_KEYWORD for p in params):
+        return False
+    return any(
+        p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY) and p.name not in ("self", "cls")
+        for p in params
+    )
+
+
+def _hinted(function: Callable[..., Any]) -> Callable[..., Any]:
+    return keyword_hints(function) if _takes_keywords(function) else function
+
+
+def _hint_class(cls: type) -> None:
+    """``keyword_hints`` on the class's own ``__init__`` and public methods, in place."""
+    for attr, value in list(vars(cls).items()):
+        if attr.startswith("_") and attr != "__init__":
+            continue
+        if isinstance(value, staticmethod | classmethod):
+            hinted = _hinted(value.__func__)
+            if hinted is not value.__func__:
+                setattr(cls, attr, type(value)(hinted))
+        elif inspect.isfunction(value):
+            hinted = _hinted(value)
+            if hinted is not value:
+                setattr(cls, attr, hinted)

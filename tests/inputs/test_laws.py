@@ -336,3 +336,109 @@ def test_implausible_law_input_is_reported_at_the_users_line(tmp_path):
         get_target({"name": "c", "law": "concrete", "fc": 150e6, "density": 2300.0})
     hits = [x for x in w if issubclass(x.category, PlausibilityWarning)]
     assert hits and all(x.filename == __file__ for x in hits), [x.filename for x in hits]
+
+
+# ---------------------------------------------------------------- the number gate
+
+#: Four solids from a polymer to a 1 GPa steel: (E Pa, nu, Y Pa, rho kg/m^3).
+SOLIDS = {
+    "6061-T6 aluminium": (68.9e9, 0.33, 276e6, 2710.0),
+    "1 GPa steel": (200e9, 0.3, 1e9, 7850.0),
+    "mild steel": (200e9, 0.29, 250e6, 7850.0),
+    "polymer": (3e9, 0.4, 60e6, 1200.0),
+}
+
+
+@pytest.mark.parametrize("solid", list(SOLIDS))
+def test_the_fit_of_b_holds_from_its_lowest_admitted_speed(solid):
+    """At the lowest max_speed admitted (rho V^2 / Y = B_FIT_MIN_LOAD) the fitted B is
+    within 2 % of B fitted at ten times that speed (a hundred times the load), where the
+    fitted stress is far above the solution's numerical error; below it B is lost
+    (6061-T6: 13.3 at 0.1 m/s), and that speed is refused."""
+    e, nu, y, rho = SOLIDS[solid]
+    v_min = math.sqrt(laws.B_FIT_MIN_LOAD * y / rho)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", PlausibilityWarning)  # a few m/s is implausible
+        low = laws.compressible_inertia(e, nu, y, rho, max_speed=v_min * (1 + 1e-9)).b
+        ref = laws.compressible_inertia(e, nu, y, rho, max_speed=10.0 * v_min).b
+    assert low == pytest.approx(ref, rel=0.02)
+    with pytest.raises(TargetError, match=f"max_speed must be at least {v_min:.4g} m/s"):
+        laws.compressible_inertia(e, nu, y, rho, max_speed=0.99 * v_min)
+
+
+AL_LAW = (68.9e9, 0.33, 276e6, 0.051, 2710.0)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "words"),
+    [
+        (dict(max_speed=1e-6), "max_speed must be at least 3.191 m/s"),
+        (dict(max_speed=0.01), "max_speed must be at least 3.191 m/s"),
+        (dict(max_speed=0.1), "max_speed must be at least 3.191 m/s"),
+        (dict(max_speed=2), "(in km/s? 2 km/s is 2000 m/s)"),
+        (dict(max_speed=-5, inertia="incompressible"), "max_speed must be in (0, 10000] m/s"),
+        (dict(max_speed="fast"), "max_speed must be a number of m/s"),
+        (dict(max_speed=True), "max_speed must be a number"),
+        (dict(finite_sphere=1), "finite_sphere must be True or False"),
+        (dict(finite_sphere="yes"), "finite_sphere must be True or False"),
+    ],
+)
+def test_metal_law_inputs_refused_in_one_line(kwargs, words):
+    with pytest.raises(TargetError) as info:
+        pencore.metal_law(*AL_LAW, **kwargs)
+    assert words in str(info.value) and "\n" not in str(info.value)
+
+
+def test_compressible_fit_numerics_are_gated():
+    with pytest.raises(TargetError, match="n_points must be a whole number"):
+        laws.compressible_inertia(**AL, density=2710.0, n_points=2.5)
+    with pytest.raises(TargetError, match=r"n_points must be in \[1, 1000\]"):
+        laws.compressible_inertia(**AL, density=2710.0, n_points=0)
+    with pytest.raises(TargetError, match="rtol must be in"):
+        laws.compressible_inertia(**AL, density=2710.0, rtol=0.0)
+
+
+def test_text_and_numpy_scalars_give_the_same_law_to_the_bit():
+    """Every law input goes through the number gate: plain-decimal text (the command
+    line, YAML) and numpy scalars are the numbers they hold."""
+    ref = pencore.concrete_law(40e6, 2300.0, crater_depth=2.0, friction=0.1)
+    assert pencore.concrete_law("40e6", "2300", crater_depth="2", friction="0.1") == ref
+    assert (
+        pencore.concrete_law(np.float64(40e6), np.int64(2300), crater_depth=np.float32(2.0),
+                             friction=np.float64(0.1)) == ref
+    )  # fmt: skip
+    metal = pencore.metal_law(*AL_LAW, max_speed=800.0, finite_sphere=True)
+    assert (
+        pencore.metal_law("68.9e9", "0.33", "276e6", "0.051", "2710", max_speed="800",
+                          finite_sphere=np.bool_(True)) == metal
+    )  # fmt: skip
+    assert pencore.metal_law(*map(np.float64, AL_LAW), max_speed=np.int64(800),
+                             finite_sphere=True) == metal  # fmt: skip
+    soil = pencore.soil_law(1.718, 10e6, 2.215, 1860.0)
+    assert pencore.soil_law("1.718", np.float64(10e6), "2.215", np.int32(1860)) == soil
+
+
+def test_cli_crater_depth_is_a_number(capsys):
+    assert (
+        main(["law", "concrete", "--fc", "40e6", "--density", "2300", "--crater-depth", "2"]) == 0
+    )
+    assert "crater:  2 calibers" in capsys.readouterr().out
+    assert (
+        main(["law", "concrete", "--fc", "40e6", "--density", "2300", "--crater-depth", "x"]) == 2
+    )
+    assert "crater_depth must be a number of calibers" in capsys.readouterr().err
+
+
+def test_medium_from_law_refuses_what_is_not_a_mapping():
+    with pytest.raises(InputError, match=r"a law must be a mapping \{law: concrete \| metal"):
+        laws.medium_from_law("concrete")
+
+
+@pytest.mark.parametrize(
+    ("yield_strength", "slip"),
+    [(276e3, "a yield strength in kPa given for Pa"), (9e9, "E and Y in different units")],
+)
+def test_modulus_over_yield_of_no_metal_warns(yield_strength, slip):
+    with pytest.warns(PlausibilityWarning, match="E / Y") as record:
+        laws.cavity_expansion(68.9e9, 0.33, yield_strength, 0.05)
+    assert slip in str(record[0].message)

@@ -37,6 +37,11 @@ def _concrete_slab(thickness: float, **windows) -> pencore.Target:
     return pencore.Target("slab", (pencore.Layer(medium, thickness),)).with_windows(**windows)
 
 
+def _aluminium_plate(thickness: float) -> pencore.Target:
+    medium = pencore.get_target("aluminium").medium
+    return pencore.Target("plate", (pencore.Layer(medium, thickness),))
+
+
 #: (case, call, words the warning must hold): one per likely slip.
 SLIPS = {
     "soil coefficients in MPa (a0)": (
@@ -79,6 +84,44 @@ SLIPS = {
     "thin plate on the half-space law": (
         lambda: pencore.prepare("p2", _concrete_slab(0.33)),
         ["plate thickness 3.47", "calibres", "no near-surface option"],
+    ),
+    "measured mass in tonnes": (
+        lambda: pencore.get_projectile("p2").with_mass(mass=0.025),
+        ["mass 0.025 kg, solid outline 23.16 kg", "tonnes given for kg"],
+    ),
+    "measured mass in pounds": (
+        lambda: pencore.get_projectile("p2").with_mass(mass=51.0),
+        ["mass 51 kg", "pounds given for kg"],
+    ),
+    "yield strength in kPa": (
+        lambda: pencore.metal_law(68.9e9, 0.33, 276e3, 0.05, 2710.0, inertia="incompressible"),
+        ["E / Y 249638", "kPa given for Pa"],
+    ),
+    "metal law fitted to a speed in km/s": (
+        lambda: pencore.metal_law(200e9, 0.29, 250e6, 0.1, 7850.0, max_speed=2.0),
+        ["max_speed 2 m/s", "km/s given for m/s"],
+    ),
+    "azimuth in radians": (
+        lambda: pencore.simulate("p2", "soil", 300.0, azimuth=0.785, t_max=1e-4),
+        ["azimuth 0.785 deg", "radians? (45.0 deg"],
+    ),
+    "start in cm": (
+        lambda: pencore.simulate("p2", "soil", 300.0, start=(20.0, 0.0, 0.0), t_max=1e-4),
+        ["start coordinate 20 m", "cm or mm given for m"],
+    ),
+    "gravity in g": (
+        lambda: pencore.prepare("p2", "soil", gravity=1.0),
+        ["gravity 1 m/s^2", "in g"],
+    ),
+    "gravity in ft/s^2": (
+        lambda: pencore.prepare("p2", "soil", gravity=32.2),
+        ["gravity 32.2 m/s^2", "ft/s^2"],
+    ),
+    "ballistic-limit plate in mm": (
+        lambda: pencore.ballistic_limit(
+            "p2", _aluminium_plate(10.0), lo=50.0, hi=60.0, tol=20.0, scan=None
+        ),
+        ["plate thickness 10 m", "mm given for m"],
     ),
 }
 

@@ -22,7 +22,7 @@ from helpers import assert_one_line_error
 
 import pencore
 from pencore.cli.main import main
-from pencore.inputs import geometry, library, target
+from pencore.inputs import geometry, laws, library, target
 from pencore.inputs.numerics import resolve_numerics
 
 HANG_GUARD_S = 20.0  # refused before integrating: measured < 0.1 s each
@@ -112,6 +112,9 @@ def test_api_refuses(kw, what, value):
     assert time.monotonic() - t0 < HANG_GUARD_S
 
 
+#: 6061-T6 aluminium's E, nu, Y, n (Pa, -, Pa, -) and density (kg/m^3).
+AL = (68.9e9, 0.33, 276e6, 0.05, 2710.0)
+
 API_OBJECT_CASES = [
     (lambda: pencore.simulate(None, "soil", 300.0), "projectile", "None"),
     (lambda: pencore.simulate("p2", None, 300.0), "target", "None"),
@@ -174,6 +177,19 @@ API_OBJECT_CASES = [
         "diameter",
         "True",
     ),
+    # laws from material properties: the same number gate, a fit only where it holds
+    (lambda: pencore.concrete_law(fc=40e6, densty=2300), "'densty'", "did you mean 'density'"),
+    (lambda: pencore.get_projectile("p2").with_mass(mas=20), "'mas'", "did you mean 'mass'"),
+    (lambda: laws.medium_from_law("concrete"), "a law must be a mapping", "'concrete'"),
+    (lambda: pencore.metal_law(*AL, max_speed=1e-6), "max_speed must be at least", "1e-06"),
+    (lambda: pencore.metal_law(*AL, max_speed=0.1), "max_speed must be at least", "0.1"),
+    (lambda: pencore.metal_law(*AL, max_speed=2), "max_speed", "2 km/s is 2000 m/s"),
+    (
+        lambda: pencore.metal_law(*AL, inertia="incompressible", max_speed=-5),
+        "max_speed must be in (0, 10000] m/s",
+        "-5",
+    ),
+    (lambda: pencore.concrete_law(40e6, 2300.0, crater_depth="two"), "crater_depth", "'two'"),
 ]
 
 
@@ -339,6 +355,18 @@ CLI_CASES = [
     (["simulat"], ["'simulat'"]),
     (["ballistic-limit", "--projectile", "p2", "--target", "plate.yaml", "--tol", "-5"],
      ["argument --tol: tolerance must be in (0, 10000] m/s, got '-5'"]),
+    # a value of an option of several is named by its metavar, as what it is
+    (["residual-velocity", "--projectile", "p2", "--target", "soil", "--range", "100", "500",
+      "20000"], ["argument --range: N: number of speeds must be in [2, 10000], got '20000'"]),
+    (["residual-velocity", "--projectile", "p2", "--target", "soil", "--range", "100", "500",
+      "2.5"], ["--range: N: number of speeds must be a whole number, got '2.5'"]),
+    (["residual-velocity", "--projectile", "p2", "--target", "soil", "--range", "100", "2e4",
+      "3"], ["--range: HI: velocity must be in (0, 10000] m/s, got '2e4'"]),
+    ([*SIM, "--velocity", "300", "--start", "0", "0", "5000"], ["--start: Z: start coordinate"]),
+    ([*SIM, "--velocity", "300", "--inertia", "1", "-2"], ["--inertia: TRANSVERSE: moment"]),
+    (["law", "metal", "--youngs-modulus", "68.9e9", "--poisson-ratio", "0.33",
+      "--yield-strength", "276e6", "--hardening-exponent", "0.05", "--density", "2710",
+      "--inertia", "incompressible", "--max-speed=-5"], ["max_speed must be in (0, 10000]"]),
 ]  # fmt: skip
 
 

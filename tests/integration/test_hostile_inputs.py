@@ -606,6 +606,60 @@ def test_vci_fraction_refused(fraction):
     assert "fraction" in text
 
 
+# ------------------------------------------------------------ laws from material properties
+
+#: Valid inputs of each law (SI), and the numeric ones the number gate checks.
+LAW_INPUTS = {
+    "concrete": dict(fc=40e6, density=2300.0, s=11.0, crater_depth=2.0, friction=0.1),
+    "metal": dict(youngs_modulus=68.9e9, poisson_ratio=0.33, yield_strength=276e6,
+                  hardening_exponent=0.05, density=2710.0, max_speed=800.0, friction=0.1),
+    "soil": dict(a=1.718, tau0=10e6, b=2.215, density=1860.0, friction=0.1),
+}  # fmt: skip
+LAW_CASES = [(law, key) for law, d in LAW_INPUTS.items() for key in d]
+#: Values the number gate refuses for every input, whatever its range.
+LAW_HOSTILE = {"huge": HUGE, "huge-text": HUGE_TEXT, "separator": "1_0", "bool": True,
+               "nan": float("nan"), "none": None, "list": [1.0], "blank": " 5"}  # fmt: skip
+
+
+def _law(law: str, **change):
+    from pencore.inputs.laws import LAWS
+
+    return LAWS[law][0](**{**LAW_INPUTS[law], **change})
+
+
+@pytest.mark.parametrize("hostile", list(LAW_HOSTILE))
+@pytest.mark.parametrize(("law", "key"), LAW_CASES)
+def test_every_law_input_goes_through_the_number_gate(law, key, hostile):
+    """Each numeric input of each law is refused like any other input: one line
+    naming it, before any computation (``s=None`` is Forrestal's S from fc)."""
+    if (key, hostile) == ("s", "none"):
+        pytest.skip("s=None means S from fc")
+    text = _api(lambda: _law(law, **{key: LAW_HOSTILE[hostile]}))
+    names = {"youngs_modulus": "E", "poisson_ratio": "nu", "yield_strength": "Y",
+             "hardening_exponent": "n", "s": "S", "a": "A", "b": "B"}  # fmt: skip
+    assert f"{names.get(key, key)} must be" in text, text
+
+
+@pytest.mark.parametrize(("law", "key"), LAW_CASES)
+def test_every_law_input_takes_text_and_numpy_scalars(law, key):
+    """Plain-decimal text (the command line, YAML) and numpy scalars are the numbers
+    they hold: the same medium to the bit."""
+    value = LAW_INPUTS[law][key]
+    ref = _law(law)
+    assert _law(law, **{key: repr(value)}) == ref
+    assert _law(law, **{key: np.float64(value)}) == ref
+
+
+@pytest.mark.parametrize(("law", "key"), LAW_CASES)
+def test_every_law_keyword_misspelt_is_named(law, key):
+    kwargs = dict(LAW_INPUTS[law])
+    kwargs[key + "x"] = kwargs.pop(key)
+    from pencore.inputs.laws import LAWS
+
+    text = _api(lambda: LAWS[law][0](**kwargs))
+    assert f"did you mean {key!r}" in text
+
+
 # ------------------------------------------------------------ standard output
 
 

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.io.runs import check_run
 
 #: Default noise threshold of :func:`inflection_points`, relative to the peak abs(curvature).
@@ -477,3 +477,6 @@ def inflection_points_ds(
 
 
 # ------------------------------------------------------------------ turning angle (Eq. 12)
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -19,7 +19,7 @@ from pencore.analysis.curvature import (
     _impact_speed,
     _window_end,
 )
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.io.runs import check_run
 
 _NAN = float("nan")
@@ -246,3 +246,6 @@ def reversed_in_target(ds: xr.Dataset) -> bool:
     """
     check_run(ds, "reversed_in_target", attrs=("reversed",))
     return bool(int(ds.attrs["reversed"]))
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

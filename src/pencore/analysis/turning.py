@@ -27,7 +27,7 @@ from pencore.analysis.curvature import (
     inflection_points,
     signed_curvature,
 )
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 
 
 @dataclass(frozen=True)
@@ -297,3 +297,6 @@ def turning_angle(
         impact_speed=data.get("impact_speed"),
         **kw,
     )
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

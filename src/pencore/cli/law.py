@@ -84,7 +84,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
             )
             q.add_argument(
                 "--max-speed",
-                default="1000",
+                default=None,
                 metavar="M_S",
                 help="upper end of the compressible fit in m/s: your impact speeds (default: 1000)",
             )
@@ -113,7 +113,7 @@ def run(args: argparse.Namespace) -> int:
                 kwargs[key] = getattr(args, key)
     if args.law == "metal":
         kwargs["inertia"] = args.inertia
-        if args.inertia == "compressible":
+        if args.max_speed is not None:  # checked whatever the inertia (default: 1000 m/s)
             kwargs["max_speed"] = args.max_speed
         kwargs["finite_sphere"] = args.finite_sphere
     # a plausibility warning: one line on stderr (pencore.cli.main), the usual filters apply

@@ -24,7 +24,7 @@ from typing import Any, NoReturn
 
 from pencore.errors import INTERRUPTED, InputError, WriteError
 from pencore.inputs.gate import DECIMAL_WORDS, brief, brief_path, decimal, load_yaml_text
-from pencore.inputs.limits import number
+from pencore.inputs.limits import as_float, integer, number
 from pencore.inputs.numerics import NUMERIC_FIELDS
 from pencore.io.atomic import check_replaceable, describe_os_error, file_kind
 
@@ -38,6 +38,8 @@ __all__ = [
     "number_type",
     "velocity",
     "obliquity",
+    "whole_type",
+    "each_of",
     "numerics_option",
     "add_window_options",
     "with_windows",
@@ -179,6 +181,57 @@ def number_type(key: str, label: str = "") -> Any:
             raise argparse.ArgumentTypeError(str(exc)) from None
 
     return conv
+
+
+def whole_type(key: str) -> Any:
+    """Make an argparse ``type=`` for a whole number (a count) checked against
+    ``LIMITS[key]``, from plain decimal text (``20``, ``2e1``); else
+    :class:`argparse.ArgumentTypeError` naming the text and what is allowed."""
+
+    def conv(text: str) -> int:
+        v = as_float(text, allow_str=True)
+        try:
+            return integer(text if v is None else v, key)
+        except InputError as exc:  # quote the text given, not the number read from it
+            said = str(exc).rsplit(", got ", 1)[0]
+            raise argparse.ArgumentTypeError(f"{said}, got {brief(text)}") from None
+
+    return conv
+
+
+def each_of(*types: Callable[[str], Any]) -> type[argparse.Action]:
+    """An argparse ``action=`` for an option of several values of different kinds
+    (``--range LO HI N``: two speeds and a count): value ``i`` is converted by
+    ``types[i]``, and a refusal names the value by its metavar (``argument --range: N:
+    number of speeds must be ...``), so that no value is called what it is not.
+
+    Examples
+    --------
+    >>> p = argparse.ArgumentParser(prog="x", exit_on_error=False)
+    >>> _ = p.add_argument("--range", nargs=3, metavar=("LO", "HI", "N"),
+    ...                    action=each_of(velocity, velocity, whole_type("sweep_points")))
+    >>> p.parse_args(["--range", "100", "500", "5"]).range
+    [100.0, 500.0, 5]
+    """
+
+    class EachOf(_StoreOnce):  # given once, as every option that stores
+        def __call__(
+            self,
+            parser: argparse.ArgumentParser,
+            namespace: argparse.Namespace,
+            values: Any,
+            option_string: str | None = None,
+        ) -> None:
+            names = self.metavar if isinstance(self.metavar, tuple) else (self.dest,) * len(types)
+            converted = []
+            for conv, name, text in zip(types, names, values, strict=True):
+                try:
+                    converted.append(conv(text))
+                except argparse.ArgumentTypeError as exc:
+                    raise argparse.ArgumentError(self, f"{name}: {exc}") from None
+            super().__call__(parser, namespace, converted, option_string)
+
+    return EachOf
 
 
 #: argparse type: a speed in m/s, > 0, up to the 10 km/s guard of ``LIMITS["velocity"]``.
@@ -359,7 +412,7 @@ def add_mass_options(p: argparse.ArgumentParser) -> None:
     )
     p.add_argument(
         "--inertia",
-        type=number_type("inertia"),
+        action=each_of(number_type("inertia"), number_type("inertia")),
         nargs=2,
         default=None,
         metavar=("AXIAL", "TRANSVERSE"),

@@ -22,6 +22,7 @@ from typing import Any
 from pencore.cli.options import (
     add_mass_options,
     add_window_options,
+    each_of,
     number_type,
     numerics_option,
     velocity,
@@ -331,7 +332,7 @@ def add_start_option(p: argparse.ArgumentParser, help_text: str = START_HELP) ->
     touching the surface."""
     p.add_argument(
         "--start",
-        type=number_type("start"),
+        action=each_of(*[number_type("start")] * 3),
         nargs=3,
         default=None,
         metavar=("X", "Y", "Z"),

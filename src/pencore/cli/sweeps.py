@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from pencore.cli.options import (
+    each_of,
     exit_at_once_on_interrupt,
     number_type,
     obliquity,
@@ -23,6 +24,7 @@ from pencore.cli.options import (
     run_projectile,
     run_target,
     velocity,
+    whole_type,
     window_values,
 )
 from pencore.cli.summary import (
@@ -47,8 +49,8 @@ def _speeds(p: argparse.ArgumentParser) -> None:
     g.add_argument(
         "--velocities", type=velocity, nargs="+", metavar="M_S", help="impact speeds in m/s"
     )
-    g.add_argument("--range", type=number_type("velocity"), nargs=3,
-                   metavar=("LO", "HI", "N"),
+    g.add_argument("--range", action=each_of(velocity, velocity, whole_type("sweep_points")),
+                   nargs=3, metavar=("LO", "HI", "N"),
                    help="N impact speeds evenly from LO to HI m/s")  # fmt: skip
 
 
@@ -162,11 +164,9 @@ def _velocities(args: argparse.Namespace) -> np.ndarray:
     if args.velocities is not None:
         return np.array(args.velocities, dtype=float)
     lo, hi, n = args.range
-    if not (0.0 < lo < hi) or n != int(n) or int(n) < 2:
-        raise InputError(
-            f"--range LO HI N needs 0 < LO < HI (m/s) and a whole N >= 2, got {lo:g} {hi:g} {n:g}"
-        )
-    return np.linspace(lo, hi, int(n))
+    if not lo < hi:  # each is a speed and N a count of at least 2: their types check
+        raise InputError(f"--range LO HI N needs LO < HI (m/s), got {lo:g} {hi:g} {n}")
+    return np.linspace(lo, hi, n)
 
 
 def run_sweep(args: argparse.Namespace) -> int:

@@ -8,7 +8,7 @@ checking a configuration names a bad choice without loading the solver's kernels
 
 from __future__ import annotations
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 
 __all__ = ["YAW_CONVENTIONS", "SPIN_CENTRES", "normal_impact_angles", "impact_angles"]
 
@@ -67,3 +67,6 @@ def impact_angles(obliquity: float, yaw: float, convention: str) -> tuple[float,
     if convention == "axis_tilted":
         return obliquity + yaw, -yaw
     return obliquity, yaw
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -24,9 +24,9 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from pencore.errors import GeometryError, InputError
+from pencore.errors import GeometryError, InputError, hint_keywords
 from pencore.inputs.gate import brief
-from pencore.inputs.limits import LIMITS, count, number
+from pencore.inputs.limits import LIMITS, count, number, plausible
 
 __all__ = [
     "OgiveNose",
@@ -636,6 +636,9 @@ class Projectile:
             i_ax = f * mo.i_axial
             i_tr = f * mo.i_transverse + m * (lc - mo.lc) ** 2
         mp = MassProperties(float(m), float(lc), float(length), float(i_ax), float(i_tr))
+        if self.mass is not None:  # accepted: against the solid outline (a tonne or a pound)
+            where = f"{what} (mass {m:g} kg, solid outline {mo.mass:.4g} kg)"
+            plausible(m / mo.mass, "mass_ratio", where)
         object.__setattr__(self, "_mass_properties", mp)  # a cache, not a field
         return mp
 
@@ -789,3 +792,6 @@ def nose_factor(nose: Nose) -> float:
     if isinstance(nose, ConeNose):
         return math.sin(nose.half_angle) ** 2
     return 1.0
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

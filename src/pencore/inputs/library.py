@@ -18,7 +18,7 @@ from typing import Any
 
 import numpy as np
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.inputs.gate import brief, brief_path, read_yaml
 from pencore.inputs.geometry import ConeNose, Cylinder, FlatNose, OgiveNose, Projectile
 from pencore.inputs.laws import medium_from_law
@@ -637,3 +637,6 @@ def get_target(spec: str | Target | Medium | dict[str, Any]) -> Target:
     if _looks_like_path(spec):
         return _from_yaml_file(spec, "target", target_from_dict)
     raise InputError(f"unknown target {brief(spec)}; use one of {', '.join(MEDIA)} or a YAML file")
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -10,6 +10,11 @@ Every user-facing entry point (the API, YAML files, the CLI) checks its inputs h
 a bad value stops with one :class:`~pencore.InputError` whose message names the value, its unit
 and what is allowed, before any computation.
 
+The ranges are data: one entry a quantity in ``inputs/data/limits.yaml``
+(:data:`LIMITS_FILE`: its valid range and kind, its plausible range, unit and likely slip,
+with the file's provenance), read once on import into :data:`LIMITS` and
+:data:`PLAUSIBLE`; this module is the gate that applies them.
+
 Each range in :data:`~pencore.inputs.limits.LIMITS` is of one of two kinds:
 
 ``physical``
@@ -33,22 +38,27 @@ with one :class:`~pencore.PlausibilityWarning` naming the value and the slip
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import difflib
 import math
 import numbers
 import os
+import re
 import sys
 import warnings
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, replace
+from pathlib import Path
 from typing import Any
 
-from pencore.errors import InputError, PlausibilityWarning
-from pencore.inputs.gate import DECIMAL_WORDS, brief, decimal
+from pencore.errors import InputError, PlausibilityWarning, hint_keywords
+from pencore.inputs.gate import DECIMAL_WORDS, brief, brief_path, decimal, read_yaml
 
 __all__ = [
     "Limit",
     "LIMITS",
+    "LIMITS_FILE",
+    "load_limits",
     "count",
     "number",
     "as_float",
@@ -114,384 +124,6 @@ def _fmt(x: float) -> str:
     if math.isinf(x):
         return "inf" if x > 0 else "-inf"
     return f"{x:g}"
-
-
-_INF = math.inf
-#: Densest element at room conditions: osmium, 22 590 kg/m^3.
-_RHO_MAX = 23_000.0
-
-#: The valid range of every quantity a user can give, by key: a :class:`Limit` each.
-LIMITS: dict[str, Limit] = {
-    # impact
-    "velocity": Limit(
-        "velocity",
-        "m/s",
-        0.0,
-        1e4,
-        lo_open=True,
-        kind="physical / guard",
-        why="> 0; above 10 km/s the rigid-body DAFL does not apply (typo guard)",
-    ),
-    "obliquity": Limit(
-        "obliquity", "deg", -90.0, 90.0, True, True, why="the axis must point into the target"
-    ),
-    "yaw": Limit(
-        "yaw",
-        "deg",
-        -90.0,
-        90.0,
-        True,
-        True,
-        why="abs(obliquity + yaw) < 90 deg: the velocity must point into the target",
-    ),
-    "omega": Limit("omega", "rad/s", -1e4, 1e4, kind="guard", why="typo guard"),
-    "azimuth": Limit("azimuth", "deg", -360.0, 360.0, kind="guard", why="one turn either way"),
-    "start": Limit(
-        "start coordinate",
-        "m",
-        -1e3,
-        1e3,
-        kind="guard",
-        why="typo guard; the start must also reach the target within t_max",
-    ),
-    # projectile
-    "diameter": Limit("diameter", "m", 1e-4, 10.0, kind="guard", why="0.1 mm to 10 m"),
-    "length": Limit(
-        "segment length",
-        "m",
-        0.0,
-        100.0,
-        lo_open=True,
-        kind="physical / guard",
-        why="> 0; 100 m is a typo guard",
-    ),
-    "density": Limit(
-        "density",
-        "kg/m^3",
-        0.0,
-        _RHO_MAX,
-        lo_open=True,
-        why="> 0 and at most osmium's 22 590 kg/m^3",
-    ),
-    "crh": Limit(
-        "ogive CRH",
-        "",
-        0.5,
-        100.0,
-        kind="physical / guard",
-        why="0.5 is the hemisphere; above 100 the nose is > 20 m per m of diameter",
-    ),
-    "half_angle_deg": Limit(
-        "cone half-angle", "deg", 0.0, 90.0, True, True, why="a cone must close"
-    ),
-    "mass": Limit(
-        "mass",
-        "kg",
-        0.0,
-        1e5,
-        lo_open=True,
-        kind="physical / guard",
-        why="> 0 (measured mass); 100 t is a typo guard; also at most the outline full of osmium",
-    ),
-    "centre_of_mass": Limit(
-        "centre of mass (tip distance Lc)",
-        "m",
-        0.0,
-        100.0,
-        lo_open=True,
-        kind="physical / guard",
-        why="> 0 and inside the body's length",
-    ),
-    "inertia": Limit(
-        "moment of inertia",
-        "kg m^2",
-        0.0,
-        1e6,
-        lo_open=True,
-        kind="physical / guard",
-        why="> 0; a body of revolution also has I_axial <= m a^2 and I_axial <= 2 I_transverse",
-    ),
-    # target
-    "coefficient": Limit(
-        "resistance coefficient",
-        "SI",
-        0.0,
-        1e12,
-        kind="physical / guard",
-        why=">= 0 (the stress must resist); 1e12 is a typo guard",
-    ),
-    "friction": Limit(
-        "friction coefficient",
-        "",
-        0.0,
-        2.0,
-        kind="physical / guard",
-        why=">= 0; above 2 is a typo guard",
-    ),
-    "friction_speed": Limit(
-        "friction table speed", "m/s", 0.0, 1e4, kind="physical / guard", why=">= 0, increasing"
-    ),
-    "thickness": Limit(
-        "layer thickness",
-        "m",
-        0.0,
-        1e4,
-        lo_open=True,
-        kind="physical / guard",
-        why="> 0; leave it out for a semi-infinite last layer",
-    ),
-    "crater_depth": Limit(
-        "crater depth",
-        "calibers",
-        0.0,
-        100.0,
-        kind="physical / guard",
-        why=">= 0 (0: off); Forrestal's crater region (F = c z), k = 2 there",
-    ),
-    "free_surface_depth": Limit(
-        "free-surface depth",
-        "calibers",
-        0.0,
-        100.0,
-        kind="physical / guard",
-        why=">= 0 (0: off); resistance ramp next to a free face",
-    ),
-    "plastic_zone_ratio": Limit(
-        "plastic-zone ratio",
-        "",
-        0.0,
-        1e3,
-        kind="physical / guard",
-        why="0 (off) or > 1: plastic-zone over cavity radius, (E / (3 (1 - nu) Y))^(1/3)",
-    ),
-    # laws from material properties (pencore.inputs.laws)
-    "fc": Limit(
-        "unconfined compressive strength fc",
-        "Pa",
-        1e6,
-        5e8,
-        kind="physical / guard",
-        why="in Pa (40 MPa is 4e7); below 1 MPa is no concrete, above 500 MPa a typo guard",
-    ),
-    "s_factor": Limit(
-        "Forrestal's S",
-        "",
-        0.0,
-        1e3,
-        lo_open=True,
-        kind="physical / guard",
-        why="> 0 (the static resistance is S fc); 1000 is a typo guard",
-    ),
-    "youngs_modulus": Limit(
-        "Young's modulus E",
-        "Pa",
-        1e8,
-        1e12,
-        kind="guard",
-        why="in Pa (69 GPa is 6.9e10): 0.1 GPa to 1000 GPa",
-    ),
-    "poisson_ratio": Limit("Poisson's ratio", "", 0.0, 0.5, why="0 to 1/2 (1/2: incompressible)"),
-    "yield_strength": Limit(
-        "yield strength Y",
-        "Pa",
-        1e5,
-        1e10,
-        kind="guard",
-        why="in Pa (276 MPa is 2.76e8): 0.1 MPa to 10 GPa",
-    ),
-    "hardening_exponent": Limit(
-        "hardening exponent n",
-        "",
-        0.0,
-        1.0,
-        hi_open=True,
-        why="0 (elastic-perfectly plastic) to below 1 (1 would be linear elastic)",
-    ),
-    "soil_factor": Limit(
-        "Forrestal-Luk factor",
-        "",
-        0.0,
-        1e3,
-        lo_open=True,
-        kind="physical / guard",
-        why="> 0 (A or B of A tau0 + B rho Vn^2); 1000 is a typo guard",
-    ),
-    "shear_strength": Limit(
-        "shear strength tau0",
-        "Pa",
-        0.0,
-        1e9,
-        lo_open=True,
-        kind="physical / guard",
-        why="> 0, in Pa (10 MPa is 1e7); 1 GPa is a typo guard",
-    ),
-    "medium_density": Limit(
-        "medium density", "kg/m^3", 0.0, _RHO_MAX, lo_open=True, why="> 0 (for reference only)"
-    ),
-    # numerics
-    "n_nose": Limit("n_nose", "", 1, 10_000, kind="physical / guard", why="rings on the nose"),
-    "n_shank": Limit("n_shank", "", 1, 10_000, kind="physical / guard", why="rings per 5 calibres"),
-    "n_face": Limit("n_face", "", 1, 1_000, kind="physical / guard", why="rings per flat face"),
-    "eps": Limit(
-        "eps",
-        "m/s",
-        0.0,
-        0.1,
-        kind="physical / guard",
-        why="0 is the pure step (may fail as chatter); at most the default v_stop "
-        "(1 m/s) over 10, so that every eps in range runs with the default v_stop",
-    ),
-    "rtol": Limit("rtol", "", 1e-12, 0.1, kind="guard", why="round-off to 10 %"),
-    "max_travel": Limit(
-        "max_travel",
-        "m",
-        0.0,
-        10.0,
-        lo_open=True,
-        kind="physical / guard",
-        why="> 0; largest move per step",
-    ),
-    "v_stop": Limit("v_stop", "m/s", 0.0, 1e3, lo_open=True, kind="physical / guard", why="> 0"),
-    "t_max": Limit(
-        "t_max",
-        "s",
-        0.0,
-        100.0,
-        lo_open=True,
-        kind="physical / guard",
-        why="> 0; a penetration lasts milliseconds to a second",
-    ),
-    "max_steps": Limit("max_steps", "", 1, 1e9, kind="physical / guard", why="step budget"),
-    "max_wall": Limit("max_wall", "s", 0.0, _INF, lo_open=True, why="wall-time budget"),
-    "h_min": Limit(
-        "h_min",
-        "s",
-        0.0,
-        1e-3,
-        lo_open=True,
-        kind="physical / guard",
-        why="smallest step before the run fails as stiff or chattering",
-    ),
-    "n_gauss": Limit(
-        "n_gauss", "", 1, 64, kind="physical / guard", why="Gauss points per friction arc"
-    ),
-    "jacobian_age": Limit(
-        "jacobian_age",
-        "",
-        1,
-        1000,
-        kind="physical / guard",
-        why="accepted steps a Jacobian is held for (1: every step)",
-    ),
-    "gravity": Limit(
-        "gravity",
-        "m/s^2",
-        0.0,
-        1e3,
-        kind="physical / guard",
-        why=">= 0 along -y; 100 g is a typo guard",
-    ),
-    # counts: how many of a thing an input may hold, so that every parse and every
-    # plan is decided in seconds (benchmarks/bench_parse.py measures the largest)
-    "layers": Limit(
-        "number of layers",
-        "",
-        1,
-        1_000,
-        kind="physical / guard",
-        why="layers and gaps of a target; real targets have a few (guard)",
-    ),
-    "shank_segments": Limit(
-        "number of shank segments",
-        "",
-        0,
-        1_000,
-        kind="guard",
-        why="cylindrical segments of a projectile; real bodies have a few (guard)",
-    ),
-    "friction_rows": Limit(
-        "friction table rows",
-        "",
-        1,
-        10_000,
-        kind="physical / guard",
-        why="(speed, mu) rows of a friction table; 10 000 is 1 m/s steps to 10 km/s",
-    ),
-    "n_samples": Limit(
-        "ensemble n_samples",
-        "",
-        1,
-        1_000_000,
-        kind="physical / guard",
-        why="impacts of an ensemble case: 10^6 runs are hours of CPU (guard)",
-    ),
-    "n_chunks": Limit(
-        "ensemble n_chunks",
-        "",
-        1,
-        1_000,
-        kind="physical / guard",
-        why="jobs an ensemble case is split into (at most n_samples); each is a "
-        "Snakemake job, planned before the first runs",
-    ),
-    # shank contact models and paper-emulation numerics (pencore.inputs.models)
-    "shank_factor": Limit(
-        "shank load factor",
-        "",
-        0.0,
-        10.0,
-        kind="physical / guard",
-        why=">= 0 (0 removes the shank load); above 10 is a typo guard",
-        group="models",
-    ),
-    "delta_ref": Limit(
-        "cavity delta_ref",
-        "m",
-        0.0,
-        1.0,
-        lo_open=True,
-        kind="physical / guard",
-        why="> 0 (wall intrusion at full load); 1 m is a typo guard",
-        group="models",
-    ),
-    "n_phi": Limit(
-        "cavity n_phi",
-        "",
-        8,
-        4096,
-        kind="physical / guard",
-        why="quadrature points around a shank ring (cavity model on rings)",
-        group="models",
-    ),
-    "n_circumferential": Limit(
-        "n_circumferential",
-        "",
-        3,
-        10_000,
-        kind="physical / guard",
-        why="flat panels around the body (3 is the coarsest closed facet ring)",
-        group="models",
-    ),
-    "dt": Limit(
-        "explicit dt",
-        "s",
-        0.0,
-        1e-3,
-        lo_open=True,
-        kind="physical / guard",
-        why="> 0; fixed step of the explicit integrator",
-        group="models",
-    ),
-    "start_height": Limit(
-        "start height",
-        "m",
-        0.0,
-        100.0,
-        kind="physical / guard",
-        why=">= 0 (0: touching); tip height of the attribution's normal impacts",
-        group="models",
-    ),
-}
 
 
 def _type_name(value: Any) -> str:
@@ -680,6 +312,10 @@ class Plausible:
         The likely slip of a value below ``lo`` / above ``hi``.
     rule : str
         ``"range"`` or ``"radians"``.
+    valid : str
+        For a quantity checked under another key's valid range (a resistance
+        coefficient, a measured depth), how the docs' table words its valid range;
+        ``""`` when :data:`LIMITS` has its own.
     """
 
     label: str
@@ -689,6 +325,7 @@ class Plausible:
     below: str = ""
     above: str = ""
     rule: str = "range"
+    valid: str = ""
 
     def fits(self, v: float) -> bool:
         if v == 0.0 or math.isnan(v):
@@ -741,95 +378,132 @@ def looks_like_radians(angle_deg: float) -> bool:
     return typed and abs(deg - nearest) <= 0.5
 
 
-_KMS = "a speed in km/s given for m/s? (1.4 km/s = 1400 m/s)"
-_RAD = "given in radians? ({deg:.1f} deg if so; pencore's angles are in degrees)"
-_GCC = "a density in g/cm^3 given for kg/m^3? (7.85 g/cm^3 = 7850 kg/m^3)"
+#: The data file of the ranges: one entry a quantity, with its valid range and kind, its
+#: plausible range, unit and likely slip; the file's header gives the format and provenance.
+LIMITS_FILE = Path(__file__).parent / "data" / "limits.yaml"
 
+#: An interval of the data file: ``(`` / ``)`` exclude a bound, ``[`` / ``]`` include it.
+_INTERVAL = re.compile(r"([\[(])\s*([^,\s]+)\s*,\s*([^,\s]+)\s*([\])])")
+#: The fields an entry of :data:`LIMITS_FILE` may hold.
+_FIELDS = (
+    "label",
+    "unit",
+    "valid",
+    "kind",
+    "why",
+    "group",
+    "plausible",
+    "below",
+    "above",
+    "valid_as",
+    "valid_text",
+)
+
+
+def _bound(text: str, where: str) -> float:
+    """A bound of an interval: an integer when written as one (a count), else a float
+    in plain decimal (``inf`` allowed)."""
+    if re.fullmatch(r"[+-]?[0-9]+", text):
+        return int(text)
+    v = decimal(text)
+    if v is None or math.isnan(v):
+        raise InputError(f"{where}: bound must be a number, got {brief(text)}")
+    return v
+
+
+def _interval(text: Any, where: str) -> tuple[float, float, bool, bool]:
+    """``(lo, hi, lo_open, hi_open)`` of an interval such as ``"(0, 1e4]"``."""
+    m = _INTERVAL.fullmatch(text) if isinstance(text, str) else None
+    if m is None:
+        raise InputError(f"{where} must be an interval such as '(0, 1e4]', got {brief(text)}")
+    lo, hi = _bound(m[2], where), _bound(m[3], where)
+    if not lo <= hi:
+        raise InputError(f"{where}: the interval {brief(text)} is empty")
+    return lo, hi, m[1] == "(", m[4] == ")"
+
+
+def _text(entry: Mapping[str, Any], key: str, where: str, default: str = "") -> str:
+    value = entry.get(key, default)
+    if not isinstance(value, str):
+        raise InputError(f"{where}: {key} must be text, got {brief(value)}")
+    return value
+
+
+def load_limits(
+    path: str | os.PathLike[str] = LIMITS_FILE,
+) -> tuple[dict[str, Limit], dict[str, Plausible]]:
+    """The valid and the plausible ranges of the data file ``path`` (default
+    :data:`LIMITS_FILE`, which gives :data:`LIMITS` and :data:`PLAUSIBLE`).
+
+    Returns
+    -------
+    (dict of str to Limit, dict of str to Plausible)
+        By key, in the file's order: the entries with a ``valid`` range, and those with a
+        ``plausible`` one.
+
+    Raises
+    ------
+    InputError
+        An entry that is not in the format the file's header describes (named).
+    """
+    data = read_yaml(path, "limits")
+    if not isinstance(data, dict):
+        raise InputError(f"limits file {brief_path(path)} must map each quantity to its ranges")
+    limits: dict[str, Limit] = {}
+    plausibles: dict[str, Plausible] = {}
+    for key, entry in data.items():
+        where = f"limits file {brief_path(path)}, {key}"
+        if not isinstance(entry, dict):
+            raise InputError(f"{where} must be a mapping of {', '.join(_FIELDS)}")
+        check_keys(entry, _FIELDS, where)
+        label, unit = _text(entry, "label", where), _text(entry, "unit", where)
+        if "valid" in entry:
+            lo, hi, lo_open, hi_open = _interval(entry["valid"], f"{where}: valid")
+            limits[key] = Limit(
+                label,
+                unit,
+                lo,
+                hi,
+                lo_open,
+                hi_open,
+                kind=_text(entry, "kind", where, "physical"),
+                why=_text(entry, "why", where),
+                group=_text(entry, "group", where, "core"),
+            )
+        if "plausible" not in entry:
+            continue
+        rule = "radians" if entry["plausible"] == "radians" else "range"
+        lo, hi = 0.0, math.inf
+        if rule == "range":
+            lo, hi, *_ = _interval(entry["plausible"], f"{where}: plausible")
+        if "valid" in entry:
+            valid = ""
+        elif "valid_as" in entry:
+            valid = limits[_text(entry, "valid_as", where)].describe()[3:]
+        else:
+            valid = _text(entry, "valid_text", where)
+        plausibles[key] = Plausible(
+            label,
+            unit,
+            lo,
+            hi,
+            below=_text(entry, "below", where),
+            above=_text(entry, "above", where),
+            rule=rule,
+            valid=valid,
+        )
+    return limits, plausibles
+
+
+#: The valid range of every quantity a user can give, by key: a :class:`Limit` each,
+#: read from :data:`LIMITS_FILE`.
+LIMITS: dict[str, Limit]
 #: The plausible range of every quantity that carries a unit, by key (the keys of
-#: :data:`LIMITS` where the quantity is one of them): a :class:`Plausible` each.
-PLAUSIBLE: dict[str, Plausible] = {
-    "velocity": Plausible(
-        "velocity",
-        "m/s",
-        10.0,
-        5000.0,
-        below=_KMS,
-        above="beyond rigid-body penetration (the projectile erodes); ft/s or km/h given for m/s?",
-    ),
-    "obliquity": Plausible("obliquity", "deg", 0.0, 90.0, below=_RAD, rule="radians"),
-    "yaw": Plausible("yaw", "deg", 0.0, 90.0, below=_RAD, rule="radians"),
-    "omega": Plausible(
-        "omega",
-        "rad/s",
-        0.0,
-        1000.0,
-        above="a spin in rpm given for rad/s? (1 rpm = 0.1047 rad/s; the transverse rates "
-        "of an impact are tens of rad/s)",
-    ),
-    "diameter": Plausible(
-        "diameter",
-        "m",
-        1e-3,
-        2.0,
-        below="a diameter in km given for m?",
-        above="a diameter in cm or mm given for m? (9.5 cm = 0.095 m)",
-    ),
-    "length": Plausible(
-        "segment length",
-        "m",
-        1e-4,
-        10.0,
-        below="a length in km given for m?",
-        above="a length in cm or mm given for m? (50 cm = 0.5 m)",
-    ),
-    "density": Plausible("density", "kg/m^3", 500.0, _RHO_MAX, below=_GCC),
-    "medium_density": Plausible("medium density", "kg/m^3", 50.0, _RHO_MAX, below=_GCC),
-    "thickness": Plausible(
-        "layer thickness",
-        "m",
-        1e-4,
-        50.0,
-        below="a thickness in km given for m?",
-        above="a thickness in cm or mm given for m? (25 mm = 0.025 m)",
-    ),
-    "a0": Plausible(
-        "resistance a0",
-        "Pa",
-        1e4,
-        1e11,
-        below="a stress in MPa given for Pa? (17.18 MPa = 1.718e7 Pa; soils and rocks "
-        "resist with 10^5 to 10^10 Pa)",
-        above="above any solid's strength (100 GPa); kPa given for Pa?",
-    ),
-    "a2": Plausible(
-        "resistance a2",
-        "kg/m^3",
-        10.0,
-        1e5,
-        below="coefficients in MPa given for Pa? (a2 is B rho, of the order of the "
-        "target's density: 4120 kg/m^3 for the paper's soil)",
-        above="coefficients in kPa given for Pa? (a2 is B rho, of the order of the "
-        "target's density)",
-    ),
-    "depth": Plausible(
-        "measured depth",
-        "m",
-        1e-4,
-        50.0,
-        below="a depth in km given for m?",
-        above="a depth in mm or cm given for m? (a shot table in mm: 120 mm = 0.12 m)",
-    ),
-    "plate": Plausible(
-        "plate thickness",
-        "calibres",
-        5.0,
-        math.inf,
-        below="a plate this thin run on the half-space law with no near-surface option "
-        "(crater_depth, free_surface_depth or plastic_zone_ratio): the front crater "
-        "(2 calibres, Forrestal) and the rear free face reach through it, and the "
-        "half-space law over-resists there",
-    ),
-}
+#: :data:`LIMITS` where the quantity is one of them): a :class:`Plausible` each, read from
+#: :data:`LIMITS_FILE`.
+PLAUSIBLE: dict[str, Plausible]
+LIMITS, PLAUSIBLE = load_limits()
+
 
 #: Files of this package: a warning is reported at the first caller outside them.
 _PACKAGE = os.path.dirname(os.path.dirname(os.path.abspath(__file__))) + os.sep
@@ -841,7 +515,9 @@ def _caller_level() -> int:
     while frame is not None and (
         frame.f_code.co_filename.startswith(_PACKAGE)
         or (frame.f_code.co_filename == "<string>" and frame.f_code.co_name == "__init__")
-    ):  # a dataclass's generated __init__ is pencore's code too
+        or frame.f_code.co_filename == dataclasses.__file__
+    ):  # a dataclass's generated __init__ is pencore's code too, and so is the
+        # dataclasses.replace that pencore calls (Projectile.with_mass, numerics overrides)
         caller = frame.f_back
         if caller is not None and not isinstance(caller.f_globals.get("__name__"), str):
             # code run without a module name (a Snakefile): Python drops a warning
@@ -923,11 +599,11 @@ def plausible_markdown() -> str:
         "|---|---|---|---|",
     ]
     for key, p in PLAUSIBLE.items():
-        legal = LIMITS.get(key) or LIMITS["coefficient" if key in ("a0", "a2") else "thickness"]
-        if key == "depth":
-            legal = replace(LIMITS["thickness"], label="depth")
-        valid = legal.describe()[3:] if key != "plate" else "any finite plate"
+        valid = p.valid or LIMITS[key].describe()[3:]
         slips = "; ".join(x.format(deg=30.0) if p.rule == "radians" else x for x in
                           (p.below, p.above) if x)  # fmt: skip
         rows.append(f"| `{key}` | {valid} | {p.describe()} | {slips} |")
     return "\n".join(rows)
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -80,7 +80,7 @@ from collections.abc import Mapping
 from dataclasses import asdict, dataclass, fields
 from typing import Any
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import check_keys, integer, number
 
@@ -270,3 +270,6 @@ def emulation(value: Emulation | Mapping[str, Any] | None) -> Emulation:
 def to_json(obj: ShankModel | Emulation) -> str:
     """The options as JSON (dataset attributes)."""
     return json.dumps(asdict(obj))
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -15,7 +15,7 @@ from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, fields, replace
 from typing import Any
 
-from pencore.errors import InputError
+from pencore.errors import ArgumentError, InputError, hint_keywords
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import check_keys, integer, number
 
@@ -237,7 +237,7 @@ def check_keywords(overrides: Mapping[str, Any], own: Iterable[str], function: s
         lower = {k.lower(): k for k in known}
         hint = difflib.get_close_matches(str(key).lower(), list(lower), n=1, cutoff=0.6)
         tip = f" (did you mean {lower[hint[0]]!r}?)" if hint else ""
-        raise InputError(
+        raise ArgumentError(
             f"{function}: unknown keyword {brief(key)}{tip}; its keywords are its own "
             f"parameters and the numerics fields ({', '.join(numerics)})"
         )
@@ -260,7 +260,7 @@ def keywords_checked(function: Callable[..., Any]) -> Callable[..., Any]:
     >>> search("p2", obliquty=30.0)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    pencore.errors.InputError: search: unknown keyword 'obliquty' (did you mean 'obliquity'?); ...
+    pencore.errors.ArgumentError: search: unknown keyword 'obliquty' (did you mean ...
     """
     signature = inspect.signature(function)
     own = [
@@ -276,7 +276,7 @@ def keywords_checked(function: Callable[..., Any]) -> Callable[..., Any]:
         except TypeError as exc:
             swallowed = {k: v for k, v in kwargs.items() if k not in own}
             check_keywords(swallowed, own, function.__name__)  # a typo: named, with a hint
-            raise InputError(f"{function.__name__}: {exc}") from None
+            raise ArgumentError(f"{function.__name__}: {exc}") from None
         return function(*args, **kwargs)
 
     return checked
@@ -286,3 +286,6 @@ def _apply(base: Numerics, mapping: Mapping[str, Any]) -> Numerics:
     check_keys(mapping, [f.name for f in fields(Numerics)], "numerics")
     given = {k: v for k, v in mapping.items() if v is not None}
     return replace(base, **given) if given else base
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -74,7 +74,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from pencore.errors import InputError, TargetError
+from pencore.errors import InputError, TargetError, hint_keywords
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import as_float, count, number, plausible
 from pencore.inputs.record import RECORD_LAWS
@@ -744,3 +744,6 @@ class Target:
                 fric[j, m] = (sp[mm] + (m - mm) * 1.0, mu[mm])
             j += 1
         return bounds, coef, fric
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -32,7 +32,7 @@ import threading
 from collections.abc import Iterable, Iterator
 from pathlib import Path
 
-from pencore.errors import WriteError
+from pencore.errors import WriteError, hint_keywords
 
 __all__ = [
     "atomic_path",
@@ -295,3 +295,6 @@ def _umask() -> int:
     mask = os.umask(0)
     os.umask(mask)
     return mask
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from pencore.errors import InputError, ResultError, WriteError
+from pencore.errors import InputError, ResultError, WriteError, hint_keywords
 from pencore.io.atomic import atomic_path, describe_os_error
 from pencore.io.results import unreadable_message
 from pencore.version import __version__
@@ -430,3 +430,6 @@ def downsample(
     out = ds.isel({dim: idx})
     out.attrs = {**ds.attrs, "downsampled_from": int(size), "downsampled_dim": dim}
     return out
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -15,6 +15,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+from pencore.errors import hint_keywords
 from pencore.io.atomic import TEMP_MARK
 
 __all__ = ["readable_netcdf", "set_aside_unreadable", "unreadable_message"]
@@ -112,3 +113,6 @@ def set_aside_unreadable(folder: str | os.PathLike[str]) -> list[tuple[Path, str
             os.replace(path, path.with_name(path.name + ".corrupt"))
             found.append((path, reason))
     return found
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

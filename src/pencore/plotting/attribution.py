@@ -8,6 +8,7 @@ import xarray as xr
 from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator, NullFormatter
 
+from pencore.errors import hint_keywords
 from pencore.plotting.style import _COLOURS, _MARKERS, _c, new_figure, styled
 
 __all__ = ["plot_attribution"]
@@ -89,3 +90,6 @@ def plot_attribution(ds: xr.Dataset) -> Figure:
         fontsize=9,
     )
     return fig
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

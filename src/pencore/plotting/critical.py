@@ -8,6 +8,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
+from pencore.errors import hint_keywords
 from pencore.plotting.style import (
     _LCL,
     _MARKERS,
@@ -340,3 +341,6 @@ def plot_fig18(ds: xr.Dataset) -> Figure:
     ax.grid(alpha=0.3)
     _ordered_legend(ax, fig, order)
     return fig
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

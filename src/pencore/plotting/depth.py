@@ -11,6 +11,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
+from pencore.errors import hint_keywords
 from pencore.plotting.style import (
     _DEPTH,
     _LINESTYLES,
@@ -232,3 +233,6 @@ def plot_verification(ds: xr.Dataset, cases: Sequence[str] | None = None) -> Fig
     if np.isfinite(mx):
         ax2.set_title(f"largest |difference| = {100 * mx:.2g} %", fontsize=9)
     return fig
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

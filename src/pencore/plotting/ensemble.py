@@ -7,6 +7,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
+from pencore.errors import hint_keywords
 from pencore.plotting.style import _c, _pname, new_figure, styled
 
 __all__ = ["plot_ensemble"]
@@ -69,3 +70,6 @@ def plot_ensemble(ds: xr.Dataset) -> Figure:
         fontsize=10,
     )
     return fig
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

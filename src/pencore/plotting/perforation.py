@@ -9,6 +9,7 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 from pencore.analysis.errors import summary_statistics
+from pencore.errors import hint_keywords
 from pencore.plotting.critical import _search_errorbars
 from pencore.plotting.style import _MARKERS, _VI, _c, _pname, new_figure, styled
 
@@ -219,3 +220,6 @@ def plot_ballistic_map(bl_map: xr.Dataset, cmp: xr.Dataset | None = None) -> Fig
     bx.legend(fontsize=7, frameon=False)
     bx.set_title(f"obliquity ratio, pencore at t/d = {t_pick:g}", fontsize=9)
     return fig
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

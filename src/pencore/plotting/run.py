@@ -18,7 +18,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.plotting.style import _c, _pname, new_figure, save_figure, styled
 
 __all__ = ["plot_run", "AGAINST", "layer_faces"]
@@ -159,3 +159,6 @@ def _draw_layers(ax, faces: list[tuple[float, float, str]]) -> None:  # noqa: AN
             ax.axhline(bottom, color="0.45", lw=0.8, ls="--", label="_layer face")
         ax.text(0.01, top, f" {name}", transform=ax.get_yaxis_transform(), va="top",
                 fontsize=7, color="0.3")  # fmt: skip
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

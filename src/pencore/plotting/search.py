@@ -10,7 +10,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.plotting.style import _c, _pname, new_figure, styled
 
 __all__ = ["plot_search"]
@@ -71,3 +71,6 @@ def plot_search(ds: xr.Dataset) -> Figure:
         fontsize=9,
     )
     return fig
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

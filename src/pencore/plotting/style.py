@@ -19,6 +19,8 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
+from pencore.errors import hint_keywords
+
 __all__ = ["STYLE", "styled", "new_figure", "save_figure", "convention_label"]
 
 #: Reader-facing names of the yaw conventions (config names stay out of titles/legends).
@@ -140,3 +142,6 @@ def _finite(*arrays: np.ndarray) -> np.ndarray:
     for a in arrays:
         ok &= np.isfinite(a)
     return ok
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

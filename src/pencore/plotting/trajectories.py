@@ -13,6 +13,7 @@ import xarray as xr
 from matplotlib.figure import Figure
 from matplotlib.ticker import FuncFormatter
 
+from pencore.errors import hint_keywords
 from pencore.plotting.style import _c, _finite, _pname, convention_label, new_figure, styled
 
 __all__ = ["plot_fig7", "plot_fig11", "plot_fig13", "plot_fig16", "plot_start_height"]
@@ -223,3 +224,6 @@ def _paper_fig13() -> str:
     pv = _paper_values()
     phis = [f"{phi:g}° ({v:g})" for v, phi in sorted(pv["fig13_phi_deg"].items())]
     return ", ".join([*phis, f"large ({pv['fig13_large_at']:g})"])
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -6,6 +6,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
+from pencore.errors import hint_keywords
 from pencore.plotting.style import _LCL, _LINESTYLES, _MARKERS, _c, _pname, new_figure, styled
 from pencore.plotting.trajectories import _path, _surface
 
@@ -83,3 +84,6 @@ def plot_fig9(ds: xr.Dataset) -> Figure:
     ax2.grid(alpha=0.3)
     ax2.legend(fontsize=7, frameon=False)
     return fig
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from pencore.errors import hint_keywords
 from pencore.inputs.geometry import Projectile
 from pencore.inputs.target import Target
 from pencore.integrators.driver import RunResult
@@ -394,3 +395,6 @@ def exit_attributes(y: np.ndarray, axis: np.ndarray) -> dict[str, float]:
         "exit_angle_of_attack_deg": float(np.degrees(np.arccos(np.clip(cos_aoa, -1.0, 1.0)))),
         "exit_angular_velocity_rad_s": float(np.hypot(y[11], y[12])),
     }
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -30,12 +30,12 @@ from typing import Any, ParamSpec
 import numpy as np
 import xarray as xr
 
-from pencore.errors import InputError, SolverError, interrupted_import
+from pencore.errors import InputError, SolverError, hint_keywords, interrupted_import
 from pencore.inputs.geometry import Projectile
 from pencore.inputs.library import get_projectile, get_target
-from pencore.inputs.limits import flag
+from pencore.inputs.limits import flag, plausible
 from pencore.inputs.models import Emulation, ShankModel, emulation, shank_model, to_json
-from pencore.inputs.numerics import Numerics, check_keywords, resolve_numerics
+from pencore.inputs.numerics import Numerics, check_keywords, keywords_checked, resolve_numerics
 from pencore.inputs.regime import warn_outside
 from pencore.inputs.target import Target
 from pencore.integrators.driver import CHUNK_STEPS, RunResult
@@ -57,6 +57,7 @@ from pencore.run.loads import body_loads
 __all__ = ["prepare", "simulate", "run_impact", "COMPILE_NOTICE", "compiled_in_cache"]
 
 
+@keywords_checked
 def prepare(
     projectile: Any,
     target: Any,
@@ -150,6 +151,7 @@ _emulation = emulation
 _PREPARE_KEYWORDS = tuple(inspect.signature(prepare).parameters)
 
 
+@keywords_checked
 def simulate(
     projectile: str | Projectile,
     target: str | Target,
@@ -305,6 +307,7 @@ def _arguments_of(
     return give
 
 
+@keywords_checked
 @_arguments_of(simulate)
 def run_impact(*args: Any, **kwargs: Any) -> RunResult:
     """:func:`simulate` without building the Dataset: the raw run (SI units).
@@ -360,6 +363,8 @@ def _impact(a: Mapping[str, Any], loads: bool = False) -> tuple[Problem, RunResu
     # the nose tip reaches further than the outermost ring (up to ~1.5 mm on an ogive)
     if start is not None:
         _check_reaches_target(y0, max(body_reach(pr.rings), pr.lc), num)
+        for c, n in zip(start, "xyz", strict=True):  # a start in cm or mm
+            plausible(c, "start", f"start {n}")
     t0 = time.perf_counter()
     run = _run(pr, y0, velocity, stop_at_reversal, loads)
     wall = time.perf_counter() - t0
@@ -487,3 +492,6 @@ def _raise_on_failure(run: RunResult, pr: Problem) -> None:
         f"the centre of mass was at ({y[0]:.4g}, {y[1]:.4g}, {y[2]:.4g}) m moving at "
         f"{math.sqrt(y[7] ** 2 + y[8] ** 2 + y[9] ** 2):.4g} m/s"
     )
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.inputs.conventions import SPIN_CENTRES
 from pencore.inputs.gate import brief
 from pencore.inputs.geometry import Projectile
@@ -115,7 +115,11 @@ def _check_inputs(
             f"start must be three numbers (x, y, z) in m, in order (a list, tuple or "
             f"array), got {brief(start)} ({type(start).__name__})"
         )
-    xyz = tuple(number(c, "start", f"start {n}") for c, n in zip(start, "xyz", strict=True))
+    # judged plausible once the start is accepted (it must also reach the target)
+    xyz = tuple(
+        number(c, "start", f"start {n}", plausibility=False)
+        for c, n in zip(start, "xyz", strict=True)
+    )
     if xyz[1] < 0.0:
         raise InputError(
             f"start y must be >= 0 m: the nose tip starts at or above the target's surface "
@@ -144,3 +148,6 @@ def _check_reaches_target(y0: np.ndarray, reach: float, num: Any) -> None:
             f"downward speed of {vy:.4g} m/s the body cannot reach the target within "
             f"t_max = {num.t_max:g} s; lower the start or raise numerics t_max"
         )
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from pencore.errors import hint_keywords
 from pencore.integrators.driver import RunResult, reserve_path, start_path
 from pencore.integrators.problem import Problem
 from pencore.kernels.contact_points import MAX_SAMPLES_PER_STEP
@@ -103,3 +104,6 @@ def body_loads(problem: Problem, run: RunResult) -> np.ndarray:
     model = start_path(model, run.ys[0])
     model = reserve_path(model, run.ys.shape[0] * MAX_SAMPLES_PER_STEP + 1)
     return loads_along(run.ts, run.ys, rings, bounds, coef, fric, eps, n_gauss, model)
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -30,7 +30,7 @@ from typing import Any
 
 from pencore.analysis.curvature import DEFAULT_SPEED_FRACTION
 from pencore.analysis.deviation import final_deviation
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.inputs.conventions import normal_impact_angles
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import as_float, number
@@ -335,3 +335,6 @@ def vci(
         return rev or bool(dev > threshold_deg)
 
     return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="Vci")
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -31,9 +31,9 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.inputs.gate import brief
-from pencore.inputs.limits import as_float
+from pencore.inputs.limits import as_float, plausible
 from pencore.inputs.numerics import keywords_checked
 from pencore.io.runs import check_run
 from pencore.run.impact import prepare, run_impact
@@ -184,6 +184,10 @@ def ballistic_limit(
             f"target {pr.target.name!r} is semi-infinite: the ballistic limit needs a "
             "finite last layer (give it a thickness)"
         )
+    for k, layer in enumerate(pr.target.layers):  # a plate in mm given for m
+        if not layer.is_gap:
+            where = f"target {brief(pr.target.name)} layer {k}"
+            plausible(layer.thickness, "plate_thickness", where)
 
     def verdict(v: float) -> bool:
         run = run_impact(pr.projectile, pr.target, v, obliquity, yaw, omega, prepared=pr, **sim)
@@ -338,3 +342,6 @@ def fit_recht_ipson(v: np.ndarray, v_r: np.ndarray, v_bl: float | None = None) -
         "v_bl": float(vb),
         "rms": float(math.sqrt(np.mean(sol.fun**2))),
     }
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

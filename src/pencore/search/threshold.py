@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import as_float, number
 from pencore.inputs.numerics import Numerics
@@ -418,3 +418,6 @@ def split_search_kwargs(
         tip = f" (did you mean {hint[0]!r}?)" if hint else ""
         raise InputError(f"unknown argument(s): {', '.join(map(str, unknown))}{tip}")
     return numerics, overrides, kwargs
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint
