@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.inputs.record import MIN_SHOTS, STATED_LEVEL, Scores, band_factors, comparable
 
 __all__ = [
@@ -182,3 +182,6 @@ def calibrate_level(
         n_shots=int(scores.ratio.size),
         stated_level=stated,
     )
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -45,7 +45,7 @@ from pathlib import Path
 
 import numpy as np
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.inputs.gate import read_yaml
 
 __all__ = [
@@ -340,3 +340,6 @@ def record_laws() -> tuple[str, ...]:
 def scores_of(law: str) -> Scores | None:
     """The shipped record of one law (None: the record does not score it)."""
     return _shipped().get(law)
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -31,7 +31,7 @@ from typing import Any
 
 import numpy as np
 
-from pencore.errors import RigidRegimeWarning
+from pencore.errors import RigidRegimeWarning, hint_keywords
 from pencore.inputs.geometry import Projectile
 from pencore.inputs.limits import _caller_level
 from pencore.inputs.target import Medium, Target
@@ -171,3 +171,6 @@ def warn_outside(projectile: Projectile, target: Target | Medium, velocity: floa
         return False
     warnings.warn(verdict.message(velocity), RigidRegimeWarning, stacklevel=_caller_level())
     return True
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -61,7 +61,7 @@ from typing import Any
 
 import pandas as pd
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.measured.shots import read_data_csv
 
 __all__ = [
@@ -499,3 +499,6 @@ def source_counts(df: pd.DataFrame) -> pd.DataFrame:
             "last_row": g["row"].max(),
         }
     )
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

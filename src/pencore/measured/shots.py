@@ -40,7 +40,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.inputs.conventions import normal_impact_angles
 from pencore.inputs.gate import decimal
 from pencore.inputs.limits import plausible
@@ -253,3 +253,6 @@ def read_body_shot_table(path: str | Path, label: str | None = None) -> pd.DataF
     if dup.any():
         raise InputError(f"{label}: duplicate rows {sorted(set(out['row'][dup]))}")
     return out
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

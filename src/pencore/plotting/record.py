@@ -7,7 +7,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 from pencore.inputs.record import DEFAULT_RECORD_LAW
 from pencore.plotting.style import _c, new_figure, styled
 
@@ -87,3 +87,6 @@ def plot_concrete_record(ds: xr.Dataset) -> Figure:
                title=f"error against {title}, clean rows (bins of >= 3 shots)")  # fmt: skip
         ax.legend(fontsize=6.5, ncol=2)
     return fig
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -19,7 +19,7 @@ import warnings
 import numpy as np
 import xarray as xr
 
-from pencore.errors import PlausibilityWarning
+from pencore.errors import PlausibilityWarning, hint_keywords
 from pencore.inputs.geometry import OgiveNose, Projectile
 from pencore.inputs.record import MIN_SHOTS, WINDOWS, depth_band, scores_of
 from pencore.inputs.target import Target
@@ -120,3 +120,6 @@ def attach_depth_band(
         }
     )
     return ds
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

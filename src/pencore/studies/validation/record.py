@@ -41,7 +41,7 @@ import xarray as xr
 
 from pencore import closedform
 from pencore.analysis.record import LEVELS, STATISTICS, WITHIN, binned, calibrate_level
-from pencore.errors import InputError, PlausibilityWarning, SolverError, TargetError
+from pencore.errors import InputError, PlausibilityWarning, SolverError, TargetError, hint_keywords
 from pencore.inputs.laws import concrete_law, size_term_constants
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.record import (
@@ -667,3 +667,6 @@ if __name__ == "__main__":  # pragma: no cover - regenerates the shipped record
     import sys
 
     write_record(sys.argv[1] if len(sys.argv) > 1 else "results/archive/validation")
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

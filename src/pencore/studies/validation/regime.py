@@ -17,7 +17,7 @@ import warnings
 import pandas as pd
 
 from pencore.closedform import depth
-from pencore.errors import InputError, PlausibilityWarning
+from pencore.errors import InputError, PlausibilityWarning, hint_keywords
 from pencore.inputs.geometry import Projectile
 from pencore.inputs.laws import concrete_law
 from pencore.inputs.regime import rigid_regime
@@ -71,3 +71,6 @@ def regime_split(rows: pd.DataFrame) -> pd.DataFrame:
     """Rows flagged and not (index ``flagged``, ``kept``): count and median ``error``."""
     g = rows.assign(group=rows["rigid"].map({True: "kept", False: "flagged"}))
     return g.groupby("group")["error"].agg(["size", "median"]).rename(columns={"size": "rows"})
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

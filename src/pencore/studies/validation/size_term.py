@@ -42,7 +42,7 @@ import numpy as np
 import pandas as pd
 
 from pencore.closedform import depth
-from pencore.errors import InputError, PlausibilityWarning
+from pencore.errors import InputError, PlausibilityWarning, hint_keywords
 from pencore.inputs.laws import CRATERS, S_MODELS, concrete_law, size_term_constants
 from pencore.measured.shots import read_body_shot_table
 from pencore.studies.validation.bodies import body_projectile
@@ -223,3 +223,6 @@ if __name__ == "__main__":  # pragma: no cover - prints the constants the file s
             f"{fit.rms_log_factor:.4f}, rms_log_factor_without: "
             f"{fit.rms_log_factor_without:.4f}}}"
         )
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint
