@@ -22,11 +22,19 @@ azimuth drawn at random. The statistics come out of
 # ``min``/``max`` (a truncated normal). All draws come from one seeded generator, and
 # sample ``i`` is the same however the samples are split into chunks.
 
+import warnings
+
 import matplotlib.pyplot as plt
 import numpy as np
 
+from pencore.errors import RigidRegimeWarning
 from pencore.search.critical import vcr
 from pencore.studies.ensemble import gather, run_chunk, sample_conditions
+
+# The fastest samples put more stress on the nose tip of #2 than pencore's
+# declared rigid-regime bound; the paper treats the body as rigid, and so does this
+# example (without the next line each such run says so once).
+warnings.simplefilter("ignore", RigidRegimeWarning)
 
 case = {
     "name": "gallery_p2_soil",

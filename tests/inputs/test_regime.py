@@ -161,14 +161,23 @@ def test_the_guide_states_the_criterion():
     assert f"one rigid rod ({only['striking_velocity_m_s']} m/s) deformed too" in page
 
 
-def test_a_search_warns_at_most_once():
-    # a 3 mm aluminium plate: the scan up to 3000 m/s runs many speeds outside the regime
+def test_a_search_judges_its_answer_not_its_bracket():
+    # the scans up to 3000 m/s run many speeds outside the regime: only an answer outside
+    # it warns, once (pencore.search.regime)
     al = pencore.get_target("aluminium").medium
-    plate = pencore.Target("plate", (pencore.Layer(al, 0.003),))
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        pencore.ballistic_limit(rod(), plate, lo=100.0, hi=3000.0, tol=50.0)
-    assert [c.category for c in caught].count(RigidRegimeWarning) == 1
+
+    def caught(thickness: float):
+        plate = pencore.Target("plate", (pencore.Layer(al, thickness),))
+        with warnings.catch_warnings(record=True) as c:
+            warnings.simplefilter("always")
+            r = pencore.ballistic_limit(rod(), plate, lo=100.0, hi=3000.0, tol=50.0)
+        return r, [w for w in c if w.category is RigidRegimeWarning]
+
+    r, w = caught(0.03)  # v_bl about 400 m/s: inside
+    assert r.hi < 500.0 and w == []
+    r, w = caught(0.4)  # v_bl about 1660 m/s: outside (1353 m/s for this rod)
+    assert r.hi > 1353.0 and len(w) == 1
+    assert str(w[0].message).startswith(f"rigid regime: at {r.hi:g} m/s")
 
 
 def test_the_command_line_takes_the_strength_and_warns_in_one_line(capsys):

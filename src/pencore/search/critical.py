@@ -36,6 +36,7 @@ from pencore.inputs.gate import brief
 from pencore.inputs.limits import as_float, number
 from pencore.inputs.numerics import keywords_checked
 from pencore.run.impact import prepare, run_impact, simulate
+from pencore.search.regime import quiet, warn_at_answer
 from pencore.search.threshold import (
     DEFAULT_SCAN,
     FIXED_BY_SEARCH,
@@ -146,12 +147,13 @@ def vcr(
     """
     check_search_args(lo, hi, tol, max_iter, scan, "velocity")
     numerics, overrides, sim = split_search_kwargs(dict(simulate_kwargs), FIXED_BY_SEARCH)
-    pr = prepare(projectile, target, numerics, **overrides)
+    pr = quiet(prepare(projectile, target, numerics, **overrides))
 
     def verdict(v: float) -> bool:
         return _turns_back(pr, sim, v, obliquity, yaw, omega)
 
-    return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="Vcr")
+    result = find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="Vcr")
+    return warn_at_answer(pr, result)
 
 
 @keywords_checked
@@ -311,7 +313,7 @@ def vci(
         raise InputError(f"fraction (of the impact speed) must be in (0, 1], got {brief(fraction)}")
     obl, yaw_sim = normal_impact_angles(yaw, convention)
     numerics, overrides, sim = split_search_kwargs(dict(simulate_kwargs), FIXED_BY_SEARCH)
-    pr = prepare(projectile, target, numerics, **overrides)
+    pr = quiet(prepare(projectile, target, numerics, **overrides))
 
     runs = {} if shared_runs is None else shared_runs
 
@@ -334,7 +336,8 @@ def vci(
         rev, dev = runs[v]
         return rev or bool(dev > threshold_deg)
 
-    return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="Vci")
+    result = find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="Vci")
+    return warn_at_answer(pr, result)
 
 
 hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

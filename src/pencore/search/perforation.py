@@ -37,6 +37,7 @@ from pencore.inputs.limits import as_float, plausible
 from pencore.inputs.numerics import keywords_checked
 from pencore.io.runs import check_run
 from pencore.run.impact import prepare, run_impact
+from pencore.search.regime import quiet, warn_at_answer
 from pencore.search.threshold import (
     DEFAULT_SCAN,
     FIXED_BY_SEARCH,
@@ -178,7 +179,7 @@ def ballistic_limit(
     """
     check_search_args(lo, hi, tol, max_iter, scan, "velocity")
     numerics, overrides, sim = split_search_kwargs(dict(simulate_kwargs), FIXED_BY_SEARCH)
-    pr = prepare(projectile, target, numerics, **overrides)
+    pr = quiet(prepare(projectile, target, numerics, **overrides))
     if not pr.target.finite:
         raise InputError(
             f"target {pr.target.name!r} is semi-infinite: the ballistic limit needs a "
@@ -193,7 +194,8 @@ def ballistic_limit(
         run = run_impact(pr.projectile, pr.target, v, obliquity, yaw, omega, prepared=pr, **sim)
         return run.outcome == "perforated"
 
-    return find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="v_bl")
+    result = find_threshold(verdict, lo, hi, tol, max_iter=max_iter, scan=scan, name="v_bl")
+    return warn_at_answer(pr, result)
 
 
 def recht_ipson(v: np.ndarray | float, v_bl: float, a: float = 1.0, p: float = 2.0) -> np.ndarray:
