@@ -118,6 +118,7 @@ def plot_run(
         f"({a.get('outcome', '')})",
         fontsize=10,
     )
-    if path is not None:
-        save_figure(fig, path)
+    if path is not None:  # never onto the file the Dataset was read from
+        source = ds.encoding.get("source")
+        save_figure(fig, path, protect=[source] if isinstance(source, str) else [])
     return fig
