@@ -767,6 +767,19 @@ def test_an_interrupted_command_says_what_is_on_disk(interrupt, capsys, tmp_path
     assert sorted(os.listdir(tmp_path)) == ["t.nc"]
 
 
+def test_a_table_of_too_many_searches_is_refused_before_any_run(capsys, tmp_path, monkeypatch):
+    from pencore.studies.common import MAX_SEARCHES
+
+    monkeypatch.chdir(tmp_path)
+    thicknesses = [f"{0.001 * (k + 1):g}" for k in range(200)]
+    obliquities = [str(k) for k in range(-44, 45)]
+    argv = ["ballistic-table", "--projectile", "p2", "--medium", "aluminium", "--thicknesses",
+            *thicknesses, "--obliquities", *obliquities, "--out", "t.csv"]  # fmt: skip
+    status, line = _cli(argv, capsys, tmp_path)
+    assert status == 2
+    assert f"200 x 89 = 17800 searches; at most {MAX_SEARCHES} are allowed" in line
+
+
 # ------------------------------------------------------------ search arguments
 
 SEARCHES = {

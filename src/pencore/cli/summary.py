@@ -62,8 +62,9 @@ NOT_FOUND = 3
 #: The exit statuses, for the help texts.
 EXIT_NOTE = (
     f"Exit status: 0 threshold found, {NOT_FOUND} no threshold in the range (the verdict "
-    "is the same at both ends, or the bracket did not narrow to --tol; the summary and "
-    "files are still written), 2 bad input, 1 solver or write failure."
+    "is the same at both ends, the bracket did not narrow to --tol, or a run could not "
+    "finish, status solver_error; the summary and files are still written, a table with "
+    "every other cell), 2 bad input, 1 write failure."
 )
 
 
