@@ -780,6 +780,98 @@ def test_a_table_of_too_many_searches_is_refused_before_any_run(capsys, tmp_path
     assert f"200 x 89 = 17800 searches; at most {MAX_SEARCHES} are allowed" in line
 
 
+# ------------------------------------------------------------ plots check their Dataset
+
+
+def _plot_names() -> list[str]:
+    import pencore.plotting
+
+    return sorted(n for n in pencore.plotting.__all__ if n.startswith("plot_"))
+
+
+def _datasets() -> dict[str, object]:
+    from pencore.search.history import search_dataset
+    from pencore.search.threshold import find_threshold
+
+    run = pencore.simulate("p2", "soil", 300.0)
+    search = search_dataset(find_threshold(lambda v: v >= 300.0, 100.0, 900.0, 50.0), "vcr",
+                            "m s-1", "critical reverse velocity")  # fmt: skip
+    return {
+        "a-number": 42,
+        "a-path": "run.nc",
+        "an-empty-dataset": xr.Dataset(),
+        "a-run": run,
+        "a-search": search,
+        "an-empty-run": run.isel(time=slice(0, 0)),
+    }
+
+
+@pytest.mark.parametrize("name", _plot_names())
+def test_every_plot_checks_its_dataset(name):
+    # a Dataset of another kind, an empty one, or no Dataset: one InputError line each
+    import pencore.plotting
+
+    plot = getattr(pencore.plotting, name)
+    for kind, ds in _datasets().items():
+        if (name, kind) in (("plot_run", "a-run"), ("plot_search", "a-search")):
+            continue  # its own kind
+        with pytest.raises(InputError) as info:
+            plot(ds)
+        text = str(info.value)
+        assert "\n" not in text and name in text and len(text) < MAX_LINE, (kind, text)
+
+
+TAMPERED = {
+    "plot_run-empty": ("plot_run", lambda run, s, rv: run.isel(time=slice(0, 0)), "no point"),
+    "plot_run-text-speed": (
+        "plot_run", lambda run, s, rv: run.assign(speed=run.speed.astype(str)), "plot_run"
+    ),
+    "plot_search-quantity-renamed": (
+        "plot_search", lambda run, s, rv: s.assign_attrs(quantity="v_bl"), "lacks"
+    ),
+    "plot_search-no-status": (
+        "plot_search", lambda run, s, rv: s.drop_attrs(deep=False), "lacks"
+    ),
+    "plot_residual_velocity-text-fit": (
+        "plot_residual_velocity",
+        lambda run, s, rv: rv.assign_attrs(recht_ipson_a="one"),
+        "must be a number",
+    ),
+    "plot_residual_velocity-no-fit": (
+        "plot_residual_velocity",
+        lambda run, s, rv: rv.drop_attrs(deep=False),
+        "lacks the attribute(s) recht_ipson_a",
+    ),
+    "plot_residual_velocity-no-points": (
+        "plot_residual_velocity", lambda run, s, rv: rv.isel(velocity=slice(0, 0)), "no point"
+    ),
+}  # fmt: skip
+
+
+@pytest.mark.parametrize("case", list(TAMPERED))
+def test_a_tampered_dataset_is_one_line(case):
+    import pencore.plotting
+    from pencore.studies.sweeps import residual_curve
+
+    name, edit, words = TAMPERED[case]
+    data = _datasets()
+    plate = {"name": "plate", "layers": [{"medium": "aluminium", "thickness": 0.05}]}
+    with pytest.warns(pencore.PlausibilityWarning):
+        rv = residual_curve("p2", plate, [500.0, 900.0])
+    with pytest.raises(InputError) as info:
+        getattr(pencore.plotting, name)(edit(data["a-run"], data["a-search"], rv))
+    assert words in str(info.value) and "\n" not in str(info.value), str(info.value)
+
+
+@pytest.mark.parametrize("path", ["run.jpg", "folder", "folder/"])
+def test_plot_run_to_a_bad_path_is_one_line(path, tmp_path):
+    (tmp_path / "folder").mkdir()
+    with pytest.raises(pencore.WriteError) as info:
+        pencore.plot_run(pencore.simulate("p2", "soil", 300.0), path=str(tmp_path / path))
+    assert "\n" not in str(info.value)
+    assert sorted(os.listdir(tmp_path)) == ["folder"]
+
+
 # ------------------------------------------------------------ search arguments
 
 SEARCHES = {

@@ -17,6 +17,7 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 from pencore.errors import InputError
+from pencore.io.runs import check_run
 from pencore.plotting.style import _c, _pname, new_figure, save_figure, styled
 
 __all__ = ["plot_run", "AGAINST"]
@@ -70,6 +71,7 @@ def plot_run(
             "plot_run takes one trajectory of pencore.simulate (variables tip_x, tip_y, "
             "deviation, speed on 'time'); a study's dataset has its own plot_* function"
         )
+    check_run(ds, "plot_run", ("time", *_NEEDED), nonempty=("time",), numeric=True)  # an empty run
     if against not in AGAINST:
         raise InputError(f"against must be one of {', '.join(AGAINST)}, got {against!r}")
     fig = new_figure(9.0, 6.4)

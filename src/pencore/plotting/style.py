@@ -48,16 +48,41 @@ STYLE: dict[str, Any] = {
 
 
 def styled(plot: Callable[..., Figure]) -> Callable[..., Figure]:
-    """Decorator: run a ``plot_*`` function inside ``matplotlib.rc_context(STYLE)``.
+    """Decorator of every ``plot_*`` function: check its Dataset, and run it inside
+    ``matplotlib.rc_context(STYLE)``.
 
     Artists read rcParams when they are created, so the style has to be active while the
-    figure is built, not only when it is saved.
+    figure is built, not only when it is saved. The first argument must be an
+    :class:`xarray.Dataset` (:func:`pencore.io.runs.check_run`); each function checks
+    the variables and attributes it reads. A Dataset of another kind or a tampered one
+    that gets past those checks, and so fails while it is drawn (a missing name, a value
+    of the wrong kind, an empty axis), is one :class:`~pencore.InputError` line naming
+    the function and the failure, never a traceback from deep inside xarray or matplotlib.
     """
+    import inspect
+
+    signature = inspect.signature(plot)
+    name = plot.__name__
 
     @functools.wraps(plot)
     def wrapper(*args: Any, **kwargs: Any) -> Figure:
-        with matplotlib.rc_context(STYLE):
-            return plot(*args, **kwargs)
+        from pencore.errors import InputError
+        from pencore.inputs.gate import brief
+        from pencore.io.runs import check_run
+
+        bound = signature.bind(*args, **kwargs)  # a wrong argument is Python's own TypeError
+        first = next(iter(bound.arguments.values()), None)
+        check_run(first, name, made_by="the pencore study or run it draws")
+        try:
+            with matplotlib.rc_context(STYLE):
+                return plot(*args, **kwargs)
+        except InputError:
+            raise
+        except (KeyError, ValueError, TypeError, IndexError, ZeroDivisionError) as exc:
+            raise InputError(
+                f"{name} cannot draw this Dataset ({type(exc).__name__}: {brief(str(exc))}): "
+                f"is it the Dataset {name} takes, unedited? (see help(pencore.plotting.{name}))"
+            ) from None
 
     return wrapper
 
