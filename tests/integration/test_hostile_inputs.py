@@ -1142,7 +1142,17 @@ BAD_CONFIG = [
     ("validation.fig5.cases.0.v_min", 1500.0, "v_min"),
     ("validation.fig5.cases.2.v_min", 5000.0, "misses"),
     ("validation.fig5.cases.0.v_max", -10.0, "v_max"),
-]
+    # every key that names a thing: lists of targets, data tables, shot sets
+    ("validation.measurements.1.targets", ["aluminium", "aluminum"], "unknown target"),
+    ("validation.measurements.1.csv", "config/no_such_shots.csv", "cannot read"),
+    ("validation.fig5.body_shots",
+     {"config/concrete_ogive_shots.csv": {"forrestal1996_d12.9_crh3_fc13.6": "grout_crh3"}},
+     "no set 'forrestal1996_d12.9_crh3_fc13.6' in"),
+    ("validation.fig5.body_shots",
+     {"config/concrete_ogive_shots.csv": {"forrestal1996_d12.9_crh3_fc13.5": "grout_crh9"}},
+     "unknown projectile"),
+    ("validation.fig5.body_shots", {"config/no_such.csv": {"a": "grout_crh3"}}, "cannot read"),
+]  # fmt: skip
 
 
 @pytest.mark.parametrize("path, value, word", BAD_CONFIG, ids=lambda x: str(x)[:40])
@@ -1159,6 +1169,29 @@ def test_workflow_config_refused_at_parse_time(path, value, word):
     assert "\n" not in text
     _check_line(text)
     assert word in text, text
+
+
+@pytest.mark.parametrize("column, name", [("projectile", "al_ogive_var4430"),
+                                          ("target", "aluminum")])  # fmt: skip
+def test_a_measurement_table_row_naming_an_unknown_thing_is_refused(column, name, tmp_path):
+    # a measurement table's rows may name their projectile and target: looked up at parse
+    from pencore.errors import ConfigError
+    from pencore.workflowconfig.config_check import check_config
+
+    table = tmp_path / "shots.csv"
+    table.write_text(
+        "# a measured table\n"
+        "test,velocity_m_s,obliquity_deg,yaw_deg,measured_depth_m,projectile,target,source\n"
+        "1,500,0,0,0.1,al_ogive_var4340,aluminium,a source\n"
+        f"2,600,0,0,0.1,{name if column == 'projectile' else 'al_ogive_var4340'},"
+        f"{name if column == 'target' else 'aluminium'},a source\n"
+    )
+    cfg = _edit(_config(), "validation.measurements.0.csv", str(table))
+    with pytest.raises(ConfigError) as info:
+        check_config(cfg, REPO)
+    text = str(info.value)
+    assert f"validation.measurements[0].csv (row 2, column {column})" in text, text
+    assert f"unknown {column}" in text and "\n" not in text, text
 
 
 def test_shipped_workflow_configs_pass():

@@ -125,6 +125,13 @@ def test_schema_errors_are_one_short_line(path, value, needles):
          "config section4.fig8.obliquity_deg: obliquity 95.0 deg"),
         ("section4:\n  fig8:\n    obliquty_deg: 30\n",
          "config section4.fig8.obliquty_deg: unknown key; did you mean 'obliquity_deg'?"),
+        # keys that name a thing: a target of a measurement set, a shot set of Fig. 5
+        ("validation:\n  measurements:\n    - {name: al, csv: config/aluminium_ogive_shots.csv,"
+         " targets: [aluminum]}\n",
+         "config validation.measurements[0].targets[0]: unknown target 'aluminum'"),
+        ("validation:\n  fig5:\n    body_shots:\n      config/concrete_ogive_shots.csv:\n"
+         "        forrestal1996_d12.9_crh3_fc13: grout_crh3\n",
+         "no set 'forrestal1996_d12.9_crh3_fc13' in 'config/concrete_ogive_shots.csv'"),
     ],
 )  # fmt: skip
 def test_snakemake_stops_at_parse_time_with_a_short_message(tmp_path, text, needle):
