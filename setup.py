@@ -35,7 +35,6 @@ from pathlib import Path
 from setuptools import setup
 from setuptools.command.bdist_wheel import bdist_wheel
 from setuptools.command.build_py import build_py
-from setuptools.errors import ExecError
 
 ROOT = Path(__file__).resolve().parent
 SRC = ROOT / "src"
@@ -72,6 +71,16 @@ def _say(line: str) -> None:
     print(line, flush=True)
 
 
+def _stop(message: str) -> None:
+    """Stop the build with ``error: <message>`` on stderr and exit status 1.
+
+    A ``SystemExit``, not an ``Exception``: setuptools' editable install runs
+    ``build_py`` through ``editable_wheel._safely_run``, which turns any ``Exception`` into
+    a deprecation warning and reports success (a package without kernels, the error seen
+    only with ``-v``); a ``SystemExit`` passes through it, and pip and uv show the line."""
+    raise SystemExit(f"error: {message}")
+
+
 def compile_kernels(out: Path) -> None:
     """Put the kernels for the portable target into ``out``: copied from the build cache
     (:mod:`pencore.kernels.buildcache`) when an earlier build compiled them for the same
@@ -79,9 +88,9 @@ def compile_kernels(out: Path) -> None:
 
     Raises
     ------
-    setuptools.errors.ExecError
-        The kernels could not be compiled: one line naming the cause (setuptools prints
-        it as ``error: ...`` and the build stops).
+    SystemExit
+        The kernels could not be compiled: ``error: <one line naming the cause>``, and the
+        build stops (:func:`_stop`).
     """
     buildcache = _load_buildcache()
     out = out.resolve()
@@ -101,7 +110,7 @@ def compile_kernels(out: Path) -> None:
     if info.returncode != 0:
         sys.stderr.write(info.stderr)
         last = (info.stderr.strip().splitlines() or ["no message"])[-1][:200]
-        raise ExecError(NOT_COMPILED.format(why=f"the solver does not import: {last}"))
+        _stop(NOT_COMPILED.format(why=f"the solver does not import: {last}"))
     record = json.loads(info.stdout)
 
     def compile_into(tmp: Path) -> float | None:
@@ -114,7 +123,7 @@ def compile_kernels(out: Path) -> None:
     root, no_root = buildcache.resolve_root()
     done = buildcache.provide_kernels(out, record, compile_into, root, say=_say, no_root=no_root)
     if done is None:
-        raise ExecError(NOT_COMPILED.format(why="the warm-up run failed, see above"))
+        _stop(NOT_COMPILED.format(why="the warm-up run failed, see above"))
     if done["build"] == "compiled":
         _say(
             f"pencore build: numba kernels compiled for {record['target']} "

@@ -397,3 +397,54 @@ def test_an_entry_that_raises_while_it_is_checked_means_compile(tmp_path, monkey
     done, said = said_by(tmp_path, tmp_path / "cache")
     assert done["build"] == "compiled"
     assert any("cannot be used (RuntimeError: something no check foresaw)" in x for x in said)
+
+
+def _setup_module(monkeypatch):
+    """setup.py's functions, without running setup()."""
+    import importlib
+    import runpy
+    import subprocess
+    import sys
+    import types
+
+    import setuptools
+
+    monkeypatch.setattr(setuptools, "setup", lambda **kwargs: None)
+    try:  # setuptools >= 70 (the build environment's); older ones: a stand-in
+        importlib.import_module("setuptools.command.bdist_wheel")
+    except ImportError:
+        stub = types.ModuleType("setuptools.command.bdist_wheel")
+        stub.bdist_wheel = type("bdist_wheel", (), {})
+        monkeypatch.setitem(sys.modules, "setuptools.command.bdist_wheel", stub)
+    ns = runpy.run_path(str(Path(buildcache.__file__).parents[3] / "setup.py"))
+    return ns, subprocess
+
+
+@pytest.mark.parametrize("failure", ["no-solver", "warm-up-fails"])
+def test_a_build_that_fails_stops_the_install_in_one_line(failure, tmp_path, monkeypatch):
+    # a SystemExit: setuptools' editable install swallows any Exception of build_py and
+    # reports success without kernels
+    import subprocess
+
+    ns, _ = _setup_module(monkeypatch)
+    real_run = subprocess.run
+
+    def run(cmd, *args, **kwargs):
+        if failure == "no-solver" and "build_info" in cmd[-1]:
+            return subprocess.CompletedProcess(cmd, 1, "", "ModuleNotFoundError: numba\n")
+        if failure == "warm-up-fails" and "pencore.warmup" in cmd[-1]:
+            return subprocess.CompletedProcess(cmd, 1)
+        return real_run(cmd, *args, **kwargs)
+
+    monkeypatch.setattr(subprocess, "run", run)
+    monkeypatch.setenv(buildcache.CACHE_ENV, "off")
+    with pytest.raises(SystemExit) as info:
+        ns["compile_kernels"](tmp_path / "compiled")
+    assert not isinstance(info.value, Exception)
+    text = str(info.value.code)
+    assert text.startswith("error: pencore build: the numba kernels could not be compiled (")
+    assert "PENCORE_SKIP_KERNELS=1" in text and "\n" not in text
+    word = "the solver does not import: ModuleNotFoundError: numba" if failure == "no-solver" \
+        else "the warm-up run failed"  # fmt: skip
+    assert word in text
+    assert not (tmp_path / "compiled").exists()
