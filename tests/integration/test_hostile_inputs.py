@@ -1152,6 +1152,9 @@ BAD_CONFIG = [
      {"config/concrete_ogive_shots.csv": {"forrestal1996_d12.9_crh3_fc13.5": "grout_crh9"}},
      "unknown projectile"),
     ("validation.fig5.body_shots", {"config/no_such.csv": {"a": "grout_crh3"}}, "cannot read"),
+    ("validation.fig5.shots", ["config/aluminium_ogive_shots.csv", "config/typo.csv"],
+     "validation.fig5.shots[1]: cannot read"),
+    ("near_surface.csv", "config/oblique_ballistic_limit.csv", "near_surface.csv: cannot read"),
 ]  # fmt: skip
 
 

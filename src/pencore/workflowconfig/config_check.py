@@ -28,7 +28,7 @@ the ranges are the data :data:`KEY_RULES`, :data:`GRID_POINTS` and :data:`GRID_S
   existing YAML file (read through the input gate), and so is every one a measurement
   table's rows name (its columns :data:`NAMING_COLUMNS`); every set of a Fig. 5 body shot
   table (``validation.fig5.body_shots``) is in its file, and the projectile it is drawn
-  with is known;
+  with is known; every data table named (the keys :data:`TABLE_KEYS`) is a readable table;
 * layer thicknesses (``thickness*_m``) are finite and > 0 (``LIMITS["thickness"]``);
 * search scans (``scan_points``) are whole numbers in ``[2, MAX_SCAN]``;
 * a case's speed window ``[v_min, v_max]`` (m/s) has ``v_min < v_max`` and meets its
@@ -67,6 +67,7 @@ __all__ = [
     "MAX_GRID",
     "NAMING_KEYS",
     "NAMING_COLUMNS",
+    "TABLE_KEYS",
     "KeyRule",
     "check_config",
     "one_line_warnings",
@@ -277,6 +278,10 @@ def _check_leaf(path: str, key: str, value: Any) -> None:
         except InputError as exc:
             _fail(path, str(exc))
     _warn_implausible(path, key, value, nums)
+    if key in TABLE_KEYS and value is not None:  # data tables: readable, a table
+        for i, name in enumerate([value] if isinstance(value, str) else value):
+            if isinstance(name, str):
+                _csv_rows(name, path if isinstance(value, str) else f"{path}[{i}]")
     kind = NAMING_KEYS.get(key)
     if kind is not None and isinstance(value, str):
         _check_name(path, kind, value)
@@ -301,6 +306,10 @@ NAMING_KEYS = {
     "medium": "medium",
     "media": "medium",
 }
+
+#: Keys whose value names a data table (a CSV file, or a list of them): each is read
+#: through the input gate when the configuration is checked.
+TABLE_KEYS = ("csv", "shots")
 
 #: Columns of a measurement table (``validation.measurements[].csv``) that name a library
 #: projectile or target for their row.
