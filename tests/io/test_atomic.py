@@ -233,3 +233,24 @@ def test_every_writer_goes_through_the_output_gate():
             if raw.search(code):
                 found.append(f"{rel}:{n}: {line.strip()}")
     assert found == [], "writes around the output gate:\n" + "\n".join(found)
+
+
+def test_a_call_protects_what_it_read_but_what_it_is_meant_to_rewrite(tmp_path):
+    from pencore.io import outputs
+
+    data = tmp_path / "geometry.yaml"
+    data.write_text("diameter_m: 1.0\n")
+    other = tmp_path / "other.yaml"
+    other.write_text("x: 1\n")
+    with outputs.output_call():
+        outputs.note_input(data)
+        outputs.note_input(other)
+        with pytest.raises(WriteError, match="input of this run"):
+            outputs.check_destination(data, outputs.YAML_SUFFIXES)
+        outputs.allow_rewrite(data)  # fit-table3 --write onto the shipped geometry
+        outputs.check_destination(data, outputs.YAML_SUFFIXES)
+        with pytest.raises(WriteError, match="input of this run"):
+            outputs.check_destination(other, outputs.YAML_SUFFIXES)
+        with pytest.raises(WriteError, match="input of this run"):  # an explicit protect wins
+            outputs.check_destination(data, outputs.YAML_SUFFIXES, protect=[data])
+    outputs.check_destination(other, outputs.YAML_SUFFIXES)  # outside a call: nothing kept

@@ -47,6 +47,7 @@ __all__ = [
     "current_call",
     "note_input",
     "note_written",
+    "allow_rewrite",
     "written_files",
     "interrupted_message",
     "check_destination",
@@ -114,11 +115,13 @@ def _quote(path: str | os.PathLike[str]) -> str:
 
 @dataclass
 class Call:
-    """One call's files: those read through the input gate (``inputs``) and those
-    written completely (``written``), as paths in the order seen."""
+    """One call's files: those read through the input gate (``inputs``), those written
+    completely (``written``), as paths in the order seen, and the inputs the call is
+    meant to rewrite (``rewrites``, :func:`allow_rewrite`)."""
 
     inputs: list[str] = field(default_factory=list)
     written: list[str] = field(default_factory=list)
+    rewrites: list[str] = field(default_factory=list)
 
 
 _CALL: contextvars.ContextVar[Call | None] = contextvars.ContextVar("pencore_call", default=None)
@@ -162,6 +165,15 @@ def note_input(path: str | os.PathLike[str]) -> None:
         text = os.fspath(path)
         if isinstance(text, str) and text not in call.inputs:
             call.inputs.append(text)
+
+
+def allow_rewrite(path: str | os.PathLike[str]) -> None:
+    """Let the open call replace ``path`` although it read it: a command whose purpose is
+    to regenerate a data file from what it computes (``pencore fit-table3 --write`` onto
+    the shipped Table-3 geometry, which every run reads). Nothing outside a call."""
+    call = _CALL.get()
+    if call is not None:
+        call.rewrites.append(os.fspath(path))  # type: ignore[arg-type]
 
 
 def note_written(path: str | os.PathLike[str]) -> None:
@@ -229,12 +241,17 @@ def check_replaceable(
             errno.EEXIST,
         )
     call = _CALL.get()
+    rewrites = set()
+    for r in call.rewrites if call is not None else ():
+        with contextlib.suppress(OSError, ValueError):
+            rewrites.add((os.stat(r).st_dev, os.stat(r).st_ino))
     for other in [*protect, *(call.inputs if call is not None else ())]:
         try:
             o = os.stat(other)
         except (OSError, ValueError):
             continue
-        if (o.st_dev, o.st_ino) == (st.st_dev, st.st_ino):
+        same = (o.st_dev, o.st_ino) == (st.st_dev, st.st_ino)
+        if same and not (other not in protect and (o.st_dev, o.st_ino) in rewrites):
             raise WriteError(
                 f"cannot write {_quote(path)}: it is an input of this run "
                 f"({_quote(other)}); choose another output name",
