@@ -64,7 +64,7 @@ EXIT_NOTE = (
     f"Exit status: 0 threshold found, {NOT_FOUND} no threshold in the range (the verdict "
     "is the same at both ends, the bracket did not narrow to --tol, or a run could not "
     "finish, status solver_error; the summary and files are still written, a table with "
-    "every other cell), 2 bad input, 1 write failure."
+    "every other cell), 2 bad input, 1 solver or write failure."
 )
 
 
