@@ -116,3 +116,16 @@ def test_the_axis_bound_is_the_workflow_grid_bound():
     from pencore.workflowconfig.config_check import MAX_GRID
 
     assert MAX_AXIS_POINTS == MAX_GRID
+
+
+def test_a_fit_that_fails_after_the_runs_is_nan_with_its_reason(monkeypatch):
+    import pencore.studies.sweeps as sweeps
+
+    def fails(v, vr, v_bl=None):
+        raise ValueError("x0 is infeasible")
+
+    monkeypatch.setattr(sweeps, "fit_recht_ipson", fails)
+    ds = residual_curve("p2", PLATE, [150.0, 250.0, 350.0, 450.0])
+    assert (ds.residual_velocity.values > 0).all()  # the runs are kept
+    assert ds.attrs["recht_ipson_status"] == "not fitted: x0 is infeasible"
+    assert np.isnan(ds.recht_ipson.values).all() and np.isnan(ds.attrs["v_bl_m_s"])

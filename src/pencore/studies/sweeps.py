@@ -166,8 +166,11 @@ def residual_curve(
     done = np.isfinite(vr)  # the runs that finished
     n_hit = int((vr[done] > 0).sum())
     if n_hit >= 3:
-        fit = fit_recht_ipson(v[done], vr[done])
-        status = "fitted"
+        try:
+            fit = fit_recht_ipson(v[done], vr[done])
+            status = "fitted"
+        except (ValueError, np.linalg.LinAlgError) as exc:  # the runs are kept all the same
+            status = f"not fitted: {' '.join(str(exc).split())}"
     else:  # no fit: NaN parameters and curve, and why
         status = f"not fitted: {n_hit} of {v.size} runs perforate, 3 are needed"
     curve = fitted_curve(v, fit)
