@@ -4,8 +4,12 @@ Doors: the Python API (``pencore.simulate``, ``pencore.prepare``, the searches),
 files (``--projectile FILE`` / ``--target FILE``), the command line, and the output
 paths. Classes: integers no float can hold, numbers written as text in any notation but
 plain decimal, hostile files (alias bombs, deep nesting, repeated keys, FIFOs, devices,
-directories, oversized files), writes that would replace a non-regular file or the
-run's own input, search arguments, standard output that cannot be written, ``NUMBA_*``
+directories, oversized files), writes that would replace a non-regular file, a
+read-only file or the run's own input (every --out, --plot and --write of every command
+and the Python writers, through the one output gate), an interrupted command saying what
+it wrote, plots given a Dataset of another kind or an edited one, grids of searches
+larger than the bound, workflow config keys naming a target, a set or a table that does
+not exist, search arguments, standard output that cannot be written, ``NUMBA_*``
 settings numba refuses (the damaged and unwritable numba caches are in
 ``tests/kernels/test_cache.py``). Every case
 asserts the exit status (or exception), exactly one line, no traceback, that the line
