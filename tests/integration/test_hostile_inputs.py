@@ -717,18 +717,18 @@ def test_python_writers_go_through_the_output_gate(case, tmp_path):
         (tmp_path / name).write_text("keep me\n")
         (tmp_path / name).chmod(0o444)
     call, words = PY_WRITERS[case]
-    if case == "write_netcdf-onto-its-source":
-        with pencore.io.outputs.output_call():  # also outside a call: the Dataset's source
-            pass
-    before = {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()}
-    if case == "write_netcdf-onto-its-source":
-        before = None
-    with pytest.raises(pencore.WriteError) as info:
-        call(tmp_path)
+    if case == "write_netcdf-onto-its-source":  # outside any call: the Dataset's own file
+        ds, path = _read_back(tmp_path)
+        before = {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()}
+        with pytest.raises(pencore.WriteError) as info:
+            pencore.write_netcdf(ds, path, config_slice={}, study="t")
+    else:
+        before = {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()}
+        with pytest.raises(pencore.WriteError) as info:
+            call(tmp_path)
     text = str(info.value)
     assert words in text and "\n" not in text, text
-    if before is not None:
-        assert {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()} == before
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()} == before
     assert not [p for p in tmp_path.iterdir() if "pencore-tmp" in p.name]
 
 
