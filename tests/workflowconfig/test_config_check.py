@@ -4,6 +4,7 @@ stops with one line naming the key path and the value (pencore.workflowconfig.co
 from __future__ import annotations
 
 import copy
+import shutil
 from pathlib import Path
 
 import pytest
@@ -95,6 +96,7 @@ def test_shipped_and_test_configs_pass():
 def test_header_only_table2_csv(tmp_path):
     header = (REPO / "config" / "table2.csv").read_text().splitlines()[0]
     (tmp_path / "t2.csv").write_text(header + "\n")
+    shutil.copytree(REPO / "config", tmp_path / "config")  # the other tables it names
     cfg = _set(copy.deepcopy(SHIPPED), "validation.table2.csv", "t2.csv")
     with pytest.raises(ConfigError, match=r"validation\.table2\.csv: .*no rows"):
         check_config(cfg, tmp_path)

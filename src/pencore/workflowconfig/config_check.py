@@ -439,7 +439,7 @@ def _csv_rows(path: str, where: str) -> list[dict[str, str]]:
     import csv
 
     try:
-        text = table_text(_ROOT[0] / path, where)
+        text = table_text(_ROOT[0] / path, "data table")
     except InputError as exc:
         _fail(where, str(exc))
     lines = [ln for ln in text.splitlines() if not ln.lstrip().startswith("#")]
