@@ -15,8 +15,11 @@ shows the build step's lines only with ``pip install -v``.
 
 The kernels fit the numba, Python and architecture of the build environment; anywhere
 else they are not used and the kernels compile on first use, as without them. A build
-environment that cannot run the solver (numba or a dependency missing) or
-``PENCORE_SKIP_KERNELS=1`` builds the package without them, saying so.
+whose compile fails (a build environment that cannot run the solver, numba or a
+dependency missing) stops with one line naming the cause, which pip shows without
+``-v``, instead of installing a package without kernels that says it succeeded;
+``PENCORE_SKIP_KERNELS=1`` builds the package without them on purpose, saying so. Any
+failure to use the build cache only means compiling (one line, with ``-v``).
 """
 
 from __future__ import annotations
@@ -40,8 +43,9 @@ SRC = ROOT / "src"
 _UNSET = ("NUMBA_CPU_FEATURES", "NUMBA_CACHE_DIR", "NUMBA_DISABLE_JIT", "NUMBA_OPT")
 
 NOT_COMPILED = (
-    "pencore build: the numba kernels could not be compiled here (see above); "
-    "the package is built without them and compiles them on first use"
+    "pencore build: the numba kernels could not be compiled ({why}); the build stops. "
+    "Fix the build environment, or set PENCORE_SKIP_KERNELS=1 to build the package "
+    "without them (it then compiles them on first use)"
 )
 
 BUILD_INFO = """
@@ -67,13 +71,30 @@ def _say(line: str) -> None:
     print(line, flush=True)
 
 
-def compile_kernels(out: Path) -> bool:
+def _stop(message: str) -> None:
+    """Stop the build with ``error: <message>`` on stderr and exit status 1.
+
+    A ``SystemExit``, not an ``Exception``: setuptools' editable install runs
+    ``build_py`` through ``editable_wheel._safely_run``, which turns any ``Exception`` into
+    a deprecation warning and reports success (a package without kernels, the error seen
+    only with ``-v``); a ``SystemExit`` passes through it, and pip and uv show the line."""
+    raise SystemExit(f"error: {message}")
+
+
+def compile_kernels(out: Path) -> None:
     """Put the kernels for the portable target into ``out``: copied from the build cache
     (:mod:`pencore.kernels.buildcache`) when an earlier build compiled them for the same
-    kernel stamp, numba, Python and target, else compiled (and kept there); True when
-    done."""
+    kernel stamp, numba, Python and target, else compiled (and kept there).
+
+    Raises
+    ------
+    SystemExit
+        The kernels could not be compiled: ``error: <one line naming the cause>``, and the
+        build stops (:func:`_stop`).
+    """
     buildcache = _load_buildcache()
     out = out.resolve()
+    buildcache.clear_partial(out.with_name(out.name + ".partial"))  # a stopped build's leftover
     env = {k: v for k, v in os.environ.items() if k not in _UNSET}
     env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(SRC), env.get("PYTHONPATH")]))
     env["NUMBA_CPU_NAME"] = "generic"
@@ -88,8 +109,8 @@ def compile_kernels(out: Path) -> bool:
     )
     if info.returncode != 0:
         sys.stderr.write(info.stderr)
-        print(NOT_COMPILED, file=sys.stderr)
-        return False
+        last = (info.stderr.strip().splitlines() or ["no message"])[-1][:200]
+        _stop(NOT_COMPILED.format(why=f"the solver does not import: {last}"))
     record = json.loads(info.stdout)
 
     def compile_into(tmp: Path) -> float | None:
@@ -99,16 +120,15 @@ def compile_kernels(out: Path) -> bool:
         )
         return time.perf_counter() - t0 if done.returncode == 0 else None
 
-    done = buildcache.provide_kernels(out, record, compile_into, buildcache.cache_root(), say=_say)
+    root, no_root = buildcache.resolve_root()
+    done = buildcache.provide_kernels(out, record, compile_into, root, say=_say, no_root=no_root)
     if done is None:
-        print(NOT_COMPILED, file=sys.stderr)
-        return False
+        _stop(NOT_COMPILED.format(why="the warm-up run failed, see above"))
     if done["build"] == "compiled":
         _say(
             f"pencore build: numba kernels compiled for {record['target']} "
             f"in {done['compile_s']:.0f} s"
         )
-    return True
 
 
 class build_py_with_kernels(build_py):

@@ -393,6 +393,10 @@ def numbers() -> dict[str, str]:
     out["yaml_nodes"] = f"{gate.MAX_YAML_NODES:,}".replace(",", " ")
     out["max_quote"] = str(gate.MAX_QUOTE)
     out["max_wall_s"] = _fmt(DEFAULT_MAX_WALL)
+    from pencore.studies.common import MAX_AXIS_POINTS, MAX_SEARCHES
+
+    out["max_searches"] = str(MAX_SEARCHES)
+    out["max_axis_points"] = str(MAX_AXIS_POINTS)
     from pencore.integrators.scipy_ivp import CALLS_PER_STEP
 
     out["scipy_calls_per_step"] = str(CALLS_PER_STEP)

@@ -446,7 +446,8 @@ def test_fit_table3_write_round_trips_the_shipped_file(tmp_path, capsys):
     assert new == (fit.diameter, fit.shank_length)  # written to the last digit
     assert np.allclose(new, pencore.inputs.library.shipped_table3_geometry(), rtol=0, atol=1e-10)
     capsys.readouterr()
-    assert main(["fit-table3", "--write", str(tmp_path / "no" / "g.yaml")]) == 1
+    # a folder that does not exist is bad input, refused before the fit
+    assert main(["fit-table3", "--write", str(tmp_path / "no" / "g.yaml")]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "does not exist" in err and "Traceback" not in err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["geometry.yaml"]

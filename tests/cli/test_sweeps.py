@@ -112,3 +112,43 @@ def test_depth_curve_runs_from_the_start_given(tmp_path, capsys):
     assert depth == float(ref.penetration_depth)
     touching = float(pencore.simulate("p2", "soil", 300.0).penetration_depth)
     assert depth == pytest.approx(touching, rel=1e-4)
+
+
+def test_a_sweep_whose_fit_cannot_be_made_finishes(tmp_path, capsys):
+    # both speeds are run and written; the fit is NaN with its status, exit 0
+    plate = tmp_path / "plate.yaml"
+    plate.write_text("name: plate\nlayers:\n  - medium: aluminium\n    thickness: 0.02\n")
+    out, png = tmp_path / "rv.csv", tmp_path / "rv.png"
+    argv = ["residual-velocity", "--projectile", "p2", "--target", str(plate), "--velocities",
+            "500", "900", "--out", str(out), "--plot", str(png), "--format", "json",
+            "--quiet"]  # fmt: skip
+    assert main(argv) == 0
+    s = json.loads(capsys.readouterr().out)
+    assert s["recht_ipson_status"]["value"].startswith("not fitted: 2 of 2 runs perforate")
+    assert s["v_bl_fit"]["value"] is None or np.isnan(s["v_bl_fit"]["value"])
+    frame = read_csv(out)
+    assert (frame.residual_velocity > 0).all() and frame.recht_ipson.isna().all()
+    assert png.stat().st_size > 0
+
+
+def test_a_stalled_cell_keeps_the_table_and_exits_3(tmp_path, capsys, monkeypatch):
+    import pencore.search.perforation as perforation
+    from pencore.errors import SolverError
+
+    real = perforation.run_impact
+
+    def run(projectile, target, v, obliquity, *args, **kwargs):
+        if obliquity == 7.0 and v > 400.0:
+            raise SolverError(f"step size fell below h_min at {v:g} m/s (stalled)")
+        return real(projectile, target, v, obliquity, *args, **kwargs)
+
+    monkeypatch.setattr(perforation, "run_impact", run)
+    out = tmp_path / "bt.csv"
+    argv = ["ballistic-table", "--projectile", "p2", "--medium", "aluminium", "--thicknesses",
+            "0.01", "--obliquities", "6", "7", "--tol", "20", "--out", str(out),
+            "--quiet"]  # fmt: skip
+    assert main(argv) == 3
+    frame = read_csv(out)
+    assert list(frame.status) == ["ok", "solver_error"]
+    assert np.isfinite(frame.v_bl[0]) and np.isnan(frame.v_bl[1])
+    assert "stalled" in frame.message[1]

@@ -251,3 +251,20 @@ def test_measurements_page_states_the_computed_aluminium_laws_inputs():
     page = _page("results/measurements.md")
     assert f"fitted up to {float(law['max_speed']):g} m/s" in page
     assert f"an assumed n = {law['n']:g}" in page
+
+
+def test_errors_page_lists_the_output_gates_suffixes():
+    """The output rules on the errors page name the suffixes each writer knows, as
+    pencore.io.outputs holds them."""
+    from pencore.io import outputs
+
+    text = " ".join(_page("user-guide/errors.md").split())
+    for suffixes in (
+        outputs.TABLE_SUFFIXES,
+        outputs.NETCDF_SUFFIXES,
+        outputs.FIGURE_SUFFIXES,
+        outputs.YAML_SUFFIXES,
+    ):
+        listed = [f"`{s}`" for s in suffixes]
+        words = listed[0] if len(listed) == 1 else ", ".join(listed[:-1]) + " or " + listed[-1]
+        assert words in text, words

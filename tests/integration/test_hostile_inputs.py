@@ -4,8 +4,12 @@ Doors: the Python API (``pencore.simulate``, ``pencore.prepare``, the searches),
 files (``--projectile FILE`` / ``--target FILE``), the command line, and the output
 paths. Classes: integers no float can hold, numbers written as text in any notation but
 plain decimal, hostile files (alias bombs, deep nesting, repeated keys, FIFOs, devices,
-directories, oversized files), writes that would replace a non-regular file or the
-run's own input, search arguments, standard output that cannot be written, ``NUMBA_*``
+directories, oversized files), writes that would replace a non-regular file, a
+read-only file or the run's own input (every --out, --plot and --write of every command
+and the Python writers, through the one output gate), an interrupted command saying what
+it wrote, plots given a Dataset of another kind or an edited one, grids of searches
+larger than the bound, workflow config keys naming a target, a set or a table that does
+not exist, search arguments, standard output that cannot be written, ``NUMBA_*``
 settings numba refuses (the damaged and unwritable numba caches are in
 ``tests/kernels/test_cache.py``). Every case
 asserts the exit status (or exception), exactly one line, no traceback, that the line
@@ -516,7 +520,11 @@ def _out_cases(folder: Path) -> dict[str, tuple[list[str], str, int]]:
         "out-is-hard-link-of-input": ([*base, "--out", str(folder / "link.nc")], "input", 2),
         "out-is-fifo": ([*base, "--out", str(folder / "fifo.nc")], "a FIFO", 2),
         "out-is-directory": ([*base, "--out", str(folder / "dir.nc")], "directory", 2),
-        "out-is-dev-null": ([*SIM, "--velocity", "300", "--out", "/dev/null"], ".nc", 2),
+        "out-is-dev-null": (
+            [*SIM, "--velocity", "300", "--out", "/dev/null"],
+            "character device",
+            2,
+        ),
         "out-under-a-file": (
             [*base, "--out", str(target / "x.nc")],
             f"of '{target / 'x.nc'}' is not a directory: it is a regular file",
@@ -532,8 +540,8 @@ def _out_cases(folder: Path) -> dict[str, tuple[list[str], str, int]]:
             "is not a directory: it is a FIFO",
             2,
         ),
-        "fit-table3-to-dev-null": (["fit-table3", "--write", "/dev/null"], "character device", 1),
-        "fit-table3-to-fifo": (["fit-table3", "--write", str(folder / "fifo.nc")], "FIFO", 1),
+        "fit-table3-to-dev-null": (["fit-table3", "--write", "/dev/null"], "character device", 2),
+        "fit-table3-to-fifo": (["fit-table3", "--write", str(folder / "fifo.nc")], "FIFO", 2),
     }
 
 
@@ -561,6 +569,311 @@ def test_cli_refuses_to_replace(case, capsys, tmp_path, monkeypatch):
     assert (tmp_path / "other.txt").read_text() == "kept\n"
     assert (tmp_path / "sym.nc").is_symlink() and (tmp_path / "dangling.nc").is_symlink()
     assert not [n for n in os.listdir(tmp_path) if "pencore-tmp" in n or "probe" in n]
+
+
+# ------------------------------------------------------------ the one output gate
+
+PLATE_YAML = "name: plate\nlayers:\n  - {medium: aluminium, thickness: 0.01}\n"
+
+#: Every command that writes a file, its arguments (``{P}``: the projectile file, ``{T}``:
+#: a plate target file) and the options that write, with a suffix each accepts.
+WRITERS = {
+    "simulate": (["--target", "soil", "--velocity", "300"], {"--out": ".nc", "--plot": ".png"}),
+    "ballistic-limit": (["--target", "{T}"], {"--out": ".csv", "--plot": ".pdf"}),
+    "vcr": (["--target", "concrete", "--obliquity", "30", "--lo", "200", "--hi", "900"],
+            {"--out": ".csv", "--plot": ".png"}),
+    "vci": (["--target", "soil", "--yaw", "1", "--threshold", "1"],
+            {"--out": ".nc", "--plot": ".svg"}),
+    "omega-c": (["--target", "soil", "--velocity", "300", "--hi", "100"],
+                {"--out": ".csv", "--plot": ".png"}),
+    "depth-curve": (["--target", "soil", "--velocities", "300"], {"--out": ".csv"}),
+    "residual-velocity": (["--target", "{T}", "--velocities", "300"],
+                          {"--out": ".nc", "--plot": ".png"}),
+    "ballistic-table": (["--medium", "soil", "--thicknesses", "0.1"],
+                        {"--out": ".csv", "--plot": ".png"}),
+    "fit-table3": ([], {"--write": ".yaml"}),
+}  # fmt: skip
+#: What a destination is, and the words of its refusal.
+BAD_DESTINATIONS = {
+    "input": "input of this run",
+    "read-only": "read-only (mode 0444)",
+    "trailing-slash": "names a directory",
+    "folder": "is a directory",
+    "unknown-suffix": "must end in one of",
+}
+GATE_CASES = [
+    (command, option, bad)
+    for command, (_, options) in WRITERS.items()
+    for option in options
+    for bad in BAD_DESTINATIONS
+    if not (command == "fit-table3" and bad == "input")  # it reads no file
+]
+
+
+@pytest.mark.parametrize("command, option, bad", GATE_CASES, ids=lambda x: str(x))
+def test_every_writer_goes_through_the_output_gate(command, option, bad, capsys, tmp_path,
+                                                    monkeypatch):  # fmt: skip
+    # every --out, --plot and --write of every command: refused before any run, one line,
+    # status 2, the file there untouched and nothing left beside it
+    monkeypatch.chdir(tmp_path)
+    extra, options = WRITERS[command]
+    suffix = options[option]
+    projectile = f"proj{suffix}"  # a projectile YAML file with the output's suffix
+    (tmp_path / projectile).write_text(PROJECTILE_YAML)
+    (tmp_path / "plate.yaml").write_text(PLATE_YAML)
+    (tmp_path / f"keep{suffix}").write_text("keep me\n")
+    (tmp_path / f"keep{suffix}").chmod(0o444)
+    (tmp_path / f"d{suffix}").mkdir()
+    dest = {
+        "input": projectile,
+        "read-only": f"keep{suffix}",
+        "trailing-slash": f"o{suffix}/",
+        "folder": f"d{suffix}",
+        "unknown-suffix": "o.txt" if suffix != ".txt" else "o.dat",
+    }[bad]
+    argv = [command]
+    if command != "fit-table3":
+        argv += ["--projectile", projectile]
+    argv += [a.replace("{T}", "plate.yaml") for a in extra] + [option, dest]
+    before = {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()}
+    status, line = _cli(argv, capsys, tmp_path)
+    assert status == 2, line
+    assert BAD_DESTINATIONS[bad] in line, line
+    if bad == "unknown-suffix":
+        assert ", ".join(options_suffixes(command, option)) in line, line
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()} == before
+
+
+def options_suffixes(command: str, option: str) -> tuple[str, ...]:
+    from pencore.io import outputs
+
+    if (command, option) == ("simulate", "--out"):
+        return outputs.NETCDF_SUFFIXES
+    return {
+        "--out": outputs.TABLE_SUFFIXES,
+        "--plot": outputs.FIGURE_SUFFIXES,
+        "--write": outputs.YAML_SUFFIXES,
+    }[option]
+
+
+def _read_back(tmp_path: Path) -> tuple[xr.Dataset, Path]:
+    path = tmp_path / "run.nc"
+    pencore.write_netcdf(xr.Dataset({"a": ("x", [1.0, 2.0])}), path, config_slice={}, study="t")
+    return pencore.read_netcdf(path), path
+
+
+def _figure():
+    from pencore.plotting.style import new_figure
+
+    return new_figure()
+
+
+PY_WRITERS = {
+    "write_netcdf-onto-its-source": (
+        lambda d: pencore.write_netcdf(_read_back(d)[0], d / "run.nc", config_slice={}, study="t"),
+        "input of this run",
+    ),
+    "write_netcdf-unknown-suffix": (
+        lambda d: pencore.write_netcdf(xr.Dataset(), d / "x.h5", config_slice={}, study="t"),
+        "must end in one of .nc",
+    ),
+    "write_netcdf-read-only": (
+        lambda d: pencore.write_netcdf(xr.Dataset(), d / "keep.nc", config_slice={}, study="t"),
+        "read-only",
+    ),
+    "write_netcdf-trailing-slash": (
+        lambda d: pencore.write_netcdf(xr.Dataset(), f"{d}/o.nc/", config_slice={}, study="t"),
+        "names a directory",
+    ),
+    "save_figure-unknown-suffix": (
+        lambda d: pencore.plotting.save_figure(_figure(), d / "f.jpg"),
+        "must end in one of .png, .pdf, .svg",
+    ),
+    "save_figure-read-only": (
+        lambda d: pencore.plotting.save_figure(_figure(), d / "keep.png"),
+        "read-only",
+    ),
+    "save_figure-folder": (lambda d: pencore.plotting.save_figure(_figure(), d), "directory"),
+    "save_figure-second-path-bad": (
+        # every path is checked before the first is written
+        lambda d: pencore.plotting.save_figure(_figure(), d / "new.png", d / "keep.png"),
+        "read-only",
+    ),
+    "write_table3_geometry-read-only": (
+        lambda d: pencore.inputs.library.write_table3_geometry(
+            pencore.inputs.library.table3_fit(), d / "keep.yaml"
+        ),
+        "read-only",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", list(PY_WRITERS))
+def test_python_writers_go_through_the_output_gate(case, tmp_path):
+    import pencore.inputs.library
+    import pencore.plotting
+
+    for name in ("keep.nc", "keep.png", "keep.yaml"):
+        (tmp_path / name).write_text("keep me\n")
+        (tmp_path / name).chmod(0o444)
+    call, words = PY_WRITERS[case]
+    if case == "write_netcdf-onto-its-source":  # outside any call: the Dataset's own file
+        ds, path = _read_back(tmp_path)
+        before = {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()}
+        with pytest.raises(pencore.WriteError) as info:
+            pencore.write_netcdf(ds, path, config_slice={}, study="t")
+    else:
+        before = {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()}
+        with pytest.raises(pencore.WriteError) as info:
+            call(tmp_path)
+    text = str(info.value)
+    assert words in text and "\n" not in text, text
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.is_file()} == before
+    assert not [p for p in tmp_path.iterdir() if "pencore-tmp" in p.name]
+
+
+def test_a_file_read_in_a_call_is_never_its_output(tmp_path):
+    # any file read through the input gate while a call is open is protected, whatever
+    # option or function read it
+    import pencore.io.outputs as outputs
+
+    (tmp_path / "proj.yaml").write_text(PROJECTILE_YAML)
+    ds = xr.Dataset({"a": ("x", [1.0])})
+    with outputs.output_call():
+        get_projectile(str(tmp_path / "proj.yaml"))
+        with pytest.raises(pencore.WriteError, match="input of this run"):
+            pencore.write_netcdf(ds, tmp_path / "proj.yaml", config_slice={}, study="t")
+    assert (tmp_path / "proj.yaml").read_text() == PROJECTILE_YAML
+
+
+@pytest.mark.parametrize("interrupt", ["ctrl-c", "sigterm"])
+def test_an_interrupted_command_says_what_is_on_disk(interrupt, capsys, tmp_path, monkeypatch):
+    # the table is written, then the plot is interrupted: the line names the table kept
+    import signal
+
+    import pencore.plotting.run
+
+    monkeypatch.chdir(tmp_path)
+
+    def stopped(*args, **kwargs):
+        if interrupt == "ctrl-c":
+            raise KeyboardInterrupt
+        raise SystemExit(128 + signal.SIGTERM)  # what pencore.io.atomic makes of SIGTERM
+
+    monkeypatch.setattr(pencore.plotting.run, "plot_run", stopped)
+    status = main([*SIM, "--velocity", "300", "--out", "t.nc", "--plot", "t.png"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1, err
+    word = "interrupted (Ctrl-C)" if interrupt == "ctrl-c" else "terminated (SIGTERM)"
+    assert status == (130 if interrupt == "ctrl-c" else 143)
+    assert f"{word}; written completely before it: 't.nc'; nothing else was written" in err[0]
+    assert "nothing was written" not in err[0]
+    assert sorted(os.listdir(tmp_path)) == ["t.nc"]
+
+
+def test_a_table_of_too_many_searches_is_refused_before_any_run(capsys, tmp_path, monkeypatch):
+    from pencore.studies.common import MAX_SEARCHES
+
+    monkeypatch.chdir(tmp_path)
+    thicknesses = [f"{0.001 * (k + 1):g}" for k in range(200)]
+    obliquities = [str(k) for k in range(-44, 45)]
+    argv = ["ballistic-table", "--projectile", "p2", "--medium", "aluminium", "--thicknesses",
+            *thicknesses, "--obliquities", *obliquities, "--out", "t.csv"]  # fmt: skip
+    status, line = _cli(argv, capsys, tmp_path)
+    assert status == 2
+    assert f"200 x 89 = 17800 searches; at most {MAX_SEARCHES} are allowed" in line
+
+
+# ------------------------------------------------------------ plots check their Dataset
+
+
+def _plot_names() -> list[str]:
+    import pencore.plotting
+
+    return sorted(n for n in pencore.plotting.__all__ if n.startswith("plot_"))
+
+
+def _datasets() -> dict[str, object]:
+    from pencore.search.history import search_dataset
+    from pencore.search.threshold import find_threshold
+
+    run = pencore.simulate("p2", "soil", 300.0)
+    search = search_dataset(find_threshold(lambda v: v >= 300.0, 100.0, 900.0, 50.0), "vcr",
+                            "m s-1", "critical reverse velocity")  # fmt: skip
+    return {
+        "a-number": 42,
+        "a-path": "run.nc",
+        "an-empty-dataset": xr.Dataset(),
+        "a-run": run,
+        "a-search": search,
+        "an-empty-run": run.isel(time=slice(0, 0)),
+    }
+
+
+@pytest.mark.parametrize("name", _plot_names())
+def test_every_plot_checks_its_dataset(name):
+    # a Dataset of another kind, an empty one, or no Dataset: one InputError line each
+    import pencore.plotting
+
+    plot = getattr(pencore.plotting, name)
+    for kind, ds in _datasets().items():
+        if (name, kind) in (("plot_run", "a-run"), ("plot_search", "a-search")):
+            continue  # its own kind
+        with pytest.raises(InputError) as info:
+            plot(ds)
+        text = str(info.value)
+        assert "\n" not in text and name in text and len(text) < MAX_LINE, (kind, text)
+
+
+TAMPERED = {
+    "plot_run-empty": ("plot_run", lambda run, s, rv: run.isel(time=slice(0, 0)), "no point"),
+    "plot_run-text-speed": (
+        "plot_run", lambda run, s, rv: run.assign(speed=run.speed.astype(str)), "plot_run"
+    ),
+    "plot_search-quantity-renamed": (
+        "plot_search", lambda run, s, rv: s.assign_attrs(quantity="v_bl"), "lacks"
+    ),
+    "plot_search-no-status": (
+        "plot_search", lambda run, s, rv: s.drop_attrs(deep=False), "lacks"
+    ),
+    "plot_residual_velocity-text-fit": (
+        "plot_residual_velocity",
+        lambda run, s, rv: rv.assign_attrs(recht_ipson_a="one"),
+        "must be a number",
+    ),
+    "plot_residual_velocity-no-fit": (
+        "plot_residual_velocity",
+        lambda run, s, rv: rv.drop_attrs(deep=False),
+        "lacks the attribute(s) recht_ipson_a",
+    ),
+    "plot_residual_velocity-no-points": (
+        "plot_residual_velocity", lambda run, s, rv: rv.isel(velocity=slice(0, 0)), "no point"
+    ),
+}  # fmt: skip
+
+
+@pytest.mark.parametrize("case", list(TAMPERED))
+def test_a_tampered_dataset_is_one_line(case):
+    import pencore.plotting
+    from pencore.studies.sweeps import residual_curve
+
+    name, edit, words = TAMPERED[case]
+    data = _datasets()
+    plate = {"name": "plate", "layers": [{"medium": "aluminium", "thickness": 0.05}]}
+    with pytest.warns(pencore.PlausibilityWarning):
+        rv = residual_curve("p2", plate, [500.0, 900.0])
+    with pytest.raises(InputError) as info:
+        getattr(pencore.plotting, name)(edit(data["a-run"], data["a-search"], rv))
+    assert words in str(info.value) and "\n" not in str(info.value), str(info.value)
+
+
+@pytest.mark.parametrize("path", ["run.jpg", "folder", "folder/"])
+def test_plot_run_to_a_bad_path_is_one_line(path, tmp_path):
+    (tmp_path / "folder").mkdir()
+    with pytest.raises(pencore.WriteError) as info:
+        pencore.plot_run(pencore.simulate("p2", "soil", 300.0), path=str(tmp_path / path))
+    assert "\n" not in str(info.value)
+    assert sorted(os.listdir(tmp_path)) == ["folder"]
 
 
 # ------------------------------------------------------------ search arguments
@@ -887,7 +1200,20 @@ BAD_CONFIG = [
     ("validation.fig5.cases.0.v_min", 1500.0, "v_min"),
     ("validation.fig5.cases.2.v_min", 5000.0, "misses"),
     ("validation.fig5.cases.0.v_max", -10.0, "v_max"),
-]
+    # every key that names a thing: lists of targets, data tables, shot sets
+    ("validation.measurements.1.targets", ["aluminium", "aluminum"], "unknown target"),
+    ("validation.measurements.1.csv", "config/no_such_shots.csv", "cannot read"),
+    ("validation.fig5.body_shots",
+     {"config/concrete_ogive_shots.csv": {"forrestal1996_d12.9_crh3_fc13.6": "grout_crh3"}},
+     "no set 'forrestal1996_d12.9_crh3_fc13.6' in"),
+    ("validation.fig5.body_shots",
+     {"config/concrete_ogive_shots.csv": {"forrestal1996_d12.9_crh3_fc13.5": "grout_crh9"}},
+     "unknown projectile"),
+    ("validation.fig5.body_shots", {"config/no_such.csv": {"a": "grout_crh3"}}, "cannot read"),
+    ("validation.fig5.shots", ["config/aluminium_ogive_shots.csv", "config/typo.csv"],
+     "validation.fig5.shots[1]: cannot read"),
+    ("near_surface.csv", "config/oblique_ballistic_limit.csv", "near_surface.csv: cannot read"),
+]  # fmt: skip
 
 
 @pytest.mark.parametrize("path, value, word", BAD_CONFIG, ids=lambda x: str(x)[:40])
@@ -904,6 +1230,29 @@ def test_workflow_config_refused_at_parse_time(path, value, word):
     assert "\n" not in text
     _check_line(text)
     assert word in text, text
+
+
+@pytest.mark.parametrize("column, name", [("projectile", "al_ogive_var4430"),
+                                          ("target", "aluminum")])  # fmt: skip
+def test_a_measurement_table_row_naming_an_unknown_thing_is_refused(column, name, tmp_path):
+    # a measurement table's rows may name their projectile and target: looked up at parse
+    from pencore.errors import ConfigError
+    from pencore.workflowconfig.config_check import check_config
+
+    table = tmp_path / "shots.csv"
+    table.write_text(
+        "# a measured table\n"
+        "test,velocity_m_s,obliquity_deg,yaw_deg,measured_depth_m,projectile,target,source\n"
+        "1,500,0,0,0.1,al_ogive_var4340,aluminium,a source\n"
+        f"2,600,0,0,0.1,{name if column == 'projectile' else 'al_ogive_var4340'},"
+        f"{name if column == 'target' else 'aluminium'},a source\n"
+    )
+    cfg = _edit(_config(), "validation.measurements.0.csv", str(table))
+    with pytest.raises(ConfigError) as info:
+        check_config(cfg, REPO)
+    text = str(info.value)
+    assert f"validation.measurements[0].csv (row 2, column {column})" in text, text
+    assert f"unknown {column}" in text and "\n" not in text, text
 
 
 def test_shipped_workflow_configs_pass():
@@ -1149,7 +1498,7 @@ def test_cli_out_with_a_trailing_slash_is_refused(capsys, tmp_path, monkeypatch)
     monkeypatch.chdir(tmp_path)
     status, line = _cli([*SIM, "--velocity", "300", "--out", "o.nc/"], capsys, tmp_path)
     assert status == 2
-    assert "output file 'o.nc/' ends in '/', which names a directory" in line
+    assert "output file 'o.nc/': it ends in '/', which names a directory" in line
 
 
 def test_cli_out_onto_a_read_only_file_is_refused(capsys, tmp_path, monkeypatch):
@@ -1159,7 +1508,7 @@ def test_cli_out_onto_a_read_only_file_is_refused(capsys, tmp_path, monkeypatch)
     kept.chmod(0o444)
     status, line = _cli([*SIM, "--velocity", "300", "--out", "kept.nc"], capsys, tmp_path)
     assert status == 2
-    assert "output file 'kept.nc' is read-only (mode 0444)" in line
+    assert "output file 'kept.nc': it is read-only (mode 0444)" in line
     assert kept.read_bytes() == b"keep me"
 
 

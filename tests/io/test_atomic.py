@@ -200,3 +200,57 @@ def test_a_symbolic_link_is_not_replaced(tmp_path, points_to):
     assert link.is_symlink() and os.readlink(link) == points_to
     assert (tmp_path / "other.txt").read_text() == "kept\n"
     check_replaceable(tmp_path / "other.txt")  # a regular file may be replaced
+
+
+def test_every_writer_goes_through_the_output_gate():
+    """No module of the package or the workflow writes a file but through
+    ``atomic_path`` (the output gate's writer): a new writer that calls a library's own
+    writer on a destination is caught here. The allowed calls write the temporary file
+    ``atomic_path`` handed out; the kernel build writes its own folders atomically."""
+    import re
+
+    repo = Path(__file__).resolve().parents[2]
+    raw = re.compile(
+        r"\.(savefig|to_netcdf|write_text|write_bytes)\(|\.to_csv\((?!index=|\))|"
+        r"open\([^)]*['\"][wax]b?['\"]"
+    )
+    allowed = {
+        "src/pencore/io/atomic.py",  # the writer itself
+        "src/pencore/io/netcdf.py",  # to_netcdf(tmp) inside atomic_path
+        "src/pencore/plotting/style.py",  # savefig(tmp) inside atomic_path
+        "src/pencore/kernels/cache.py",  # the kernel cache's stamp (its own folder)
+        "src/pencore/kernels/buildcache.py",  # the build step's folders, renamed whole
+    }
+    found = []
+    for path in [*(repo / "src").rglob("*.py"), *(repo / "workflow").rglob("*.py")]:
+        rel = path.relative_to(repo).as_posix()
+        if rel in allowed:
+            continue
+        for n, line in enumerate(path.read_text().splitlines(), 1):
+            code = line.split("#", 1)[0]
+            if ">>>" in line or "..." in line[:12]:
+                continue  # doctests write their own temporary files
+            if raw.search(code):
+                found.append(f"{rel}:{n}: {line.strip()}")
+    assert found == [], "writes around the output gate:\n" + "\n".join(found)
+
+
+def test_a_call_protects_what_it_read_but_what_it_is_meant_to_rewrite(tmp_path):
+    from pencore.io import outputs
+
+    data = tmp_path / "geometry.yaml"
+    data.write_text("diameter_m: 1.0\n")
+    other = tmp_path / "other.yaml"
+    other.write_text("x: 1\n")
+    with outputs.output_call():
+        outputs.note_input(data)
+        outputs.note_input(other)
+        with pytest.raises(WriteError, match="input of this run"):
+            outputs.check_destination(data, outputs.YAML_SUFFIXES)
+        outputs.allow_rewrite(data)  # fit-table3 --write onto the shipped geometry
+        outputs.check_destination(data, outputs.YAML_SUFFIXES)
+        with pytest.raises(WriteError, match="input of this run"):
+            outputs.check_destination(other, outputs.YAML_SUFFIXES)
+        with pytest.raises(WriteError, match="input of this run"):  # an explicit protect wins
+            outputs.check_destination(data, outputs.YAML_SUFFIXES, protect=[data])
+    outputs.check_destination(other, outputs.YAML_SUFFIXES)  # outside a call: nothing kept

@@ -294,3 +294,157 @@ def test_uv_rebuilds_the_editable_install_when_a_compiled_source_changes():
     for f in sources:
         relative = f.resolve().relative_to(repo)
         assert any(relative.match(p) for p in patterns), f"{relative} is not a uv cache key"
+
+
+# ------------------------------------------------------------ any failure to use it: compile
+
+
+def said_by(tmp_path: Path, root, record=RECORD, no_root="disabled") -> tuple[dict, list[str]]:
+    said: list[str] = []
+    out = tmp_path / "package" / "compiled"
+    done = buildcache.provide_kernels(out, record, FakeCompile(), root, said.append, no_root)
+    return done, said
+
+
+def test_a_cache_setting_that_cannot_be_expanded_means_compile():
+    root, why = buildcache.resolve_root({buildcache.CACHE_ENV: "~no_such_user_pencore/kernels"})
+    assert root is None and why.startswith("PENCORE_BUILD_CACHE cannot be expanded")
+    assert "\n" not in why
+
+
+def test_a_cache_setting_that_cannot_be_expanded_builds(tmp_path):
+    _, why = buildcache.resolve_root({buildcache.CACHE_ENV: "~no_such_user_pencore/kernels"})
+    done, said = said_by(tmp_path, None, no_root=why)
+    assert done["build"] == "compiled" and done["build_cache"] is None
+    assert any("cannot be expanded" in line for line in said)
+
+
+def test_a_cache_path_too_long_means_compile_in_one_line(tmp_path):
+    root = tmp_path / ("x" * 300) / "cache"
+    done, said = said_by(tmp_path, root)
+    assert done["build"] == "compiled" and done["build_cache"] is None
+    assert all("\n" not in line for line in said)
+    assert any("cannot be used" in line or "cannot be written" in line for line in said), said
+
+
+@pytest.mark.parametrize("kind", ["file", "folder", "link"])
+def test_a_leftover_partial_means_nothing(tmp_path, kind):
+    out = tmp_path / "package" / "compiled"
+    out.parent.mkdir(parents=True)
+    partial = out.with_name("compiled.partial")
+    if kind == "file":
+        partial.write_text("left by a stopped build")
+    elif kind == "folder":
+        (partial / "kernels").mkdir(parents=True)
+        (partial / "kernels" / "junk.nbi").write_bytes(b"junk")
+    else:
+        partial.symlink_to(tmp_path / "nowhere")
+    done, said = said_by(tmp_path, tmp_path / "cache")
+    assert done["build"] == "compiled"
+    assert not os.path.lexists(partial) and (out / "BUILD.json").is_file()
+    done, _ = said_by(tmp_path, tmp_path / "cache")
+    assert done["build"] == "copied"
+
+
+PLANTED = b"cos\nsystem\n(S'touch /tmp/pencore-planted'\ntR."  # runs a command if unpickled
+
+
+@pytest.mark.parametrize(
+    "head, words",
+    [
+        (PLANTED, "does not start as a numba index (not unpickled)"),
+        (pickle.dumps(("not", "a", "version"), protocol=-1), "does not start as a numba index"),
+        (pickle.dumps(42, protocol=-1), "does not start as a numba index"),
+        (pickle.dumps("0.1.0", protocol=-1), "is an index of numba '0.1.0'"),
+        (b"", "does not start as a numba index"),
+    ],
+    ids=["planted-code", "a-tuple", "a-number", "another-numba", "empty"],
+)
+def test_an_index_is_read_as_bytes_never_unpickled(tmp_path, head, words, monkeypatch):
+    build(tmp_path)
+    entry = entry_of(tmp_path)
+    index = next(entry.rglob("*.nbi"))
+    index.write_bytes(head)
+    manifest = json.loads((entry / "MANIFEST.json").read_text())
+    manifest[index.relative_to(entry).as_posix()] = buildcache._sha256(index)
+    (entry / "MANIFEST.json").write_text(json.dumps(manifest))  # a planted, consistent entry
+
+    def no_unpickling(*args, **kwargs):
+        raise AssertionError("the build cache unpickled a file")
+
+    monkeypatch.setattr(pickle, "load", no_unpickling)
+    monkeypatch.setattr(pickle, "loads", no_unpickling)
+    assert words in buildcache.verify_entry(entry, RECORD)
+    done, said = said_by(tmp_path, tmp_path / "cache")
+    assert done["build"] == "compiled"
+    assert any("refused and deleted" in line for line in said), said
+    assert not Path("/tmp/pencore-planted").exists()
+
+
+def test_the_index_version_is_read_from_a_real_numba_index(tmp_path):
+    build(tmp_path)
+    index = next(entry_of(tmp_path).rglob("*.nbi"))
+    assert buildcache.index_version(index.read_bytes()[:128]) == numba.__version__
+
+
+def test_an_entry_that_raises_while_it_is_checked_means_compile(tmp_path, monkeypatch):
+    build(tmp_path)
+
+    def broken(entry, record):
+        raise RuntimeError("something no check foresaw")
+
+    monkeypatch.setattr(buildcache, "verify_entry", broken)
+    done, said = said_by(tmp_path, tmp_path / "cache")
+    assert done["build"] == "compiled"
+    assert any("cannot be used (RuntimeError: something no check foresaw)" in x for x in said)
+
+
+def _setup_module(monkeypatch):
+    """setup.py's functions, without running setup()."""
+    import importlib
+    import runpy
+    import subprocess
+    import sys
+    import types
+
+    import setuptools
+
+    monkeypatch.setattr(setuptools, "setup", lambda **kwargs: None)
+    try:  # setuptools >= 70 (the build environment's); older ones: a stand-in
+        importlib.import_module("setuptools.command.bdist_wheel")
+    except ImportError:
+        stub = types.ModuleType("setuptools.command.bdist_wheel")
+        stub.bdist_wheel = type("bdist_wheel", (), {})
+        monkeypatch.setitem(sys.modules, "setuptools.command.bdist_wheel", stub)
+    ns = runpy.run_path(str(Path(buildcache.__file__).parents[3] / "setup.py"))
+    return ns, subprocess
+
+
+@pytest.mark.parametrize("failure", ["no-solver", "warm-up-fails"])
+def test_a_build_that_fails_stops_the_install_in_one_line(failure, tmp_path, monkeypatch):
+    # a SystemExit: setuptools' editable install swallows any Exception of build_py and
+    # reports success without kernels
+    import subprocess
+
+    ns, _ = _setup_module(monkeypatch)
+    real_run = subprocess.run
+
+    def run(cmd, *args, **kwargs):
+        if failure == "no-solver" and "build_info" in cmd[-1]:
+            return subprocess.CompletedProcess(cmd, 1, "", "ModuleNotFoundError: numba\n")
+        if failure == "warm-up-fails" and "pencore.warmup" in cmd[-1]:
+            return subprocess.CompletedProcess(cmd, 1)
+        return real_run(cmd, *args, **kwargs)
+
+    monkeypatch.setattr(subprocess, "run", run)
+    monkeypatch.setenv(buildcache.CACHE_ENV, "off")
+    with pytest.raises(SystemExit) as info:
+        ns["compile_kernels"](tmp_path / "compiled")
+    assert not isinstance(info.value, Exception)
+    text = str(info.value.code)
+    assert text.startswith("error: pencore build: the numba kernels could not be compiled (")
+    assert "PENCORE_SKIP_KERNELS=1" in text and "\n" not in text
+    word = "the solver does not import: ModuleNotFoundError: numba" if failure == "no-solver" \
+        else "the warm-up run failed"  # fmt: skip
+    assert word in text
+    assert not (tmp_path / "compiled").exists()

@@ -441,8 +441,9 @@ def test_workflow_script_errors_are_one_line(tmp_path, raise_, one_line):
     code = (
         f"import sys; sys.path.insert(0, {str(scripts)!r})\n"
         "from _common import start_log\n"
+        "from types import SimpleNamespace\n"
         "from pencore.run.impact import SolverError\n"
-        f"start_log({str(log)!r}, 'job')\n"
+        f"start_log(SimpleNamespace(log=[{str(log)!r}], input=[]), 'job')\n"
         f"raise {raise_}\n"
     )
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
@@ -454,3 +455,24 @@ def test_workflow_script_errors_are_one_line(tmp_path, raise_, one_line):
         ]
     else:
         assert "Traceback" in r.stderr
+
+
+def test_a_workflow_job_never_replaces_its_own_input(tmp_path):
+    # the job's inputs are protected from every writer of the job (the output gate)
+    scripts = Path(__file__).resolve().parents[2] / "workflow" / "scripts"
+    src = tmp_path / "in.nc"
+    src.write_bytes(b"input bytes")
+    code = (
+        f"import sys; sys.path.insert(0, {str(scripts)!r})\n"
+        "from types import SimpleNamespace\n"
+        "import xarray as xr\n"
+        "from _common import start_log\n"
+        "from pencore.io.netcdf import write_netcdf\n"
+        f"start_log(SimpleNamespace(log=[{str(tmp_path / 'job.log')!r}], input=[{str(src)!r}]),"
+        " 'job')\n"
+        f"write_netcdf(xr.Dataset(), {str(src)!r}, config_slice={{}}, study='t')\n"
+    )
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert r.returncode == 1
+    assert "input of this run" in r.stderr and len(r.stderr.strip().splitlines()) == 1
+    assert src.read_bytes() == b"input bytes"

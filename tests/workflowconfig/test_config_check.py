@@ -4,6 +4,7 @@ stops with one line naming the key path and the value (pencore.workflowconfig.co
 from __future__ import annotations
 
 import copy
+import shutil
 from pathlib import Path
 
 import pytest
@@ -95,6 +96,7 @@ def test_shipped_and_test_configs_pass():
 def test_header_only_table2_csv(tmp_path):
     header = (REPO / "config" / "table2.csv").read_text().splitlines()[0]
     (tmp_path / "t2.csv").write_text(header + "\n")
+    shutil.copytree(REPO / "config", tmp_path / "config")  # the other tables it names
     cfg = _set(copy.deepcopy(SHIPPED), "validation.table2.csv", "t2.csv")
     with pytest.raises(ConfigError, match=r"validation\.table2\.csv: .*no rows"):
         check_config(cfg, tmp_path)
@@ -125,6 +127,13 @@ def test_schema_errors_are_one_short_line(path, value, needles):
          "config section4.fig8.obliquity_deg: obliquity 95.0 deg"),
         ("section4:\n  fig8:\n    obliquty_deg: 30\n",
          "config section4.fig8.obliquty_deg: unknown key; did you mean 'obliquity_deg'?"),
+        # keys that name a thing: a target of a measurement set, a shot set of Fig. 5
+        ("validation:\n  measurements:\n    - {name: al, csv: config/aluminium_ogive_shots.csv,"
+         " targets: [aluminum]}\n",
+         "config validation.measurements[0].targets[0]: unknown target 'aluminum'"),
+        ("validation:\n  fig5:\n    body_shots:\n      config/concrete_ogive_shots.csv:\n"
+         "        forrestal1996_d12.9_crh3_fc13: grout_crh3\n",
+         "no set 'forrestal1996_d12.9_crh3_fc13' in 'config/concrete_ogive_shots.csv'"),
     ],
 )  # fmt: skip
 def test_snakemake_stops_at_parse_time_with_a_short_message(tmp_path, text, needle):

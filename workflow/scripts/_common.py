@@ -1,4 +1,6 @@
-"""Shared by the workflow scripts: logging to the rule's log file.
+"""Shared by the workflow scripts: logging to the rule's log file, and the job opened as
+one call of the output gate (:func:`pencore.io.outputs.begin_call`: no output of the job
+replaces one of its inputs, whatever writer writes it).
 
 Snakemake puts this directory on ``sys.path`` for ``script:`` rules, so scripts do
 ``from _common import start_log``.
@@ -12,8 +14,13 @@ import warnings
 from pathlib import Path
 
 
-def start_log(path: str, name: str) -> logging.Logger:
-    """Send logging, warnings and uncaught exceptions of this job to ``path``."""
+def start_log(smk: object, name: str) -> logging.Logger:
+    """Send logging, warnings and uncaught exceptions of the job ``smk`` (Snakemake's
+    ``snakemake`` object) to its log file, and protect its inputs from its writers."""
+    from pencore.io.outputs import begin_call
+
+    begin_call([str(f) for f in smk.input])  # type: ignore[attr-defined]
+    path = str(smk.log[0])  # type: ignore[attr-defined]
     Path(path).parent.mkdir(parents=True, exist_ok=True)
     logging.basicConfig(
         filename=path,

@@ -7,7 +7,7 @@ from _common import start_log
 from pencore.io.netcdf import downsample, read_netcdf, write_netcdf
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
-log = start_log(smk.log[0], "archive")
+log = start_log(smk, "archive")
 
 ds = read_netcdf(smk.input[0])
 study = ds.attrs.get("study", "unknown")

@@ -8,7 +8,7 @@ from pencore.studies.attribution.settings import NUMBERS, gather, run_setting
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 settings = [dict(s) for s in smk.params.settings]
-log = start_log(smk.log[0], f"attribution_{smk.rule}")
+log = start_log(smk, f"attribution_{smk.rule}")
 for setting, path in zip(settings, smk.output.nc, strict=True):
     log.info("setting %s: %s", setting["name"], setting.get("choices"))
     ds = run_setting(setting)

@@ -3,11 +3,12 @@
 import pandas as pd
 from _common import start_log
 
+from pencore.io.atomic import atomic_write_text
 from pencore.io.netcdf import read_netcdf, write_netcdf
 from pencore.studies.attribution.settings import attribution_table, gather
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
-log = start_log(smk.log[0], "attribution_gather")
+log = start_log(smk, "attribution_gather")
 
 ds = gather([read_netcdf(p) for p in smk.input.parts])
 write_netcdf(
@@ -17,6 +18,6 @@ write_netcdf(
     study="attribution",
 )
 table = attribution_table(ds)
-table.to_csv(smk.output.csv, index=False)
+atomic_write_text(smk.output.csv, table.to_csv(index=False), suffixes=(".csv",))
 with pd.option_context("display.width", 250, "display.max_colwidth", 60):
     log.info("attribution:\n%s", table.to_string(index=False))

@@ -11,7 +11,7 @@ from pencore.studies.ensemble import run_chunk
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 case = dict(smk.params.case)
 chunk = int(smk.wildcards.chunk)
-log = start_log(smk.log[0], f"ensemble_{case['name']}_{chunk}")
+log = start_log(smk, f"ensemble_{case['name']}_{chunk}")
 t0 = time.perf_counter()
 ds = run_chunk(case, chunk, resolve_numerics(smk.params.numerics))
 log.info("chunk %d of %d: %d samples in %.1f s", chunk, case["n_chunks"], ds.sizes["sample"],

@@ -7,7 +7,7 @@ from pencore.studies.ensemble import RESULTS, gather
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 case = dict(smk.params.case)
-log = start_log(smk.log[0], f"ensemble_{case['name']}_gather")
+log = start_log(smk, f"ensemble_{case['name']}_gather")
 ds = gather([read_netcdf(p) for p in smk.input.parts])
 write_netcdf(
     ds, smk.output.nc, config_slice={"ensemble.case": case}, study=f"ensemble/{case['name']}"

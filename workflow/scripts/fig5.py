@@ -6,7 +6,7 @@ from pencore.io.netcdf import file_sha256, write_netcdf
 from pencore.studies.validation.depth import fig5, velocity_grid
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
-log = start_log(smk.log[0], "fig5")
+log = start_log(smk, "fig5")
 
 study = dict(smk.params.study)
 shots = list(smk.input.shots)

@@ -7,7 +7,7 @@ from pencore.io.netcdf import file_sha256, write_netcdf
 from pencore.studies.validation.measurements import measured_vs_predicted
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
-log = start_log(smk.log[0], "measurements")
+log = start_log(smk, "measurements")
 
 entries = [dict(e) for e in smk.params.study]
 ds = measured_vs_predicted(entries, smk.params.numerics)

@@ -7,7 +7,7 @@ from pencore.io.netcdf import file_sha256, write_netcdf
 from pencore.studies.validation.measurements import statistics_by_option
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
-log = start_log(smk.log[0], "measurements_options")
+log = start_log(smk, "measurements_options")
 
 entries = [dict(e) for e in smk.params.study]
 options = {k: dict(v) for k, v in dict(smk.params.options).items()}

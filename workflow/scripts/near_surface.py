@@ -12,7 +12,7 @@ from pencore.studies.perforation.obliquity import (
 )
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
-log = start_log(smk.log[0], "near_surface_map")
+log = start_log(smk, "near_surface_map")
 
 study = dict(smk.params.study)
 # in the configured order of the option sets

@@ -6,7 +6,7 @@ from pencore import plotting
 from pencore.io.netcdf import read_netcdf
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
-log = start_log(smk.log[0], "near_surface_figure")
+log = start_log(smk, "near_surface_figure")
 
 fig = plotting.plot_ballistic_map(read_netcdf(smk.input.map), read_netcdf(smk.input.cmp))
 written = plotting.save_figure(fig, smk.output.png, smk.output.pdf)

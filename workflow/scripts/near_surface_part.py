@@ -7,7 +7,7 @@ from pencore.io.netcdf import write_netcdf
 from pencore.studies.perforation.obliquity import ballistic_map
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
-log = start_log(smk.log[0], f"near_surface_part {smk.wildcards.option}")
+log = start_log(smk, f"near_surface_part {smk.wildcards.option}")
 
 study = dict(smk.params.study)
 part = ballistic_map(

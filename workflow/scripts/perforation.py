@@ -8,7 +8,7 @@ from pencore.studies.validation.depth import velocity_grid
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 kind = smk.params.kind
-log = start_log(smk.log[0], f"perforation_{kind}")
+log = start_log(smk, f"perforation_{kind}")
 
 study = dict(smk.params.study)
 common = dict(

@@ -6,7 +6,7 @@ from pencore import plotting
 from pencore.io.netcdf import read_netcdf
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
-log = start_log(smk.log[0], f"plot_{smk.params.kind}")
+log = start_log(smk, f"plot_{smk.params.kind}")
 
 ds = read_netcdf(smk.input.nc)
 fig = getattr(plotting, f"plot_{smk.params.kind}")(ds)

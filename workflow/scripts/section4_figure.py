@@ -7,7 +7,7 @@ from pencore.plotting import PLOTS
 from pencore.plotting.style import save_figure
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
-log = start_log(smk.log[0], f"plot_{smk.params.kind}")
+log = start_log(smk, f"plot_{smk.params.kind}")
 
 ds = read_netcdf(smk.input.nc)
 fig = PLOTS[smk.params.kind](ds)

@@ -7,7 +7,7 @@ from pencore.studies.config import gather
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 kind = smk.params.kind
-log = start_log(smk.log[0], f"section4_{kind}_gather")
+log = start_log(smk, f"section4_{kind}_gather")
 
 parts = [read_netcdf(p) for p in smk.input.parts]
 ds = gather(kind, parts)

@@ -16,7 +16,7 @@ from pencore.studies.config import from_config
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 kind = smk.params.kind
-log = start_log(smk.log[0], f"section4_{kind}")
+log = start_log(smk, f"section4_{kind}")
 
 cfg = smk.params.config
 

@@ -4,11 +4,12 @@ runs and the selection, :func:`table2`; the candidates' table, :func:`selection_
 import pandas as pd
 from _common import start_log
 
+from pencore.io.atomic import atomic_write_text
 from pencore.io.netcdf import file_sha256, write_netcdf
 from pencore.studies.validation.table2 import selection_table, table2
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
-log = start_log(smk.log[0], "table2")
+log = start_log(smk, "table2")
 
 study = dict(smk.params.study)
 rows = pd.read_csv(smk.input.rows, comment="#")
@@ -29,8 +30,12 @@ table, ds = table2(
 
 selection = selection_table(ds, study["depth_measures"])
 
-table.to_csv(smk.output.csv, index=False, float_format="%.6g")
-selection.to_csv(smk.output.selection, index=False, float_format="%.6g")
+atomic_write_text(
+    smk.output.csv, table.to_csv(index=False, float_format="%.6g"), suffixes=(".csv",)
+)
+atomic_write_text(
+    smk.output.selection, selection.to_csv(index=False, float_format="%.6g"), suffixes=(".csv",)
+)
 write_netcdf(
     ds,
     smk.output.nc,

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import argparse
 
-from pencore.cli.options import CommandFailure, path_type
+from pencore.cli.options import CommandFailure, check_output, path_type
 
 __all__ = ["add_parsers", "list_library", "fit_table3"]
 
@@ -44,6 +44,13 @@ def fit_table3(args: argparse.Namespace) -> int:
     the shipped geometry; exit status 0, or 1 when the file cannot be written."""
     from pencore.inputs.library import shipped_table3_geometry, table3_fit, write_table3_geometry
 
+    if args.write:  # the output gate's rules, before the fit
+        from pencore.inputs.library import TABLE3_GEOMETRY_FILE
+        from pencore.io.outputs import YAML_SUFFIXES, allow_rewrite
+
+        check_output(args.write, suffixes=YAML_SUFFIXES)
+        # the shipped geometry, which every run reads, is the file this command regenerates
+        allow_rewrite(TABLE3_GEOMETRY_FILE)
     fit = table3_fit()
     print(fit.report())
     d, ls = shipped_table3_geometry()

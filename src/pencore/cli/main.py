@@ -14,14 +14,16 @@ from __future__ import annotations
 
 import argparse
 import os
+import signal
 import sys
 from collections.abc import Callable, Sequence
 
 from pencore.cli import ballistic, closed_form, critical, law, library, simulate, sweeps
-from pencore.cli.options import INTERRUPTED, PROG, CommandFailure, Parser, one_line
+from pencore.cli.options import PROG, CommandFailure, Parser, call_inputs, one_line
 from pencore.errors import InputError, SolverError, interrupted_import
 from pencore.inputs.limits import one_line_warnings
 from pencore.io.atomic import describe_os_error
+from pencore.io.outputs import interrupted_message, output_call
 from pencore.version import __version__
 
 __all__ = ["main", "build_parser"]
@@ -91,7 +93,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     int
         Exit status: 0 success, 1 solver or write failure, 2 bad input, 3 a search found
         no threshold in its range (``vcr``, ``vci``, ``omega-c``, ``ballistic-limit``),
-        130 interrupted, 141 output pipe closed early.
+        130 interrupted (Ctrl-C), 141 output pipe closed early, 143 terminated (SIGTERM)
+        while a file was written.
     """
     with one_line_warnings(PROG):  # a PlausibilityWarning is one line; the run goes on
         return _main(argv)
@@ -111,6 +114,8 @@ def _main(argv: Sequence[str] | None) -> int:
         return 1
     real_stdout = sys.stdout
     sys.stdout = _GuardedStdout(real_stdout)  # type: ignore[assignment]
+    call = output_call(call_inputs(args))  # no output of the command replaces an input
+    call.__enter__()
     try:
         status = COMMANDS[args.command](args)
         sys.stdout.flush()
@@ -134,14 +139,19 @@ def _main(argv: Sequence[str] | None) -> int:
     except InputError as exc:
         msg, status = str(exc), 2
     except KeyboardInterrupt:
-        msg, status = INTERRUPTED, 130
+        msg, status = interrupted_message(), 130
     except ImportError as exc:
         if not interrupted_import(exc):
             raise
-        msg, status = INTERRUPTED, 130
+        msg, status = interrupted_message(), 130
+    except SystemExit as exc:
+        if exc.code != 128 + signal.SIGTERM:  # SIGTERM during a write (pencore.io.atomic)
+            raise
+        msg, status = interrupted_message("terminated (SIGTERM)"), exc.code
     except SolverError as exc:
         msg, status = f"solver failed: {exc}", 1
     finally:
+        call.__exit__(None, None, None)
         sys.stdout = real_stdout
         driver = sys.modules.get("pencore.integrators.driver")
         if driver is not None:  # main() called in-process: Ctrl-C behaves as before

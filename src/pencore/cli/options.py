@@ -26,7 +26,7 @@ from pencore.errors import INTERRUPTED, InputError, WriteError
 from pencore.inputs.gate import DECIMAL_WORDS, brief, brief_path, decimal, load_yaml_text
 from pencore.inputs.limits import as_float, integer, number
 from pencore.inputs.numerics import NUMERIC_FIELDS
-from pencore.io.atomic import check_replaceable, describe_os_error, file_kind
+from pencore.io.atomic import describe_os_error, file_kind
 
 __all__ = [
     "PROG",
@@ -47,6 +47,8 @@ __all__ = [
     "with_mass",
     "window_values",
     "check_output",
+    "call_inputs",
+    "refresh_interrupt_line",
     "resolve",
     "run_projectile",
     "run_target",
@@ -63,8 +65,9 @@ def exit_at_once_on_interrupt() -> None:
     before their runs; they write their output files only after the runs). See
     :mod:`pencore.integrators.driver`."""
     from pencore.integrators.driver import exit_on_interrupt
+    from pencore.io.outputs import interrupted_message
 
-    exit_on_interrupt(f"{PROG}: error: {INTERRUPTED}", 130)
+    exit_on_interrupt(f"{PROG}: error: {interrupted_message()}", 130)
 
 
 class CommandFailure(Exception):
@@ -461,8 +464,14 @@ def with_mass(projectile: Any, args: argparse.Namespace) -> Any:
     return projectile.with_mass(mass, lc, None if inertia is None else tuple(inertia))
 
 
-def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
-    """Check that ``out`` can be written, before any computation.
+def check_output(
+    out: str,
+    inputs: Sequence[str] = (),
+    suffixes: Sequence[str] = (".nc",),
+    what: str = "output file",
+) -> Path:
+    """Check that ``out`` can be written, before any computation: the output gate's rules
+    (:func:`pencore.io.outputs.check_destination`) and a writable, existing folder.
 
     A temporary file is created and removed in the output directory (``os.access`` is
     fooled by root, read-only mounts and ACLs).
@@ -470,12 +479,17 @@ def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
     Parameters
     ----------
     out : str
-        The ``--out`` path; must end in ``.nc``, be a regular file if it exists (not a
-        directory, device or FIFO), not be one of ``inputs``, and lie in an existing,
-        writable directory.
+        The ``--out``, ``--plot`` or ``--write`` path; must end in one of ``suffixes``,
+        name a file (not a directory, nor end in ``/``), be writable if it exists, not be
+        an input of the call (``inputs``, and the files of the open call,
+        :func:`call_inputs`), and lie in an existing, writable directory.
     inputs : sequence of str
-        The run's input files (``--projectile``, ``--target``; names that are not files
-        are skipped): the output must not replace them.
+        The run's input files (names that are not files are skipped): the output must
+        not replace them.
+    suffixes : sequence of str
+        The suffixes the option writes (``.nc``; ``.png``, ``.pdf``, ``.svg``; ...).
+    what : str
+        How the messages name the path (``"output file"``, ``"plot file"``).
 
     Returns
     -------
@@ -488,50 +502,12 @@ def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
         Status 2 naming the path and the problem; status 1 when the disk or quota is
         full.
     """
-    if out.endswith(("/", os.sep)):  # Path() would drop the slash and write the file
-        raise CommandFailure(
-            f"output file {brief_path(out)} ends in {out[-1]!r}, which names a directory; "
-            "give a FILE.nc path",
-            2,
-        )
+    from pencore.io.outputs import check_destination
+
     try:
-        out.encode("utf-8")
-    except UnicodeEncodeError:
-        # bytes the locale cannot decode (a non-ASCII name under an ASCII locale): the
-        # netCDF library takes names as UTF-8 text and would fail after the run
-        raise CommandFailure(
-            f"output file {brief_path(out)} is not text in this locale's encoding "
-            f"({sys.getfilesystemencoding()}); use a UTF-8 locale or an ASCII name",
-            2,
-        ) from None
-    path = Path(out)
-    if path.suffix != ".nc":
-        raise CommandFailure(f"output file {brief_path(out)} must end in .nc", 2)
-    try:
-        is_dir = path.is_dir()
-    except (OSError, ValueError) as exc:  # a name too long to look up, a NUL in it
-        cause = describe_os_error(exc) if isinstance(exc, OSError) else "a NUL character"
-        raise CommandFailure(f"output file {brief_path(out)}: {cause}", 2) from None
-    if is_dir:
-        raise CommandFailure(
-            f"output file {brief_path(out)} is a directory; give a FILE.nc path", 2
-        )
-    try:
-        check_replaceable(path, [p for p in inputs if os.path.isfile(p)])
+        path = check_destination(out, suffixes, [p for p in inputs if os.path.isfile(p)])
     except WriteError as exc:
-        raise CommandFailure(str(exc), 2) from None
-    try:
-        mode = os.lstat(path).st_mode
-    except (OSError, ValueError):
-        mode = None
-    if mode is not None and stat.S_ISREG(mode) and not mode & 0o222:
-        # renaming a new file onto it would replace it (the directory is writable), and
-        # root may write it anyway: a file made read-only is one its owner wants kept
-        raise CommandFailure(
-            f"output file {brief_path(out)} is read-only (mode {stat.S_IMODE(mode):04o}); "
-            "make it writable to replace it, or give another name",
-            2,
-        )
+        raise CommandFailure(f"{what} {str(exc).removeprefix('cannot write ')}", 2) from None
     parent = path.parent
     _check_directory(parent, out)
     # a real probe: os.access alone is fooled by root, read-only mounts, ACLs
@@ -547,6 +523,35 @@ def check_output(out: str, inputs: Sequence[str] = ()) -> Path:
             1 if exc.errno in (errno.ENOSPC, errno.EDQUOT) else 2,
         ) from None
     return path
+
+
+#: The options that name files a command writes (never protected as its inputs).
+OUTPUT_OPTIONS = ("out", "plot", "write")
+
+
+def call_inputs(args: argparse.Namespace) -> list[str]:
+    """Every argument of a command that names an existing file, but its outputs
+    (:data:`OUTPUT_OPTIONS`): the inputs no output of the call may replace, whatever
+    option names them (``--projectile``, ``--target``, a table, a config)."""
+    found: list[str] = []
+    for key, value in vars(args).items():
+        if key in OUTPUT_OPTIONS or key in ("func", "command"):
+            continue
+        for v in value if isinstance(value, list | tuple) else [value]:
+            if isinstance(v, str | os.PathLike):
+                try:
+                    if os.path.isfile(v):
+                        found.append(os.fspath(v))
+                except (OSError, ValueError):
+                    continue
+    return found
+
+
+def refresh_interrupt_line() -> None:
+    """After a file is written, make the Ctrl-C line of the runs that may follow say so
+    (:func:`exit_at_once_on_interrupt`); nothing when no run was started."""
+    if "pencore.integrators.driver" in sys.modules:
+        exit_at_once_on_interrupt()
 
 
 def _check_directory(parent: Path, out: str) -> None:

@@ -18,6 +18,7 @@ from pencore.cli.options import (
     number_type,
     numerics_option,
     obliquity,
+    refresh_interrupt_line,
     run_numerics,
     run_projectile,
     run_target,
@@ -327,6 +328,7 @@ def run(args: argparse.Namespace) -> int:
             )
         except WriteError as exc:  # one line naming the path and the cause; nothing left
             raise CommandFailure(str(exc), 1) from None
+        refresh_interrupt_line()
     if plot is not None:
         from pencore.plotting.run import plot_run
 

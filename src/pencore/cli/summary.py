@@ -65,8 +65,9 @@ NOT_FOUND = 3
 #: The exit statuses, for the help texts.
 EXIT_NOTE = (
     f"Exit status: 0 threshold found, {NOT_FOUND} no threshold in the range (the verdict "
-    "is the same at both ends, or the bracket did not narrow to --tol; the summary and "
-    "files are still written), 2 bad input, 1 solver or write failure."
+    "is the same at both ends, the bracket did not narrow to --tol, or a run could not "
+    "finish, status solver_error; the summary and files are still written, a table with "
+    "every other cell), 2 bad input, 1 solver or write failure."
 )
 
 
@@ -176,68 +177,39 @@ class Progress:
             print(f"[{self.done}/{self.total}] {what}", file=sys.stderr, flush=True)
 
 
-#: Image formats ``--plot`` writes (from the file's suffix).
-PLOT_SUFFIXES = (".png", ".pdf", ".svg")
-
-
 def check_plot_output(path: str) -> Path:
-    """Check a ``--plot`` path before any computation: a known image suffix and an
-    existing directory; raises ``CommandFailure`` (status 2) naming the path."""
-    from pencore.cli.options import CommandFailure
+    """Check a ``--plot`` path before any computation (:func:`pencore.cli.options.check_output`
+    with :data:`pencore.io.outputs.FIGURE_SUFFIXES`); ``CommandFailure`` status 2."""
+    from pencore.cli.options import check_output
+    from pencore.io.outputs import FIGURE_SUFFIXES
 
-    p = Path(path)
-    if p.suffix.lower() not in PLOT_SUFFIXES:
-        raise CommandFailure(f"plot file {path!r} must end in one of {', '.join(PLOT_SUFFIXES)}", 2)
-    return _file_in_a_folder(path, "plot file")
-
-
-def _file_in_a_folder(path: str, what: str) -> Path:
-    """``Path(path)`` if its directory exists and it is no directory; else
-    ``CommandFailure`` (status 2) naming ``what`` (``"plot file"``, ``"output file"``) and
-    ``path`` as given."""
-    from pencore.cli.options import CommandFailure
-
-    p = Path(path)
-    parent = p.parent if str(p.parent) else Path(".")
-    if not parent.is_dir():
-        raise CommandFailure(f"{what} {path!r}: directory {str(parent)!r} does not exist", 2)
-    if p.is_dir():
-        raise CommandFailure(f"{what} {path!r} is a directory", 2)
-    return p
+    return check_output(path, suffixes=FIGURE_SUFFIXES, what="plot file")
 
 
 def write_plot(fig: Any, path: Path) -> None:
-    """Write ``fig`` to ``path`` atomically (a temporary file beside it, then a rename):
-    a failed write leaves nothing; raises ``CommandFailure`` (status 1) naming the path."""
-    from pencore.cli.options import CommandFailure
+    """Write ``fig`` to ``path`` atomically through the output gate
+    (:func:`pencore.plotting.style.save_figure`): a failed write leaves nothing; raises
+    ``CommandFailure`` (status 1) naming the path."""
+    from pencore.cli.options import CommandFailure, refresh_interrupt_line
     from pencore.errors import WriteError
-    from pencore.io.atomic import atomic_path
     from pencore.plotting.style import save_figure
 
     try:
-        with atomic_path(path) as tmp:
-            save_figure(fig, tmp, fmt=path.suffix[1:].lower())
+        save_figure(fig, path)
     except WriteError as exc:
         raise CommandFailure(str(exc), 1) from None
-
-
-#: Table formats ``--out`` writes (from the file's suffix).
-TABLE_SUFFIXES = (".nc", ".csv")
+    refresh_interrupt_line()
 
 
 def check_table_output(path: str) -> Path:
-    """Check an ``--out`` path of a search or sweep before any computation: ``.nc`` or
-    ``.csv`` and an existing directory; raises ``CommandFailure`` (status 2)."""
-    from pencore.cli.options import CommandFailure, check_output
+    """Check an ``--out`` path of a search or sweep before any computation
+    (:func:`pencore.cli.options.check_output` with
+    :data:`pencore.io.outputs.TABLE_SUFFIXES`, ``.nc`` or ``.csv``); ``CommandFailure``
+    status 2."""
+    from pencore.cli.options import check_output
+    from pencore.io.outputs import TABLE_SUFFIXES
 
-    p = Path(path)
-    if p.suffix.lower() == ".nc":
-        return check_output(path)
-    if p.suffix.lower() != ".csv":
-        raise CommandFailure(
-            f"output file {path!r} must end in one of {', '.join(TABLE_SUFFIXES)}", 2
-        )
-    return _file_in_a_folder(path, "output file")
+    return check_output(path, suffixes=TABLE_SUFFIXES)
 
 
 def dataset_csv(ds: Any) -> str:
@@ -286,20 +258,19 @@ def read_csv(path: str | os.PathLike[str]) -> Any:
 def write_table(ds: Any, path: Path, args: argparse.Namespace, study: str) -> None:
     """Write a search's or sweep's Dataset to ``path`` (``.nc``: netCDF with provenance;
     ``.csv``: :func:`dataset_csv`), atomically; ``CommandFailure`` status 1 on failure."""
-    from pencore.cli.options import CommandFailure, cli_inputs
+    from pencore.cli.options import CommandFailure, cli_inputs, refresh_interrupt_line
     from pencore.errors import WriteError
-    from pencore.io.atomic import atomic_path
+    from pencore.io.atomic import atomic_write_text
     from pencore.io.netcdf import write_netcdf
 
     try:
         if path.suffix.lower() == ".nc":
             write_netcdf(ds, path, config_slice={"cli": cli_inputs(args)}, study=study)
         else:
-            text = dataset_csv(ds)
-            with atomic_path(path) as tmp:
-                Path(tmp).write_text(text, encoding="utf-8")
+            atomic_write_text(path, dataset_csv(ds), suffixes=(".csv",))
     except WriteError as exc:
         raise CommandFailure(str(exc), 1) from None
+    refresh_interrupt_line()
 
 
 def add_run_options(p: argparse.ArgumentParser, numerics_help: str) -> None:

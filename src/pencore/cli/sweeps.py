@@ -210,6 +210,7 @@ def run_sweep(args: argparse.Namespace) -> int:
             g = ds["peak_deceleration_g"].values
             fields = [
                 Field("points", "points", int(v.size), "1", text=str(v.size)),
+                _failed_runs(ds),
                 Field("depth_max", "deepest", _max(d), "m"),
                 Field("peak_deceleration_g_max", "highest peak deceleration", _max(g), "1",
                       text=f"{_max(g):.4g} g"),
@@ -220,14 +221,27 @@ def run_sweep(args: argparse.Namespace) -> int:
             a = ds.attrs
             fields = [
                 Field("points", "points", int(v.size), "1", text=str(v.size)),
+                _failed_runs(ds),
                 Field("perforated", "runs that perforate",
                       int((ds["residual_velocity"].values > 0).sum()), "1"),
+                Field("recht_ipson_status", "Recht-Ipson fit", a["recht_ipson_status"]),
                 Field("v_bl_fit", "Recht-Ipson v_bl (fitted)", a["v_bl_m_s"], "m s-1"),
                 Field("recht_ipson_a", "Recht-Ipson a", a["recht_ipson_a"], "1"),
                 Field("recht_ipson_p", "Recht-Ipson p", a["recht_ipson_p"], "1"),
             ]  # fmt: skip
+        if (ds["outcome"].values == "solver_error").any():
+            status = NOT_FOUND  # the table is written; those rows say why they are empty
     write_outputs(ds, fields, out, plot, args, draw=_draw(args.command))
     return status
+
+
+def _failed_runs(ds: Any) -> Field:
+    """How many runs of a sweep could not finish (their rows: outcome solver_error, the
+    reason in ``message``)."""
+    failed = ds["outcome"].values == "solver_error"
+    n = int(failed.sum())
+    text = f"{n} (first: {ds['message'].values[failed][0]})" if n else "0"
+    return Field("runs_failed", "runs that could not finish", n, "1", text=text)
 
 
 def _draw(command: str) -> Any:

@@ -50,7 +50,7 @@ from typing import Any
 import yaml
 
 from pencore.errors import InputError
-from pencore.io.atomic import file_kind
+from pencore.io.outputs import file_kind, note_input
 
 __all__ = [
     "brief",
@@ -429,6 +429,7 @@ def read_text(path: str | os.PathLike[str], name: str, kind: str) -> str:
         os.close(fd)
     if len(data) > MAX_YAML_BYTES:
         raise InputError(f"{name} is larger than {MAX_YAML_BYTES} bytes")
+    note_input(path)  # no writer of the same call may replace it
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError:

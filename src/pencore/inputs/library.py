@@ -214,14 +214,14 @@ def shipped_table3_geometry(path: str | Path = TABLE3_GEOMETRY_FILE) -> tuple[fl
 def write_table3_geometry(fit: Table3Fit, path: str | Path = TABLE3_GEOMETRY_FILE) -> None:
     """Write ``fit``'s diameter and shank length (m) to ``path`` atomically, with the
     provenance header that :data:`TABLE3_GEOMETRY_FILE` carries."""
-    from pencore.io.atomic import atomic_path
+    from pencore.io.atomic import atomic_write_text
+    from pencore.io.outputs import YAML_SUFFIXES
 
     header = [ln for ln in TABLE3_GEOMETRY_FILE.read_text().splitlines() if ln.startswith("#")]
     text = "\n".join(
         [*header, f"diameter_m: {fit.diameter!r}", f"shank_length_m: {fit.shank_length!r}", ""]
     )
-    with atomic_path(path) as tmp:
-        Path(tmp).write_text(text)
+    atomic_write_text(path, text, suffixes=YAML_SUFFIXES)
 
 
 @functools.cache

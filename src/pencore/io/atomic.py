@@ -8,9 +8,12 @@ file-size limit, permission, the netCDF library's own ``RuntimeError``, Ctrl-C, 
 the temporary file is removed and the failure is raised as one :class:`~pencore.WriteError` whose
 message names the path and the cause in words.
 
-Only a regular file (or nothing) is replaced: a destination that is a directory, a
-device, a FIFO or a socket, or that is one of the run's own inputs (``protect``), is
-refused with a :class:`~pencore.WriteError` before anything is written.
+Only what the output gate allows is replaced (:func:`pencore.io.outputs.check_destination`:
+a regular file, or nothing, that is writable, has a suffix the writer knows and is none of
+the call's inputs); anything else is refused with a :class:`~pencore.WriteError` before
+anything is written. A finished write is recorded in the open call
+(:func:`pencore.io.outputs.note_written`), so that an interrupted command can say what
+is on disk.
 
 Temporary files are named ``.<name>.pencore-tmp-<pid>-<random>`` (``<name>`` cut to
 :data:`TEMP_NAME_CHARS` characters, so that a long file name still leaves room). A run killed with
@@ -22,20 +25,26 @@ job, is left alone).
 from __future__ import annotations
 
 import contextlib
-import errno
 import os
 import secrets
 import shutil
 import signal
-import stat
 import threading
 from collections.abc import Iterable, Iterator
 from pathlib import Path
 
 from pencore.errors import WriteError, hint_keywords
+from pencore.io.outputs import (
+    check_destination,
+    check_replaceable,
+    describe_os_error,
+    file_kind,
+    note_written,
+)
 
 __all__ = [
     "atomic_path",
+    "atomic_write_text",
     "check_replaceable",
     "describe_os_error",
     "file_kind",
@@ -47,30 +56,6 @@ TEMP_MARK = ".pencore-tmp-"
 #: Characters of the destination's name kept in its temporary file's name (a name of up
 #: to 255 bytes, the usual file-system limit, then still has a temporary file).
 TEMP_NAME_CHARS = 100
-
-_CAUSES = {
-    errno.ENOSPC: "disk full",
-    errno.EDQUOT: "disk quota exceeded",
-    errno.EFBIG: "file too large (file-size limit)",
-    errno.EACCES: "permission denied",
-    errno.EPERM: "permission denied",
-    errno.EROFS: "read-only file system",
-    errno.ENOENT: "directory does not exist",
-    errno.ENOTDIR: "a parent is not a directory",
-    errno.EISDIR: "is a directory",
-}
-
-
-def describe_os_error(exc: BaseException) -> str:
-    """The cause of a write failure in words (``"disk full"``, ``"permission denied"``)."""
-    code = getattr(exc, "errno", None)
-    if code in _CAUSES:
-        return _CAUSES[code]
-    if isinstance(exc, OSError) and code is not None:
-        name = errno.errorcode.get(code, str(code))
-        return f"{name}: {exc.strerror or exc}"
-    text = " ".join(str(exc).split()) or type(exc).__name__
-    return f"{type(exc).__name__}: {text}"
 
 
 def _pid_alive(pid: int) -> bool:
@@ -99,80 +84,6 @@ def _clean_stale_temps(path: Path) -> None:
 
 def _temp_prefix(path: Path) -> str:
     return f".{path.name[:TEMP_NAME_CHARS]}{TEMP_MARK}"
-
-
-def check_replaceable(
-    path: str | os.PathLike[str], protect: Iterable[str | os.PathLike[str]] = ()
-) -> None:
-    """Refuse a destination that is not a regular file or that is one of ``protect``.
-
-    Parameters
-    ----------
-    path : path-like
-        The destination (it may not exist yet).
-    protect : iterable of path-like
-        Files the destination must not be (a run's own inputs); compared as files
-        (device and inode), so another spelling or a hard link of an input is refused
-        too.
-
-    Raises
-    ------
-    WriteError
-        One line naming the path and what it is.
-    """
-    try:
-        st = os.lstat(path)
-    except (FileNotFoundError, NotADirectoryError):  # nothing there to replace
-        return
-    except OSError as exc:
-        raise WriteError(f"cannot write {_quote(path)}: {describe_os_error(exc)}") from None
-    except ValueError:  # an embedded NUL
-        raise WriteError(f"cannot write {_quote(path)}: the name holds a NUL character") from None
-    if stat.S_ISLNK(st.st_mode):
-        # renaming onto it would replace the link itself, not the file it points to
-        raise WriteError(
-            f"cannot write {_quote(path)}: it is a symbolic link (to "
-            f"{_quote(os.readlink(path))}); only a regular file is replaced: give the file "
-            "it points to, or another name",
-            errno.EEXIST,
-        )
-    if not stat.S_ISREG(st.st_mode):
-        raise WriteError(
-            f"cannot write {_quote(path)}: it is {file_kind(st.st_mode)}, not a regular file; "
-            "only a regular file is replaced",
-            errno.EEXIST,
-        )
-    for other in protect:
-        try:
-            o = os.stat(other)
-        except OSError:
-            continue
-        if (o.st_dev, o.st_ino) == (st.st_dev, st.st_ino):
-            raise WriteError(
-                f"cannot write {_quote(path)}: it is an input of this run "
-                f"({_quote(other)}); choose another output name",
-                errno.EEXIST,
-            )
-
-
-def _quote(path: str | os.PathLike[str]) -> str:
-    text = str(path)
-    return repr(text) if len(text) <= 200 else repr("..." + text[-197:])
-
-
-def file_kind(mode: int) -> str:
-    """What a file of this ``st_mode`` is, in words (``"a directory"``, ``"a FIFO"``,
-    ...), for messages that refuse anything but a regular file."""
-    for test, word in (
-        (stat.S_ISDIR, "a directory"),
-        (stat.S_ISFIFO, "a FIFO"),
-        (stat.S_ISCHR, "a character device"),
-        (stat.S_ISBLK, "a block device"),
-        (stat.S_ISSOCK, "a socket"),
-    ):
-        if test(mode):
-            return word
-    return "not a regular file"
 
 
 def _fsync_dir(directory: Path) -> None:
@@ -220,6 +131,7 @@ def atomic_path(
     path: str | os.PathLike[str],
     mode: int = 0o666,
     protect: Iterable[str | os.PathLike[str]] = (),
+    suffixes: Iterable[str] | None = None,
 ) -> Iterator[Path]:
     """Write ``path`` atomically: yield a temporary path to write to (see the module).
 
@@ -231,6 +143,8 @@ def atomic_path(
         Permission bits of the finished file, before the umask.
     protect : iterable of path-like
         Files ``path`` must not be (the run's own inputs), see :func:`check_replaceable`.
+    suffixes : iterable of str, optional
+        The suffixes the writer knows (e.g. ``(".nc",)``); None: any.
 
     Raises
     ------
@@ -240,9 +154,8 @@ def atomic_path(
         temporary file removed. ``KeyboardInterrupt``
         and ``SystemExit`` (SIGTERM) pass through, also after the clean-up.
     """
-    path = Path(path)
     protect = tuple(protect)
-    check_replaceable(path, protect)
+    path = check_destination(path, suffixes, protect)
     _clean_stale_temps(path)
     tmp = path.parent / f"{_temp_prefix(path)}{os.getpid()}-{secrets.token_hex(4)}"
     try:
@@ -254,6 +167,7 @@ def atomic_path(
                 os.chmod(tmp, mode & ~_umask())
                 check_replaceable(path, protect)  # it may have changed while writing
                 os.replace(tmp, path)
+                note_written(path)
             except BaseException:
                 with contextlib.suppress(OSError):
                     tmp.unlink()
@@ -295,6 +209,18 @@ def _umask() -> int:
     mask = os.umask(0)
     os.umask(mask)
     return mask
+
+
+def atomic_write_text(
+    path: str | os.PathLike[str],
+    text: str,
+    suffixes: Iterable[str] | None = None,
+    protect: Iterable[str | os.PathLike[str]] = (),
+) -> Path:
+    """Write ``text`` (UTF-8) to ``path`` through :func:`atomic_path`; returns the path."""
+    with atomic_path(path, protect=protect, suffixes=suffixes) as tmp:
+        Path(tmp).write_text(text, encoding="utf-8")
+    return Path(path)
 
 
 hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

@@ -28,6 +28,7 @@ import xarray as xr
 
 from pencore.errors import InputError, ResultError, WriteError, hint_keywords
 from pencore.io.atomic import atomic_path, describe_os_error
+from pencore.io.outputs import NETCDF_SUFFIXES, check_destination, note_input
 from pencore.io.results import unreadable_message
 from pencore.version import __version__
 
@@ -163,7 +164,9 @@ def write_netcdf(
     ds : xarray.Dataset
         Dataset to write; it is not modified.
     path : path-like
-        Destination (``.nc``). Parent directories are created.
+        Destination; must end in ``.nc``. Parent directories are created. The output
+        gate's rules hold (:mod:`pencore.io.outputs`): not a directory, a read-only file,
+        the file ``ds`` was read from, or an input of the open call.
     config_slice : mapping
         The exact inputs (configuration entries) that produced ``ds``; stored as
         canonical JSON in the ``config_json`` attribute with its sha256 in
@@ -213,7 +216,10 @@ def write_netcdf(
     """
     if not isinstance(ds, xr.Dataset):
         raise TypeError(f"write_netcdf needs an xarray.Dataset, got {type(ds).__name__}")
-    path = Path(path)
+    # the file a Dataset was read from is its input: never replaced by it
+    source = ds.encoding.get("source")
+    protect = [*protect, *([source] if isinstance(source, str) else [])]
+    path = check_destination(path, NETCDF_SUFFIXES, protect)  # before a folder is made
     try:  # inside the promise: any failure to write is one WriteError line
         path.parent.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
@@ -227,7 +233,7 @@ def write_netcdf(
     for name in out.variables:
         out[name].attrs = _netcdf_safe_attrs(out[name].attrs)
     out, encoding = cf_encoding(out)
-    with atomic_path(path, protect=protect) as tmp:
+    with atomic_path(path, protect=protect, suffixes=NETCDF_SUFFIXES) as tmp:
         out.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
     return path
 
@@ -372,6 +378,7 @@ def read_netcdf(path: str | os.PathLike[str]) -> xr.Dataset:
         ) from None
     except (OSError, RuntimeError, ValueError, KeyError) as exc:
         raise ResultError(unreadable_message(path, exc)) from None
+    note_input(path)  # no writer of the same call may replace it
     if ELAPSED_TIME in ds.dims and "time" not in ds.variables:
         ds = ds.rename({ELAPSED_TIME: "time"})
         if "time" in ds.variables and ds["time"].attrs.get("comment") == _ELAPSED_TIME_COMMENT:

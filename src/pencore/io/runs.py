@@ -17,9 +17,17 @@ from pencore.errors import InputError
 __all__ = ["check_run"]
 
 
-def check_run(ds: Any, what: str, variables: Iterable[str] = (), attrs: Iterable[str] = ()) -> None:
+def check_run(
+    ds: Any,
+    what: str,
+    variables: Iterable[str] = (),
+    attrs: Iterable[str] = (),
+    made_by: str = "pencore.simulate",
+    nonempty: Iterable[str] = (),
+    numeric: bool = False,
+) -> None:
     """Refuse ``ds`` unless it is an :class:`xarray.Dataset` with ``variables`` and
-    ``attrs``.
+    ``attrs``, and at least one point along each of the dimensions ``nonempty``.
 
     Parameters
     ----------
@@ -29,11 +37,20 @@ def check_run(ds: Any, what: str, variables: Iterable[str] = (), attrs: Iterable
         The function's name, for the message.
     variables, attrs : iterable of str
         The data variables (or coordinates) and attributes the function reads.
+    made_by : str
+        What makes the Dataset the function takes, for the message
+        (``"pencore.simulate"``, ``"pencore.search.history.search_dataset"``).
+    nonempty : iterable of str
+        Dimensions that must hold at least one point (a run's ``time``).
+    numeric : bool
+        Whether ``variables`` must hold numbers (an edited Dataset may hold text, which
+        matplotlib would draw as categories without a word).
 
     Raises
     ------
     InputError
-        One line: the type given, or the names the Dataset lacks.
+        One line: the type given, the names the Dataset lacks, or the dimension it has no
+        point along.
 
     Examples
     --------
@@ -49,11 +66,13 @@ def check_run(ds: Any, what: str, variables: Iterable[str] = (), attrs: Iterable
     """  # noqa: E501
     import xarray as xr
 
+    variables = list(variables)
+
     if not isinstance(ds, xr.Dataset):
         shown = repr(ds)
         shown = shown if len(shown) <= 40 else shown[:37] + "..."
         raise InputError(
-            f"{what} needs a Dataset made by pencore.simulate, got {type(ds).__name__} {shown}"
+            f"{what} needs a Dataset made by {made_by}, got {type(ds).__name__} {shown}"
         )
     missing = [v for v in variables if v not in ds.variables]
     missing_attrs = [a for a in attrs if a not in ds.attrs]
@@ -64,5 +83,17 @@ def check_run(ds: Any, what: str, variables: Iterable[str] = (), attrs: Iterable
         if missing_attrs:
             parts.append(f"the attribute(s) {', '.join(missing_attrs)}")
         raise InputError(
-            f"{what} needs a Dataset made by pencore.simulate; this one lacks {' and '.join(parts)}"
+            f"{what} needs a Dataset made by {made_by}; this one lacks {' and '.join(parts)}"
         )
+    if numeric:
+        for v in variables:
+            if ds[v].dtype.kind not in "iuf":
+                raise InputError(
+                    f"{what} needs a Dataset made by {made_by}; its variable {v} holds "
+                    f"{ds[v].dtype} values, not numbers"
+                )
+    for dim in nonempty:
+        if ds.sizes.get(dim, 0) == 0:
+            raise InputError(
+                f"{what} needs a Dataset made by {made_by}; this one has no point along {dim!r}"
+            )

@@ -22,9 +22,13 @@ stricter by a manifest: it is complete (written to a ``.partial-*`` folder and r
 into place as a whole; a partial folder is never read), its ``BUILD.json`` equals the key
 asked for (stamp, numba, Python, target), every file of its ``MANIFEST.json`` is there
 with the SHA-256 recorded when it was stored (a truncated, emptied or garbage file fails),
-and every numba index file starts with this numba's version. An entry that fails is
-deleted (it could only fail again) and the kernels are compiled, as without a cache. A
-cache that cannot be written (a read-only home) only costs the copy for next time. The
+and every numba index file starts with this numba's version, compared as bytes: nothing
+in the cache is unpickled by the build (:func:`index_version` reads the version's few
+leading bytes without executing anything). An entry that fails is deleted (it could only
+fail again) and the kernels are compiled, as without a cache. Any failure to use the
+cache (a ``PENCORE_BUILD_CACHE`` that cannot be expanded or is too long, a leftover
+``compiled.partial`` file, an entry that cannot be read) means compile, said in one line;
+a cache that cannot be written (a read-only home) only costs the copy for next time. The
 cache keeps the :data:`KEEP` entries used last (about 7 MB each) and the partial folders
 of builds that are still running (younger than :data:`PARTIAL_AGE_S`).
 
@@ -37,7 +41,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
-import pickle
+import pickle  # dumps only: the expected bytes of a version; nothing is loaded
 import shutil
 import sys
 import time
@@ -53,6 +57,9 @@ __all__ = [
     "KEY_FIELDS",
     "PARTIAL_AGE_S",
     "cache_root",
+    "resolve_root",
+    "clear_partial",
+    "index_version",
     "entry_name",
     "find_entry",
     "provide_kernels",
@@ -105,6 +112,90 @@ def cache_root(environ: dict[str, str] | None = None) -> Path | None:
     else:
         base = Path(env.get("XDG_CACHE_HOME") or Path.home() / ".cache")
     return base / "pencore" / "build-kernels"
+
+
+def resolve_root(environ: dict[str, str] | None = None) -> tuple[Path | None, str]:
+    """:func:`cache_root` and, when there is none, why in words: ``(root, "")``,
+    ``(None, "disabled")``, or ``(None, why)`` when the setting cannot be used (a ``~user``
+    that does not exist, no home folder).
+
+    Examples
+    --------
+    >>> resolve_root({"PENCORE_BUILD_CACHE": "~no_such_user_here/x"})[1][:38]
+    'PENCORE_BUILD_CACHE cannot be expanded'
+    """
+    try:
+        root = cache_root(environ)
+    except (RuntimeError, KeyError, ValueError, OSError) as exc:
+        return None, f"{CACHE_ENV} cannot be expanded ({_brief(exc)})"
+    return (root, "") if root is not None else (None, "disabled")
+
+
+def _brief(exc: BaseException) -> str:
+    """An exception in one short line."""
+    text = " ".join(f"{type(exc).__name__}: {exc}".split())
+    return text if len(text) <= 160 else text[:157] + "..."
+
+
+def clear_partial(path: Path) -> None:
+    """Remove what is at ``path`` (a leftover ``compiled.partial`` of a stopped build: a
+    folder, a file or a link); nothing when there is nothing."""
+    path = Path(path)
+    try:
+        if path.is_symlink() or (path.exists() and not path.is_dir()):
+            path.unlink()
+        else:
+            shutil.rmtree(path, ignore_errors=True)
+    except OSError:
+        pass
+
+
+def index_version(head: bytes) -> str | None:
+    """The numba version at the start of a numba index file, read from its bytes without
+    unpickling: numba writes it first as a pickled ``str`` (``pickle.dump(version, f,
+    protocol=-1)``: the PROTO opcode, a FRAME on protocol 4 and above, then
+    SHORT_BINUNICODE or BINUNICODE, its memo and STOP); None when the bytes are not that.
+
+    Examples
+    --------
+    >>> import pickle
+    >>> index_version(pickle.dumps("0.61.0", protocol=-1) + b"rest of the index")
+    '0.61.0'
+    >>> index_version(b"cos\\nsystem\\n...") is None
+    True
+    """
+    try:
+        if head[0] != 0x80:  # PROTO
+            return None
+        i = 2
+        if head[1] >= 4:
+            if head[i] != 0x95:  # FRAME
+                return None
+            i += 9
+        if head[i] == 0x8C:  # SHORT_BINUNICODE
+            n, i = head[i + 1], i + 2
+        elif head[i] == 0x58:  # BINUNICODE
+            n, i = int.from_bytes(head[i + 1 : i + 5], "little"), i + 5
+        else:
+            return None
+        text, j = head[i : i + n], i + n
+        if len(text) != n or n > 64:
+            return None
+        if head[j] == 0x94:  # MEMOIZE (protocol 4 and above)
+            j += 1
+        elif head[j] == 0x71:  # BINPUT (protocols 1-3)
+            j += 2
+        if head[j] != 0x2E:  # STOP: the string is the whole first pickle
+            return None
+        return text.decode("utf-8")
+    except (IndexError, UnicodeDecodeError):
+        return None
+
+
+def _expected_index_head(version: str) -> bytes:
+    """The leading bytes numba writes for ``version`` in an index (the pickled string,
+    as this interpreter's highest protocol writes it, as numba does)."""
+    return pickle.dumps(version, protocol=-1)
 
 
 def entry_name(record: dict[str, str]) -> str:
@@ -166,11 +257,15 @@ def verify_entry(entry: Path, record: dict[str, str]) -> str | None:
             if _sha256(path) != manifest[name]:
                 return f"{name} does not match its SHA-256 (damaged)"
             if name.endswith(".nbi"):
+                expected = _expected_index_head(record["numba"])
                 with open(path, "rb") as f:
-                    version = pickle.load(f)  # a str: numba's own first read of an index
-                if version != record["numba"]:
+                    head = f.read(max(len(expected), 128))
+                if head[: len(expected)] != expected:
+                    version = index_version(head)
+                    if version is None:
+                        return f"{name} does not start as a numba index (not unpickled)"
                     return f"{name} is an index of numba {version!r}"
-        except (OSError, pickle.UnpicklingError, EOFError, ValueError) as exc:
+        except OSError as exc:
             return f"{name} cannot be read ({type(exc).__name__})"
     return None
 
@@ -258,8 +353,8 @@ def _copy_entry(entry: Path, dest: Path) -> str:
             if (entry / d).is_dir():
                 shutil.copytree(entry / d, dest / d)
         copied = {p.relative_to(dest).as_posix(): _sha256(p) for p in _kernel_files(dest)}
-    except (OSError, ValueError) as exc:
-        return f"copy from {entry} failed ({type(exc).__name__})"
+    except Exception as exc:
+        return f"copy from {entry} failed ({_brief(exc)})"
     return "" if copied == manifest else f"copy from {entry} differs from its manifest"
 
 
@@ -269,6 +364,7 @@ def provide_kernels(
     compile_into: Callable[[Path], float | None],
     root: Path | None,
     say: Callable[[str], None] = print,
+    no_root: str = "disabled",
 ) -> dict | None:
     """Put the kernels of key ``record`` into ``out``: copied from the build cache under
     ``root`` when it holds a verified entry, else compiled by ``compile_into(folder)``
@@ -278,17 +374,25 @@ def provide_kernels(
     ``BUILD.json`` is ``record`` plus ``build`` (``compiled`` or ``copied``),
     ``compile_s`` (the seconds this build compiled: 0 when copied) and ``build_cache``
     (the entry, or None). Returns that record, or None when the compile failed (``out``
-    is then left absent). ``say`` reports each step in one line.
+    is then left absent). ``say`` reports each step in one line; ``no_root`` is why
+    there is no cache when ``root`` is None (:func:`resolve_root`). Any failure to use
+    the cache is a compile, and one that keeps it from storing the result only a line.
     """
     out = Path(out)
     tmp = out.with_name(out.name + ".partial")
-    shutil.rmtree(tmp, ignore_errors=True)
-    entry, why = (None, "disabled") if root is None else find_entry(root, record)
-    if entry is not None:
-        why = _copy_entry(entry, tmp)
-        if why:
-            shutil.rmtree(tmp, ignore_errors=True)
-            entry = None
+    clear_partial(tmp)  # a stopped build's leftover: a folder, or a file
+    entry, why = None, no_root
+    if root is not None:
+        try:
+            entry, why = find_entry(root, record)
+            if entry is not None:
+                why = _copy_entry(entry, tmp)
+                if why:
+                    entry = None
+        except Exception as exc:  # any failure to use the cache means compile
+            entry, why = None, f"the build cache {str(root)[:80]!r} cannot be used ({_brief(exc)})"
+    if entry is None:
+        clear_partial(tmp)
     if entry is not None:
         say(f"pencore build: numba kernels copied from the build cache {entry} (no compile)")
         done = {**record, "build": "copied", "compile_s": 0.0, "build_cache": str(entry)}
@@ -309,10 +413,13 @@ def provide_kernels(
                 done["build_cache"] = str(store_entry(root, tmp, done))
                 say(f"pencore build: kept in the build cache {done['build_cache']}")
                 prune(root)
-            except OSError as exc:
-                say(f"pencore build: the build cache {root} cannot be written ({exc}): not kept")
+            except Exception as exc:  # the kernels are built; only the copy is lost
+                say(
+                    f"pencore build: the build cache {str(root)[:80]!r} cannot be written "
+                    f"({_brief(exc)}): not kept"
+                )
     (tmp / BUILD_FILE).write_text(json.dumps(done, indent=1) + "\n")
-    shutil.rmtree(out, ignore_errors=True)
+    clear_partial(out)
     os.replace(tmp, out)
     return done
 

@@ -9,7 +9,9 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 from pencore.analysis.errors import summary_statistics
-from pencore.errors import hint_keywords
+from pencore.errors import InputError, hint_keywords
+from pencore.inputs.gate import brief
+from pencore.io.runs import check_run
 from pencore.plotting.critical import _search_errorbars
 from pencore.plotting.style import _MARKERS, _VI, _c, _pname, new_figure, styled
 
@@ -29,6 +31,9 @@ def plot_ballistic_limit(ds: xr.Dataset) -> Figure:
     line, the thickness in the legend): a single thickness on the abscissa would stack
     every obliquity's point on one vertical line.
     """
+    check_run(ds, "plot_ballistic_limit", ("thickness", "obliquity", "v_bl", "v_bl_lo", "v_bl_hi"),
+              made_by="pencore.studies.sweeps.ballistic_table (pencore ballistic-table --out)",
+              nonempty=("thickness", "obliquity"), numeric=True)  # fmt: skip
     fig = new_figure(6.4, 4.6)
     ax = fig.add_subplot()
     th = ds["thickness"].values
@@ -57,12 +62,15 @@ def plot_ballistic_limit(ds: xr.Dataset) -> Figure:
 
 @styled
 def plot_residual_velocity(ds: xr.Dataset) -> Figure:
-    """Residual speed of the runs and the fitted Recht-Ipson curve."""
+    """Residual speed of the runs and the fitted Recht-Ipson curve (when one was made)."""
+    fit = ("recht_ipson_a", "recht_ipson_p", "v_bl_m_s")
+    check_run(ds, "plot_residual_velocity", ("velocity", "residual_velocity"), fit,
+              made_by="pencore.studies.sweeps.residual_curve (pencore residual-velocity --out)",
+              nonempty=("velocity",), numeric=True)  # fmt: skip
+    a, p, vb = (_attr_number(ds, k, "plot_residual_velocity") for k in fit)
     fig = new_figure(6.4, 4.6)
     ax = fig.add_subplot()
-    v = ds["velocity"].values
-    a, p = ds.attrs["recht_ipson_a"], ds.attrs["recht_ipson_p"]
-    vb = ds.attrs["v_bl_m_s"]
+    v = np.asarray(ds["velocity"].values, dtype=float)
     ax.plot(v, ds["residual_velocity"].values, "o", color=_c(0), label="pencore runs")
     if np.isfinite(a) and np.isfinite(vb):
         vf = np.linspace(min(v.min(), vb), v.max(), 400)
@@ -89,6 +97,17 @@ def plot_residual_velocity(ds: xr.Dataset) -> Figure:
         fontsize=9,
     )
     return fig
+
+
+def _attr_number(ds: xr.Dataset, key: str, what: str) -> float:
+    """The attribute ``key`` as a float (NaN is a number: no fit); one line if it is not."""
+    value = ds.attrs[key]
+    try:
+        return float(np.asarray(value, dtype=float))
+    except (TypeError, ValueError):
+        raise InputError(
+            f"{what}: attribute {key} must be a number, got {brief(value)}; is this Dataset edited?"
+        ) from None
 
 
 @styled

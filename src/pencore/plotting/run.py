@@ -19,6 +19,7 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 from pencore.errors import InputError, hint_keywords
+from pencore.io.runs import check_run
 from pencore.plotting.style import _c, _pname, new_figure, save_figure, styled
 
 __all__ = ["plot_run", "AGAINST", "layer_faces"]
@@ -74,6 +75,7 @@ def plot_run(
             "plot_run takes one trajectory of pencore.simulate (variables tip_x, tip_y, "
             "deviation, speed on 'time'); a study's dataset has its own plot_* function"
         )
+    check_run(ds, "plot_run", ("time", *_NEEDED), nonempty=("time",), numeric=True)  # an empty run
     if against not in AGAINST:
         raise InputError(f"against must be one of {', '.join(AGAINST)}, got {against!r}")
     fig = new_figure(9.0, 6.4)
@@ -123,8 +125,9 @@ def plot_run(
         f"({a.get('outcome', '')})",
         fontsize=10,
     )
-    if path is not None:
-        save_figure(fig, path)
+    if path is not None:  # never onto the file the Dataset was read from
+        source = ds.encoding.get("source")
+        save_figure(fig, path, protect=[source] if isinstance(source, str) else [])
     return fig
 
 

@@ -10,7 +10,8 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from pencore.errors import InputError, hint_keywords
+from pencore.errors import hint_keywords
+from pencore.io.runs import check_run
 from pencore.plotting.style import _c, _pname, new_figure, styled
 
 __all__ = ["plot_search"]
@@ -44,9 +45,12 @@ def plot_search(ds: xr.Dataset) -> Figure:
     >>> plot_search(ds).axes[0].get_ylabel()
     'vcr tried (m/s)'
     """
-    if "value" not in ds or "verdict" not in ds or "quantity" not in ds.attrs:
-        raise InputError("plot_search takes a search's dataset (pencore.search.history)")
-    name = ds.attrs["quantity"]
+    made_by = "pencore.search.history.search_dataset (pencore vcr --out ...)"
+    check_run(ds, "plot_search", ("value", "verdict", "evaluation"), ("quantity", "status"),
+              made_by)  # fmt: skip
+    name = str(ds.attrs["quantity"])
+    check_run(ds, "plot_search", ("value", name, f"{name}_lo", f"{name}_hi"), (), made_by,
+              numeric=True)  # fmt: skip
     units = ds["value"].attrs.get("units", "")
     fig = new_figure(6.4, 4.4)
     ax = fig.add_subplot()

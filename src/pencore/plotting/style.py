@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import functools
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
@@ -50,16 +50,41 @@ STYLE: dict[str, Any] = {
 
 
 def styled(plot: Callable[..., Figure]) -> Callable[..., Figure]:
-    """Decorator: run a ``plot_*`` function inside ``matplotlib.rc_context(STYLE)``.
+    """Decorator of every ``plot_*`` function: check its Dataset, and run it inside
+    ``matplotlib.rc_context(STYLE)``.
 
     Artists read rcParams when they are created, so the style has to be active while the
-    figure is built, not only when it is saved.
+    figure is built, not only when it is saved. The first argument must be an
+    :class:`xarray.Dataset` (:func:`pencore.io.runs.check_run`); each function checks
+    the variables and attributes it reads. A Dataset of another kind or a tampered one
+    that gets past those checks, and so fails while it is drawn (a missing name, a value
+    of the wrong kind, an empty axis), is one :class:`~pencore.InputError` line naming
+    the function and the failure, never a traceback from deep inside xarray or matplotlib.
     """
+    import inspect
+
+    signature = inspect.signature(plot)
+    name = plot.__name__
 
     @functools.wraps(plot)
     def wrapper(*args: Any, **kwargs: Any) -> Figure:
-        with matplotlib.rc_context(STYLE):
-            return plot(*args, **kwargs)
+        from pencore.errors import InputError
+        from pencore.inputs.gate import brief
+        from pencore.io.runs import check_run
+
+        bound = signature.bind(*args, **kwargs)  # a wrong argument is Python's own TypeError
+        first = next(iter(bound.arguments.values()), None)
+        check_run(first, name, made_by="the pencore study or run it draws")
+        try:
+            with matplotlib.rc_context(STYLE):
+                return plot(*args, **kwargs)
+        except InputError:
+            raise
+        except (KeyError, ValueError, TypeError, IndexError, ZeroDivisionError) as exc:
+            raise InputError(
+                f"{name} cannot draw this Dataset ({type(exc).__name__}: {brief(str(exc))}): "
+                f"is it the Dataset {name} takes, unedited? (see help(pencore.plotting.{name}))"
+            ) from None
 
     return wrapper
 
@@ -72,22 +97,65 @@ def new_figure(width: float = 6.4, height: float = 4.4) -> Figure:
 
 
 def save_figure(
-    fig: Figure, *paths: str | os.PathLike[str], dpi: int = 150, fmt: str | None = None
+    fig: Figure,
+    *paths: str | os.PathLike[str],
+    dpi: int = 150,
+    fmt: str | None = None,
+    protect: Iterable[str | os.PathLike[str]] = (),
 ) -> list[Path]:
-    """Save ``fig`` to every path (format from the suffix, e.g. ``.png``, ``.pdf``, or
-    ``fmt`` when given: a temporary file without a suffix).
+    """Save ``fig`` to every path, each written atomically through the output gate.
 
-    Parent directories are created. Returns the paths written.
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure.
+    *paths : path-like
+        Destinations; the format comes from the suffix, one of
+        :data:`pencore.io.outputs.FIGURE_SUFFIXES` (``.png``, ``.pdf``, ``.svg``), or
+        ``fmt`` when given. Parent directories are created. Each path obeys the output
+        gate (:mod:`pencore.io.outputs`: not a directory, a read-only file, an input of
+        the open call or one of ``protect``).
+    dpi : int
+        Resolution of raster formats (dots per inch).
+    fmt : str, optional
+        The format, for a path without a suffix.
+    protect : iterable of path-like
+        Files no path may be (the inputs the figure was drawn from).
+
+    Returns
+    -------
+    list of pathlib.Path
+        The paths written.
+
+    Raises
+    ------
+    pencore.errors.WriteError
+        A path the gate refuses (before anything is written) or a failed write (nothing
+        left of it); one line naming the path and the cause.
     """
+    from pencore.errors import WriteError
+    from pencore.io.atomic import atomic_path
+    from pencore.io.outputs import FIGURE_SUFFIXES, check_destination, describe_os_error
+
     if not paths:
         raise ValueError("save_figure needs at least one path")
+    protect = tuple(protect)
+    suffixes = None if fmt else FIGURE_SUFFIXES
+    checked = [check_destination(p, suffixes, protect) for p in paths]  # all before any
     out = []
-    for p in paths:
-        p = Path(p)
-        p.parent.mkdir(parents=True, exist_ok=True)
-        with matplotlib.rc_context(STYLE):
-            kind = Path(f"x.{fmt}") if fmt else p
-            fig.savefig(p, dpi=dpi, metadata=_metadata(kind), format=fmt)
+    for p in checked:
+        try:
+            p.parent.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise WriteError(
+                f"cannot write {str(p)!r}: its folder {str(p.parent)!r} cannot be made "
+                f"({describe_os_error(exc)})",
+                exc.errno,
+            ) from None
+        kind = fmt or p.suffix[1:].lower()
+        with atomic_path(p, protect=protect, suffixes=suffixes) as tmp:
+            with matplotlib.rc_context(STYLE):
+                fig.savefig(tmp, dpi=dpi, metadata=_metadata(Path(f"x.{kind}")), format=kind)
         out.append(p)
     return out
 

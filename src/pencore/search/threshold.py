@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from pencore.errors import InputError, hint_keywords
+from pencore.errors import InputError, SolverError, hint_keywords
 from pencore.inputs.gate import brief
 from pencore.inputs.limits import as_float, number
 from pencore.inputs.numerics import Numerics
@@ -53,7 +53,7 @@ OMEGA_TOL = 0.5
 DEFAULT_SCAN = 5
 
 #: Possible values of ``CriticalResult.status`` (:class:`~pencore.CriticalResult`).
-STATUSES = ("ok", "non_monotone", "below_range", "above_range", "max_iter")
+STATUSES = ("ok", "non_monotone", "below_range", "above_range", "max_iter", "solver_error")
 
 
 @dataclass(frozen=True)
@@ -81,7 +81,10 @@ class CriticalResult:
         first False -> True transition of a non-monotone verdict (the lowest threshold
         found). ``"below_range"``: the verdict is already True at the lower end.
         ``"above_range"``: it is still False at the upper end. ``"max_iter"``: the bracket
-        is still wider than ``tol`` after ``max_iter`` bisections.
+        is still wider than ``tol`` after ``max_iter`` bisections. ``"solver_error"``: a
+        run of the verdict could not finish (:class:`~pencore.SolverError`: the steps
+        stalled, a budget ran out); ``value``, ``lo`` and ``hi`` are NaN, ``message`` is
+        the solver's reason and ``history`` the verdicts found before it.
     message : str
         Human-readable explanation, naming the flips of a non-monotone verdict.
     history : tuple of (float, bool)
@@ -200,6 +203,18 @@ def find_threshold(
     lo, hi, tol, max_iter, scan = check_search_args(lo, hi, tol, max_iter, scan)
     search = _Search(verdict, name, tol, [lo, hi])
     log.info("%s: search in [%s, %s], tol %s", name, _fmt(lo), _fmt(hi), _fmt(tol))
+    try:
+        return _search(search, lo, hi, tol, max_iter, scan)
+    except SolverError as exc:
+        # a run that cannot finish (steps stalled, a budget spent) is this search's
+        # verdict, with its reason: the caller's table keeps every other cell
+        return search.result(math.nan, math.nan, math.nan, True, "solver_error", str(exc))
+
+
+def _search(
+    search: _Search, lo: float, hi: float, tol: float, max_iter: int, scan: int | None
+) -> CriticalResult:
+    """The search of :func:`find_threshold` on checked arguments."""
     nan = math.nan
     if search.ev(lo):
         return search.result(

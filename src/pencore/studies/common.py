@@ -28,6 +28,9 @@ __all__ = [
     "STRING_DTYPE",
     "var_attrs",
     "axis_values",
+    "MAX_AXIS_POINTS",
+    "MAX_SEARCHES",
+    "search_grid",
     "start_point",
     "PARAMETER_ATTRS",
     "search_variables",
@@ -107,15 +110,46 @@ def start_from_height(height: float) -> tuple[float, float, float] | None:
     return None if h == 0.0 else (0.0, h, 0.0)
 
 
+#: Most points of one axis of a study or sweep (one run or one search each): the
+#: workflow configuration's bound on a grid (``pencore.workflowconfig.config_check.MAX_GRID``)
+#: for the Python and command-line doors too; a typo guard (1e4 runs of about 0.1 s are
+#: about 20 minutes).
+MAX_AXIS_POINTS = 10_000
+#: Most threshold searches of one table (each is some 10-25 runs): 1000 cells are
+#: hours of work on one core, seven times the largest the workflow computes (140); a
+#: larger grid is split into several calls.
+MAX_SEARCHES = 1_000
+
+
 def axis_values(values: Iterable[float], what: str) -> np.ndarray:
     """The values of a dataset axis as floats; one line naming ``what`` if empty, not
-    finite or repeated."""
-    v = np.asarray(list(values), dtype=float).ravel()
+    finite, repeated or longer than :data:`MAX_AXIS_POINTS`."""
+    values = list(values)
+    if len(values) > MAX_AXIS_POINTS:
+        raise InputError(
+            f"{what} has {len(values)} values; at most {MAX_AXIS_POINTS} are allowed in one "
+            "call (a typo guard: split the grid into several calls)"
+        )
+    v = np.asarray(values, dtype=float).ravel()
     if v.size == 0 or not np.all(np.isfinite(v)):
         raise InputError(f"{what} must be a non-empty list of numbers, got {list(v)}")
     if np.unique(v).size != v.size:
         raise InputError(f"{what} has repeated values: {list(v)}")
     return v
+
+
+def search_grid(shape: tuple[int, ...], what: str) -> np.ndarray:
+    """An empty object array of ``shape`` for the results of a table of searches, refused
+    (one line naming ``what`` and its size) when it has more than :data:`MAX_SEARCHES`
+    cells, before any search is run."""
+    n = math.prod(shape)
+    if n > MAX_SEARCHES:
+        dims = " x ".join(str(k) for k in shape)
+        raise InputError(
+            f"{what} is a grid of {dims} = {n} searches; at most {MAX_SEARCHES} are allowed "
+            "in one call (each search is some 10-25 runs): split it into several calls"
+        )
+    return np.empty(shape, dtype=object)
 
 
 def start_point(start: Sequence[float] | None) -> tuple[float, float, float] | None:
@@ -197,7 +231,8 @@ def search_variables(
         "status": (
             dims,
             arr(lambda r: r.status, STRING_DTYPE),
-            {"units": "1", "long_name": "search status: " + ", ".join(STATUSES)},
+            # the statuses a search ends with by bisecting ("solver_error": see message)
+            {"units": "1", "long_name": "search status: " + ", ".join(STATUSES[:5])},
         ),
         "n_evals": (
             dims,

@@ -21,16 +21,18 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from pencore.errors import InputError
+from pencore.errors import InputError, SolverError
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.run.impact import prepare, simulate
-from pencore.search.perforation import fit_recht_ipson, recht_ipson
+from pencore.search.perforation import fit_recht_ipson
 from pencore.search.threshold import VELOCITY_TOL
 from pencore.studies.common import STRING_DTYPE, axis_values, var_attrs
 from pencore.studies.perforation.slabs import (
     ballistic_limit_grid,
+    fitted_curve,
     residual_runs,
     residual_variables,
+    run_messages,
 )
 
 __all__ = ["depth_curve", "residual_curve", "ballistic_table"]
@@ -95,16 +97,21 @@ def depth_curve(
     }
     cols: dict[str, np.ndarray] = {k: np.full(v.size, np.nan) for k in [*names, *peaks]}
     outcome = np.empty(v.size, dtype=STRING_DTYPE)
-    attrs: dict[str, dict] = {}
+    message = np.full(v.size, "", dtype=STRING_DTYPE)
+    attrs: dict[str, dict] = {n: {} for n in names}
     for k, vi in enumerate(v):
-        ds = simulate(pr.projectile, pr.target, float(vi), obliquity, yaw, prepared=pr,
-                      start=start)  # fmt: skip
-        for n in names:
-            cols[n][k] = float(ds[n])
-            attrs[n] = dict(ds[n].attrs)
-        for n, (a, _, _) in peaks.items():
-            cols[n][k] = ds.attrs.get(a, math.nan)
-        outcome[k] = ds.attrs["outcome"]
+        try:
+            ds = simulate(pr.projectile, pr.target, float(vi), obliquity, yaw, prepared=pr,
+                          start=start)  # fmt: skip
+        except SolverError as exc:  # a row of its own, with its reason; the others kept
+            outcome[k], message[k] = "solver_error", str(exc)
+        else:
+            for n in names:
+                cols[n][k] = float(ds[n])
+                attrs[n] = dict(ds[n].attrs)
+            for n, (a, _, _) in peaks.items():
+                cols[n][k] = ds.attrs.get(a, math.nan)
+            outcome[k] = ds.attrs["outcome"]
         if progress is not None:
             progress(f"{vi:g} m/s: depth {cols['penetration_depth'][k]:.4g} m, peak "
                      f"{cols['peak_deceleration_g'][k]:.4g} g ({outcome[k]})")  # fmt: skip
@@ -112,6 +119,8 @@ def depth_curve(
     for n, (_, units, long_name) in peaks.items():
         data[n] = ("velocity", cols[n], var_attrs(units, long_name))
     data["outcome"] = ("velocity", outcome, {"units": "1", "long_name": "outcome of the run"})
+    if any(message):
+        data["message"] = run_messages(message)
     return xr.Dataset(
         data,
         coords=_velocity_coord(v),
@@ -156,6 +165,9 @@ def residual_curve(
         ``exit_pitch`` (deg), ``outcome``; attributes ``recht_ipson_a``, ``_p`` and
         ``v_bl_m_s`` (fitted, all three free; NaN with fewer than three perforating runs)
         as :func:`pencore.plotting.perforation.plot_residual_velocity` draws them, and
+        ``recht_ipson_status`` (``"fitted"``, or why not). A run that cannot finish is
+        the row ``outcome = "solver_error"`` (residual NaN) with its reason in
+        ``message``; the other rows are kept.
         ``thickness_m``, the target's total thickness (m, gaps included).
     """
     v = axis_values(velocities, "velocities")
@@ -165,14 +177,21 @@ def residual_curve(
             f"target {pr.target.name!r} has no rear face (its last layer is a half-space): "
             "a residual velocity needs a finite target (a thickness on every layer)"
         )
-    vr, pitch, outcome = residual_runs(pr, v, obliquity, yaw, progress, start=start)
+    vr, pitch, outcome, message = residual_runs(pr, v, obliquity, yaw, progress, start=start)
     fit = {"a": math.nan, "p": math.nan, "v_bl": math.nan, "rms": math.nan}
-    curve = np.full(v.size, math.nan)  # no fit, no curve (recht_ipson refuses NaN)
-    if (vr > 0).sum() >= 3:
-        fit = fit_recht_ipson(v, vr)
-        curve = recht_ipson(v, fit["v_bl"], fit["a"], fit["p"])
+    done = np.isfinite(vr)  # the runs that finished
+    n_hit = int((vr[done] > 0).sum())
+    if n_hit >= 3:
+        try:
+            fit = fit_recht_ipson(v[done], vr[done])
+            status = "fitted"
+        except (ValueError, np.linalg.LinAlgError) as exc:  # the runs are kept all the same
+            status = f"not fitted: {' '.join(str(exc).split())}"
+    else:  # no fit: NaN parameters and curve, and why
+        status = f"not fitted: {n_hit} of {v.size} runs perforate, 3 are needed"
+    curve = fitted_curve(v, fit)
     return xr.Dataset(
-        residual_variables(vr, curve, pitch, outcome, "target"),
+        residual_variables(vr, curve, pitch, outcome, "target", message),
         coords=_velocity_coord(v),
         attrs={
             "title": "pencore residual velocity against impact velocity",
@@ -186,6 +205,7 @@ def residual_curve(
             "recht_ipson_a": float(fit["a"]),
             "recht_ipson_p": float(fit["p"]),
             "recht_ipson_rms_m_s": float(fit["rms"]),
+            "recht_ipson_status": status,
             "Conventions": "CF-1.8",
         },
     )

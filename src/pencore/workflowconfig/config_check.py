@@ -23,8 +23,12 @@ the ranges are the data :data:`KEY_RULES`, :data:`GRID_POINTS` and :data:`GRID_S
 * the Table 2 CSV has at least one row;
 * every ``numerics`` mapping passes :func:`pencore.inputs.numerics.resolve_numerics`
   (the limits the solver enforces: ``rtol: 0.5`` stops here, not in a job);
-* every projectile and target named (``projectile``, ``projectiles``, ``target``,
-  ``medium``) is in the library or an existing YAML file (read through the input gate);
+* every projectile, target and medium named (the keys :data:`NAMING_KEYS`: ``projectile``,
+  ``projectiles``, ``target``, ``targets``, ``medium``, ``media``) is in the library or an
+  existing YAML file (read through the input gate), and so is every one a measurement
+  table's rows name (its columns :data:`NAMING_COLUMNS`); every set of a Fig. 5 body shot
+  table (``validation.fig5.body_shots``) is in its file, and the projectile it is drawn
+  with is known; every data table named (the keys :data:`TABLE_KEYS`) is a readable table;
 * layer thicknesses (``thickness*_m``) are finite and > 0 (``LIMITS["thickness"]``);
 * search scans (``scan_points``) are whole numbers in ``[2, MAX_SCAN]``;
 * a case's speed window ``[v_min, v_max]`` (m/s) has ``v_min < v_max`` and meets its
@@ -61,6 +65,9 @@ __all__ = [
     "KEY_RULES",
     "LIMITED_KEYS",
     "MAX_GRID",
+    "NAMING_KEYS",
+    "NAMING_COLUMNS",
+    "TABLE_KEYS",
     "KeyRule",
     "check_config",
     "one_line_warnings",
@@ -271,17 +278,42 @@ def _check_leaf(path: str, key: str, value: Any) -> None:
         except InputError as exc:
             _fail(path, str(exc))
     _warn_implausible(path, key, value, nums)
-    if key in ("projectile", "target", "medium") and isinstance(value, str):
-        _check_name(path, key, value)
-    if key == "projectiles" and isinstance(value, Sequence) and not isinstance(value, str):
+    if key in TABLE_KEYS and value is not None:  # data tables: readable, a table
+        for i, name in enumerate([value] if isinstance(value, str) else value):
+            if isinstance(name, str):
+                _csv_rows(name, path if isinstance(value, str) else f"{path}[{i}]")
+    kind = NAMING_KEYS.get(key)
+    if kind is not None and isinstance(value, str):
+        _check_name(path, kind, value)
+    elif kind is not None and isinstance(value, Sequence):
         for i, name in enumerate(value):
             if isinstance(name, str):
-                _check_name(f"{path}[{i}]", "projectile", name)
+                _check_name(f"{path}[{i}]", kind, name)
     if key in ("projectiles", "cases") and isinstance(value, Sequence):
         names = [c.get("name") if isinstance(c, Mapping) else c for c in value]
         dupes = sorted({str(x) for x in names if names.count(x) > 1})
         if dupes:
             _fail(path, f"duplicate names {', '.join(dupes)}")
+
+
+#: Keys whose value names a thing of the library (a name, a YAML file, or a list of
+#: them), and what it names: each is looked up when the configuration is checked.
+NAMING_KEYS = {
+    "projectile": "projectile",
+    "projectiles": "projectile",
+    "target": "target",
+    "targets": "target",
+    "medium": "medium",
+    "media": "medium",
+}
+
+#: Keys whose value names a data table (a CSV file, or a list of them): each is read
+#: through the input gate when the configuration is checked.
+TABLE_KEYS = ("csv", "shots")
+
+#: Columns of a measurement table (``validation.measurements[].csv``) that name a library
+#: projectile or target for their row.
+NAMING_COLUMNS = {"projectile": "projectile", "target": "target"}
 
 
 #: The root that relative file names start from, while :func:`check_config` runs.
@@ -374,6 +406,7 @@ def check_config(config: Mapping[str, Any], root: str | Path = ".") -> None:
             _fail("validation.table2.csv", f"cannot read {str(path)!r}: {exc.strerror}")
         if len(lines) < 2:
             _fail("validation.table2.csv", f"{str(path)!r} has a header but no rows")
+    _check_tables(config.get("validation"))
     cases = config.get("ensemble", {}).get("cases") or []
     names = [c.get("name") for c in cases if isinstance(c, Mapping)]
     if len(set(names)) != len(names):
@@ -397,6 +430,53 @@ def check_config(config: Mapping[str, Any], root: str | Path = ".") -> None:
                     number(perforation[key], LIMITED_KEYS[f"perforation.{key}"])
                 except InputError as exc:
                     _fail(f"perforation.{key}", str(exc))
+
+
+def _csv_rows(path: str, where: str) -> list[dict[str, str]]:
+    """The rows of a data table (CSV with ``#`` comments) named in the configuration,
+    read through the input gate without the data stack; one line naming ``where`` if it
+    cannot be read."""
+    import csv
+
+    try:
+        text = table_text(_ROOT[0] / path, "data table")
+    except InputError as exc:
+        _fail(where, str(exc))
+    lines = [ln for ln in text.splitlines() if not ln.lstrip().startswith("#")]
+    return list(csv.DictReader(lines))
+
+
+def _check_tables(validation: Any) -> None:
+    """The names in the validation's data tables: each library projectile or target a
+    measurement table's rows name (its ``projectile`` and ``target`` columns), and each
+    set of a Fig. 5 body shot table with the projectile it is drawn with."""
+    if not isinstance(validation, Mapping):
+        return
+    for i, m in enumerate(validation.get("measurements") or []):
+        if not isinstance(m, Mapping) or not isinstance(m.get("csv"), str):
+            continue
+        where = f"validation.measurements[{i}].csv"
+        rows = _csv_rows(m["csv"], where)
+        for column, kind in NAMING_COLUMNS.items():
+            for name in sorted({r.get(column) or "" for r in rows} - {""}):
+                row = next(k for k, r in enumerate(rows) if r.get(column) == name)
+                _check_name(f"{where} (row {row + 1}, column {column})", kind, name.strip())
+    fig5 = validation.get("fig5")
+    body = fig5.get("body_shots") if isinstance(fig5, Mapping) else None
+    if not isinstance(body, Mapping):
+        return
+    for path, sets in body.items():
+        where = f"validation.fig5.body_shots.{path}"
+        if not isinstance(sets, Mapping):
+            continue
+        known = {r.get("set") for r in _csv_rows(str(path), where)}
+        for name, projectile in sets.items():
+            if name not in known:
+                hint = difflib.get_close_matches(str(name), sorted(k for k in known if k), n=1)
+                tip = f"; did you mean {hint[0]!r}?" if hint else ""
+                _fail(f"{where}.{name}", f"no set {brief(name)} in {str(path)!r}{tip}")
+            if isinstance(projectile, str):
+                _check_name(f"{where}.{name}", "projectile", projectile)
 
 
 def table_text(path: str | Path, what: str) -> str:

@@ -17,6 +17,7 @@ from pencore.studies.common import (
     axis_values,
     numerics_record,
     projectile_coords,
+    search_grid,
     search_variables,
     start_from_height,
 )
@@ -47,7 +48,7 @@ def omega_c_study(
     names = list(projectiles)
     vel = axis_values(velocities, "velocities")
     num = resolve_numerics(numerics)
-    res = np.empty((len(names), vel.size), dtype=object)
+    res = search_grid((len(names), vel.size), "the omega_c table (projectiles x velocities)")
     for ip, p in enumerate(names):
         for iv, v in enumerate(vel):
             res[ip, iv] = critical.omega_c(

@@ -20,6 +20,7 @@ from pencore.studies.common import (
     axis_values,
     numerics_record,
     projectile_coords,
+    search_grid,
     search_variables,
     var_attrs,
 )
@@ -65,7 +66,9 @@ def vci_study(
         )
     normal_impact_angles(0.0, convention)
     num = resolve_numerics(numerics)
-    res = np.empty((len(names), yw.size, th.size), dtype=object)
+    res = search_grid(
+        (len(names), yw.size, th.size), "the Vci table (projectiles x yaws x thresholds)"
+    )
     for ip, p in enumerate(names):
         for iy, y in enumerate(yw):
             runs: dict[float, tuple[bool, float]] = {}

@@ -25,6 +25,7 @@ from pencore.studies.common import (
     axis_values,
     numerics_record,
     projectile_coords,
+    search_grid,
     search_variables,
     start_point,
     var_attrs,
@@ -68,7 +69,7 @@ def vcr_study(
     num = resolve_numerics(numerics)
     st = start_point(start)
     shape = (len(names), obl.size, yw.size)
-    res = np.empty(shape, dtype=object)
+    res = search_grid(shape, "the Vcr table (projectiles x obliquities x yaws)")
     nose_dir = np.full(shape, "", dtype=STRING_DTYPE)
     final_theta = np.full(shape, np.nan)
     outcome_hi = np.full(shape, "", dtype=STRING_DTYPE)

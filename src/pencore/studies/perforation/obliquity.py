@@ -40,7 +40,7 @@ from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.measured.shots import read_data_csv
 from pencore.search.perforation import ballistic_limit
 from pencore.search.threshold import CriticalResult
-from pencore.studies.common import search_variables, var_attrs
+from pencore.studies.common import search_grid, search_variables, var_attrs
 from pencore.studies.perforation.slabs import slab_target
 
 __all__ = [
@@ -144,21 +144,26 @@ def ballistic_map(
     num = resolve_numerics(numerics)
     maps = []
     for name, opt in sets.items():
-        res = np.empty((tod.size, obl.size), dtype=object)
+        res = search_grid((tod.size, obl.size), "the ballistic map (thicknesses x obliquities)")
         for i, x in enumerate(tod):
             t = slab_target(medium, float(x * d), **opt)
             for j, o in enumerate(obl):
                 try:
                     with half_space_plates():  # option "none": the half-space law, on purpose
-                        res[i, j] = ballistic_limit(
+                        r = ballistic_limit(
                             projectile, t, float(o), lo=lo, hi=hi, tol=tol, scan=scan,
                             numerics=num,
                         )  # fmt: skip
+                    res[i, j] = r
+                    message = r.message if r.status == "solver_error" else None
                 except SolverError as exc:
+                    message = str(exc)
+                if message is not None:
                     # a run of the search failed (e.g. a rebound chattering on the face):
-                    # the cell is recorded as failed, not guessed
+                    # the cell is recorded as failed, not guessed, and (as the map has
+                    # always recorded it) without the evaluations made before the failure
                     res[i, j] = CriticalResult(
-                        math.nan, math.nan, math.nan, 0, True, "solver_error", str(exc), (), tol
+                        math.nan, math.nan, math.nan, 0, True, "solver_error", message, (), tol
                     )
         dims = ("t_over_d", "obliquity")
         ds = xr.Dataset(

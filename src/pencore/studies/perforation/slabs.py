@@ -24,13 +24,20 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from pencore.errors import SolverError
 from pencore.inputs.library import get_target
 from pencore.inputs.numerics import Numerics, resolve_numerics
 from pencore.inputs.target import Layer, Target
 from pencore.run.impact import prepare, simulate
 from pencore.search.perforation import ballistic_limit, fit_recht_ipson, recht_ipson
 from pencore.search.threshold import VELOCITY_TOL
-from pencore.studies.common import STRING_DTYPE, axis_values, search_variables, var_attrs
+from pencore.studies.common import (
+    STRING_DTYPE,
+    axis_values,
+    search_grid,
+    search_variables,
+    var_attrs,
+)
 
 __all__ = [
     "slab_target",
@@ -39,6 +46,8 @@ __all__ = [
     "ballistic_limit_grid",
     "residual_runs",
     "residual_variables",
+    "fitted_curve",
+    "run_messages",
 ]
 
 
@@ -142,7 +151,7 @@ def ballistic_limit_grid(
     th = axis_values(thicknesses, "thicknesses")
     obl = axis_values(obliquities, "obliquities")
     num = resolve_numerics(numerics)
-    res = np.empty((th.size, obl.size), dtype=object)
+    res = search_grid((th.size, obl.size), "the ballistic-limit table (thicknesses x obliquities)")
     at = {} if start is None else {"start": tuple(start)}
     for i, h in enumerate(th):
         t = slab_target(medium, h)
@@ -192,17 +201,19 @@ def residual_velocity_curve(
     num = resolve_numerics(numerics)
     t = slab_target(medium, thickness, crater_depth, free_surface_depth)
     pr = prepare(projectile, t, num)
-    vr, pitch, outcome = residual_runs(pr, v, obliquity)
+    vr, pitch, outcome, message = residual_runs(pr, v, obliquity)
     bl = ballistic_limit(projectile, t, obliquity, lo=lo, hi=hi, tol=tol, numerics=num)
     fit = {"a": math.nan, "p": math.nan, "v_bl": bl.value, "rms": math.nan}
     rms_rigid = math.nan
-    if bl.converged and (vr > 0).sum() >= 2:
-        fit = fit_recht_ipson(v, vr, v_bl=bl.value)
-        rigid = recht_ipson(v[vr > 0], bl.value)
-        rms_rigid = float(np.sqrt(np.mean((rigid - vr[vr > 0]) ** 2)))
-    curve = recht_ipson(v, fit["v_bl"], fit["a"], fit["p"])
+    done = np.isfinite(vr)  # the runs that finished
+    if bl.converged and (vr[done] > 0).sum() >= 2:
+        fit = fit_recht_ipson(v[done], vr[done], v_bl=bl.value)
+        hit = done & (vr > 0)
+        rigid = recht_ipson(v[hit], bl.value)
+        rms_rigid = float(np.sqrt(np.mean((rigid - vr[hit]) ** 2)))
+    curve = fitted_curve(v, fit)
     return xr.Dataset(
-        residual_variables(vr, curve, pitch, outcome, "slab"),
+        residual_variables(vr, curve, pitch, outcome, "slab", message),
         coords={"velocity": ("velocity", v, var_attrs("m s-1", "impact speed"))},
         attrs={
             "title": "pencore residual velocity against impact velocity",
@@ -232,7 +243,7 @@ def residual_runs(
     progress: Callable[[str], None] | None = None,
     *,
     start: Sequence[float] | None = None,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """One impact per speed on a prepared finite target.
 
     Parameters
@@ -251,32 +262,54 @@ def residual_runs(
 
     Returns
     -------
-    residual, pitch, outcome : numpy.ndarray
-        Residual speed (m/s; 0 when the run does not perforate), exit pitch (deg; NaN
-        when it does not) and the outcome of each run.
+    residual, pitch, outcome, message : numpy.ndarray
+        Residual speed (m/s; 0 when the run does not perforate, NaN when it could not
+        finish), exit pitch (deg; NaN when it does not perforate), the outcome of each
+        run (``"solver_error"``: the run could not finish) and the solver's reason for
+        such a run (``""`` for the others). A run that cannot finish is a row of its own:
+        the others are kept.
     """
     vr = np.zeros(velocities.size)
     pitch = np.full(velocities.size, np.nan)
     outcome = np.empty(velocities.size, dtype=STRING_DTYPE)
+    message = np.full(velocities.size, "", dtype=STRING_DTYPE)
     for k, vi in enumerate(velocities):
-        ds = simulate(pr.projectile, pr.target, float(vi), obliquity, yaw, prepared=pr,
-                      loads=False, start=start)  # fmt: skip
-        outcome[k] = ds.attrs["outcome"]
-        if outcome[k] == "perforated":
-            vr[k] = ds.attrs["residual_velocity"]
-            pitch[k] = ds.attrs["exit_pitch_deg"]
+        try:
+            ds = simulate(pr.projectile, pr.target, float(vi), obliquity, yaw, prepared=pr,
+                          loads=False, start=start)  # fmt: skip
+        except SolverError as exc:
+            vr[k], outcome[k], message[k] = math.nan, "solver_error", str(exc)
+        else:
+            outcome[k] = ds.attrs["outcome"]
+            if outcome[k] == "perforated":
+                vr[k] = ds.attrs["residual_velocity"]
+                pitch[k] = ds.attrs["exit_pitch_deg"]
         if progress is not None:
             progress(f"{vi:g} m/s: residual {vr[k]:.4g} m/s ({outcome[k]})")
-    return vr, pitch, outcome
+    return vr, pitch, outcome, message
+
+
+def fitted_curve(v: np.ndarray, fit: Mapping[str, float]) -> np.ndarray:
+    """The Recht-Ipson curve (m/s) of ``fit`` at the speeds ``v``; NaN everywhere when
+    a parameter is NaN (no fit could be made)."""
+    if not all(math.isfinite(fit[k]) for k in ("v_bl", "a", "p")):
+        return np.full(np.shape(v), math.nan)
+    return recht_ipson(v, fit["v_bl"], fit["a"], fit["p"])
 
 
 def residual_variables(
-    vr: np.ndarray, curve: np.ndarray, pitch: np.ndarray, outcome: np.ndarray, body: str
+    vr: np.ndarray,
+    curve: np.ndarray,
+    pitch: np.ndarray,
+    outcome: np.ndarray,
+    body: str,
+    message: np.ndarray | None = None,
 ) -> dict[str, tuple]:
     """The data variables on ``velocity`` of a residual-velocity curve: the runs of
     :func:`residual_runs` and the fitted Recht-Ipson ``curve`` (m/s); ``body`` names
-    what the projectile clears (``"slab"``, ``"target"``)."""
-    return {
+    what the projectile clears (``"slab"``, ``"target"``); ``message`` (the reasons of
+    runs that could not finish) is a variable when one is not empty."""
+    out = {
         "residual_velocity": (
             "velocity",
             vr,
@@ -296,3 +329,15 @@ def residual_variables(
         ),
         "outcome": ("velocity", outcome, {"units": "1", "long_name": "outcome of the run"}),
     }
+    if message is not None and any(message):
+        out["message"] = run_messages(message)
+    return out
+
+
+def run_messages(message: np.ndarray) -> tuple:
+    """The ``message`` variable on ``velocity``: why a run could not finish."""
+    return (
+        "velocity",
+        message,
+        {"units": "1", "long_name": "why the run could not finish (empty: it finished)"},
+    )
