@@ -3,6 +3,7 @@ record_statistics, statistics_table)."""
 
 from _common import start_log
 
+from pencore.io.atomic import atomic_write_text
 from pencore.io.netcdf import file_sha256, read_netcdf, write_netcdf
 from pencore.studies.validation.record import (
     gather_record,
@@ -12,7 +13,7 @@ from pencore.studies.validation.record import (
 )
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
-log = start_log(smk.log[0], "concrete_record")
+log = start_log(smk, "concrete_record")
 
 study = dict(smk.params.study)
 rows = record_rows_to_score(every=int(study["every"]))
@@ -26,6 +27,10 @@ write_netcdf(ds, smk.output.nc, config_slice=provenance, study="validation/concr
 write_netcdf(
     stats, smk.output.stats, config_slice=provenance, study="validation/concrete_record_stats"
 )
-statistics_table(stats).to_csv(smk.output.csv, index=False, float_format="%.6g")
+atomic_write_text(
+    smk.output.csv,
+    statistics_table(stats).to_csv(index=False, float_format="%.6g"),
+    suffixes=(".csv",),
+)
 log.info("best law on held-out sources: %s", stats.attrs["best_law"])
 log.info("it loses in: %s", stats.attrs["best_law_loses"] or "no bin")

@@ -7,7 +7,7 @@ from pencore.studies.validation.record import record_rows_to_score, score_law
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
 law = smk.wildcards.law
-log = start_log(smk.log[0], f"concrete_record_law_{law}")
+log = start_log(smk, f"concrete_record_law_{law}")
 
 study = dict(smk.params.study)
 rows = record_rows_to_score(every=int(study["every"]))

@@ -638,7 +638,7 @@ def write_record(archive: str, record: str | None = None, bands: str | None = No
     import yaml
 
     from pencore.inputs.record import BANDS_FILE, RECORD_FILE
-    from pencore.io.atomic import atomic_path
+    from pencore.io.atomic import atomic_write_text
     from pencore.io.netcdf import read_netcdf
 
     folder = Path(archive)
@@ -651,16 +651,14 @@ def write_record(archive: str, record: str | None = None, bands: str | None = No
     writer = csv.DictWriter(buf, RECORD_COLUMNS, lineterminator="\n")
     writer.writeheader()
     writer.writerows(record_rows(ds))
-    with atomic_path(record or RECORD_FILE) as tmp:
-        Path(tmp).write_text(RECORD_HEADER + buf.getvalue(), encoding="utf-8")
+    atomic_write_text(record or RECORD_FILE, RECORD_HEADER + buf.getvalue())
     doc = bands_document(stats)
     text = (
         "# Each concrete law's depth band, calibrated one source left out at a time\n"
         "# (pencore.analysis.record.calibrate_level) on the rows of concrete_record.csv.\n"
         "# GENERATED with it (do not edit).\n" + yaml.safe_dump(doc, sort_keys=False)
     )
-    with atomic_path(bands or BANDS_FILE) as tmp:
-        Path(tmp).write_text(text, encoding="utf-8")
+    atomic_write_text(bands or BANDS_FILE, text)
 
 
 if __name__ == "__main__":  # pragma: no cover - regenerates the shipped record
