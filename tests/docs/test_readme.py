@@ -19,21 +19,25 @@ def test_opens_with_exactly_the_two_setup_commands():
     assert first[0] == "bash"
     commands = first[1:]
     assert len(commands) == 2
-    # both make and enter a virtual environment (uv installs only into one), install uv
-    # and then install with it
-    uv = (
-        "python -m venv .venv && . .venv/bin/activate && "
-        "python -m pip install uv && python -m uv pip install -e "
-    )
-    assert all(c.startswith(uv) for c in commands)
+    # each makes and enters a virtual environment of its own (uv installs only into one),
+    # installs uv and then installs with it: the pinned reproduction's `.venv` and the
+    # tests' `.venv-test`, so the tests' newest versions never move the reproduction's
+    def uv(venv: str) -> str:
+        return (
+            f"python -m venv {venv} && . {venv}/bin/activate && "
+            "python -m pip install uv && python -m uv pip install -e "
+        )
+
     # the reproduction installs the pinned versions the archive was made with, and builds
     # the kernels with them (the build's numba is the one the kernels must fit)
     assert commands[0].startswith(
-        f"{uv}'.[workflow]' -c constraints.txt --build-constraint constraints.txt &&"
+        f"{uv('.venv')}'.[workflow]' -c constraints.txt --build-constraint constraints.txt &&"
     )
     assert "snakemake --cores 2" in commands[0]
     # the tests resolve the newest versions pyproject.toml allows, as CI does
-    assert commands[1].startswith(f"{uv}'.[test]' &&")
+    assert commands[1].startswith(f"{uv('.venv-test')}'.[test]' &&")
+    envs = [re.findall(r"python -m venv (\S+) ", c) for c in commands]
+    assert envs == [[".venv"], [".venv-test"]], envs
     assert "constraints" not in commands[1]
     assert commands[1].endswith("python -m pytest -q -n 2")
     # CI runs the very test command a user runs, in a fresh virtual environment with a
