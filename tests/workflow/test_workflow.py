@@ -313,6 +313,17 @@ def test_e2e_figures_logs_benchmarks(e2e):
 
 
 @pytest.mark.slow
+def test_e2e_says_the_long_jobs_start_first(e2e):
+    """The run's first line after the DAG says the longest jobs went first, before the
+    first "N of M steps done" line that waits for one of them (the Snakefile's onstart)."""
+    log = (e2e.parent / "snakemake.log").read_text()
+    said = [ln for ln in log.splitlines() if ln.startswith("pencore: the ")]
+    assert len(said) == 1, said
+    assert "longest jobs (" in said[0] and "near_surface_part" in said[0]
+    assert log.index(said[0]) < log.index(" steps (")
+
+
+@pytest.mark.slow
 def test_e2e_rerun_is_targeted(e2e):
     r = run_snakemake(e2e, "-n", "--cores", "1", "--configfile", ".test/config.yaml")
     assert r.returncode == 0
@@ -334,15 +345,7 @@ def _planned_rules(out: str) -> set[str]:
 
 def _dry_run_with_src(wd: Path, src: Path) -> set[str]:
     env = {**os.environ, "PYTHONPATH": str(src)}
-    r = subprocess.run(
-        [sys.executable, "-m", "snakemake", "-n", "--cores", "1"]
-        + ["--configfile", ".test/config.yaml"],
-        cwd=wd,
-        capture_output=True,
-        text=True,
-        timeout=600,
-        env=env,
-    )
+    r = run_snakemake(wd, "-n", "--cores", "1", "--configfile", ".test/config.yaml", env=env)
     assert r.returncode == 0, r.stderr[-3000:]
     return _planned_rules(r.stdout + r.stderr)
 
