@@ -2,10 +2,12 @@
 
 No number in the docs or the README is typed by hand where a file holds it: the pages
 include the Markdown this module writes to ``docs/_generated/`` at every build (a Sphinx
-extension, :func:`setup`), and the prose takes single numbers through MyST substitutions
-(``{{ vcr_p2_45 }}``, :func:`numbers`). The README's generated blocks come from the same
-functions (``python docs/_ext/pencore_docs.py --readme`` rewrites them;
-``tests/docs/test_generated.py`` fails when they are stale).
+extension, :func:`setup`), and the prose holds single numbers written into the Markdown
+between comments, ``<!-- n:vcr_p2_45 -->1573.68<!-- /n -->`` (:func:`numbers`,
+:func:`with_numbers`), so a page reads the same on GitHub, in a terminal and in the site.
+The README's generated blocks come from the same functions. ``python
+docs/_ext/pencore_docs.py --readme`` rewrites both; ``tests/docs/test_readme.py`` and
+``tests/docs/test_pages.py`` fail when either is stale.
 
 Sources: ``results/archive/paper_comparison.csv`` (the archived comparison with the paper),
 ``config/paper_claims.csv``, ``benchmarks/results/*.csv``, :data:`pencore.inputs.limits.LIMITS`,
@@ -139,12 +141,14 @@ def headline_table() -> str:
 
 
 def comparison_counts() -> str:
-    """One sentence counting the verdicts and trends of the comparison table."""
+    """One sentence counting the verdicts and trends of the comparison table, after its
+    first words "Of the paper's" (a page line must not start with the number's comment:
+    Markdown would take the line for HTML)."""
     table = comparison()
     verdicts = table[table["kind"] == "verdict"]["difference"].value_counts()
     trends = table[table["kind"] == "trend"]["pencore_value"].value_counts()
     return (
-        f"Of the paper's {len(table[table['kind'] == 'trend'])} trends, "
+        f"{len(table[table['kind'] == 'trend'])} trends, "
         f"{trends.get('holds', 0)} hold and {trends.get('partly holds', 0)} partly hold; "
         f"of its {len(table[table['kind'] == 'verdict'])} yes/no statements, "
         f"{verdicts.get('agrees', 0)} agree and {verdicts.get('differs', 0)} differ."
@@ -1045,6 +1049,44 @@ def readme_with_blocks(text: str) -> str:
     return _BLOCK.sub(fill, text)
 
 
+#: a number in a Markdown page: ``<!-- n:name -->value<!-- /n -->``, the value written by
+#: :func:`pages_with_numbers` from :func:`numbers` (so the page reads the same on GitHub,
+#: in a terminal and in the site, where the comments do not show)
+_NUMBER = re.compile(r"<!-- n:(?P<name>\w+) -->(?P<value>.*?)<!-- /n -->", re.S)
+
+
+def number_pages() -> list[Path]:
+    """The Markdown pages of the docs that may hold numbers (not the build's output)."""
+    skip = {"_build", "_generated", "auto_examples"}
+    return sorted(p for p in (REPO / "docs").rglob("*.md") if not skip & set(p.parts))
+
+
+def with_numbers(text: str, values: dict[str, str]) -> str:
+    """``text`` with every ``<!-- n:name -->...<!-- /n -->`` holding ``values[name]``
+    (a name :func:`numbers` does not give stops with a KeyError naming it)."""
+
+    def fill(m: re.Match[str]) -> str:
+        name = m.group("name")
+        if name not in values:
+            raise KeyError(f"<!-- n:{name} --> names no number of pencore_docs.numbers()")
+        return f"<!-- n:{name} -->{values[name]}<!-- /n -->"
+
+    return _NUMBER.sub(fill, text)
+
+
+def write_numbers() -> list[Path]:
+    """Rewrite the numbers of every docs page (:func:`number_pages`); the pages changed."""
+    values = numbers()
+    changed = []
+    for page in number_pages():
+        text = page.read_text()
+        new = with_numbers(text, values)
+        if new != text:
+            page.write_text(new)
+            changed.append(page)
+    return changed
+
+
 def write_pages(target: Path = GENERATED) -> None:
     """Write every generated page into ``target`` (only files whose text changed)."""
     target.mkdir(parents=True, exist_ok=True)
@@ -1057,7 +1099,6 @@ def write_pages(target: Path = GENERATED) -> None:
 
 def _on_config_inited(app, config) -> None:  # noqa: ANN001 (Sphinx, Config)
     write_pages()
-    config.myst_substitutions = {**numbers(), **config.myst_substitutions}
 
 
 def setup(app) -> dict[str, object]:  # noqa: ANN001
@@ -1067,14 +1108,19 @@ def setup(app) -> dict[str, object]:  # noqa: ANN001
 
 
 def main(argv: list[str] | None = None) -> int:
-    """``--readme``: rewrite the README's generated blocks; ``--pages``: write the pages."""
+    """``--readme``: rewrite the README's generated blocks and the numbers in the docs'
+    Markdown pages; ``--pages``: write the pages."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--readme", action="store_true", help="rewrite README.md's blocks")
+    parser.add_argument(
+        "--readme", action="store_true", help="rewrite README.md's blocks and the docs' numbers"
+    )
     parser.add_argument("--pages", action="store_true", help="write docs/_generated/")
     args = parser.parse_args(argv)
     if args.readme:
         readme = REPO / "README.md"
         readme.write_text(readme_with_blocks(readme.read_text()))
+        for page in write_numbers():
+            print(f"pencore_docs: rewrote the numbers of {page.relative_to(REPO)}")
     if args.pages:
         write_pages()
     return 0
