@@ -19,6 +19,7 @@ def test_opens_with_exactly_the_two_setup_commands():
     assert first[0] == "bash"
     commands = first[1:]
     assert len(commands) == 2
+
     # each makes and enters a virtual environment of its own (uv installs only into one),
     # installs uv and then installs with it: the pinned reproduction's `.venv` and the
     # tests' `.venv-test`, so the tests' newest versions never move the reproduction's
