@@ -41,6 +41,9 @@ def e2e(tmp_path_factory, worker_id, request) -> Path:
     def say(line: str) -> None:
         """A line on the terminal past pytest's capture (a test process's stderr is the
         terminal's under xdist too)."""
+        if capture is None:  # pytest -p no:capture
+            print(f"\n[{worker_id}] {line}", file=sys.stderr, flush=True)
+            return
         with capture.global_and_fixture_disabled():
             print(f"\n[{worker_id}] {line}", file=sys.stderr, flush=True)
 
