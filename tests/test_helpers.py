@@ -13,12 +13,29 @@ from pathlib import Path
 import pytest
 from helpers import SharedRunFailed, TooSlow, guard_scale, run_guarded, shared_once
 
-SLEEP = [sys.executable, "-c", "import time, sys; print('1 of 3 steps (33%) done', "
-         "file=sys.stderr, flush=True); time.sleep({})"]  # fmt: skip
+
+def _sleep(seconds: float, started: Path | None = None) -> list[str]:
+    """A command that prints a Snakemake-like progress line, then (when ``started`` is
+    given) creates that file, then sleeps."""
+    touch = f"open({str(started)!r}, 'w').close(); " if started else ""
+    code = (
+        "import sys, time; print('1 of 3 steps (33%) done', file=sys.stderr, flush=True); "
+        f"{touch}time.sleep({seconds})"
+    )
+    return [sys.executable, "-c", code]
 
 
-def _sleep(seconds: float) -> list[str]:
-    return [*SLEEP[:2], SLEEP[2].format(seconds)]
+def _load_once(path: Path, load: tuple[float, int]):
+    """A load reading that first waits for ``path`` to exist: the guard cannot stop the
+    command before it has started, however slowly a busy machine starts Python."""
+
+    def read() -> tuple[float, int]:
+        deadline = time.monotonic() + 300
+        while not path.exists() and time.monotonic() < deadline:
+            time.sleep(0.05)
+        return load
+
+    return read
 
 
 def test_guard_scale_is_load_per_core_at_least_one(monkeypatch):
@@ -32,13 +49,14 @@ def test_guard_scale_is_load_per_core_at_least_one(monkeypatch):
 
 
 def test_guard_stops_a_hang_on_an_idle_machine_saying_too_slow(tmp_path):
+    started = tmp_path / "started"
     t0 = time.monotonic()
     with pytest.raises(TooSlow) as err:
         run_guarded(
-            _sleep(60), tmp_path, idle_s=1.0, label="sleeper",
-            load=lambda: (0.5, 2), poll_s=0.2,
+            _sleep(900, started), tmp_path, idle_s=1.0, label="sleeper",
+            load=_load_once(started, (0.5, 2)), poll_s=0.2,
         )  # fmt: skip
-    assert time.monotonic() - t0 < 30  # stopped by the guard, not by the command's end
+    assert time.monotonic() - t0 < 600  # stopped by the guard, not by the command's end
     msg = str(err.value)
     assert msg.startswith("sleeper: too slow, stopped after ")
     assert "1 of 3 steps done" in msg  # the last progress line it saw
@@ -69,11 +87,12 @@ def test_guard_kills_the_command_s_children(tmp_path):
     code = (
         "import subprocess, sys, time; "
         "p = subprocess.Popen([sys.executable, '-c', 'import time; time.sleep(60)']); "
-        f"open({str(pid_file)!r}, 'w').write(str(p.pid)); time.sleep(60)"
+        f"open({str(pid_file)!r} + '.tmp', 'w').write(str(p.pid)); "
+        f"import os; os.replace({str(pid_file)!r} + '.tmp', {str(pid_file)!r}); time.sleep(60)"
     )
     with pytest.raises(TooSlow):
-        run_guarded([sys.executable, "-c", code], tmp_path, idle_s=1.5, label="parent",
-                    load=lambda: (0.0, 2), poll_s=0.2)  # fmt: skip
+        run_guarded([sys.executable, "-c", code], tmp_path, idle_s=1.0, label="parent",
+                    load=_load_once(pid_file, (0.0, 2)), poll_s=0.2)  # fmt: skip
     child = int(pid_file.read_text())
     time.sleep(0.5)
     assert not Path(f"/proc/{child}").exists() or "Z" in _state(child)
