@@ -333,19 +333,51 @@ def fresh_installs() -> pd.DataFrame:
 
 
 def timing_sentence() -> str:
-    """The README's line on how long its first command takes, from the benchmarks."""
+    """The README's line on how long its two commands take, from the benchmarks, with the
+    load each figure was measured at: idle-host figures say so, and a figure from a busy
+    host says how busy (a busy host takes longer than the README's figures)."""
     speed = pd.read_csv(BENCH / "speed.csv").set_index("figure")
     compile_ = pd.read_csv(BENCH / "compile.csv").set_index("case")
     fresh = fresh_installs()
     repro = speed.loc["reproduction_wall"]
+    cores = int(repro["cores"])
+    loads = [
+        float(fresh.loc["uv", "load_1min"]),
+        float(fresh.loc["pip", "load_1min"]),
+        float(compile_.loc["warmup", "load_1min"]),
+        float(repro["load_1min"]),
+    ]
+    # the README's test command, timed by benchmarks/bench_tests.py (its newest row)
+    tests = pd.read_csv(BENCH / "tests.csv").iloc[-1] if (BENCH / "tests.csv").exists() else None
+    if tests is not None:
+        loads += [float(tests["load_1min"]), float(tests["load_mean"])]
+        files = "`install.csv`, `compile.csv`, `speed.csv`, `tests.csv`"
+        repro_and_tests = (
+            f"the reproduction about {duration(repro['value'])} and the tests about "
+            f"{duration(tests['wall_s'])}"
+        )
+    else:
+        files = "`install.csv`, `compile.csv`, `speed.csv`"
+        repro_and_tests = f"the reproduction about {duration(repro['value'])}"
+    busiest = max(loads)
+    if busiest <= cores:
+        load = (
+            f"These are idle-host figures (a 1-minute load of at most {busiest:.1f} on "
+            f"{cores} cores); a busy host takes longer."
+        )
+    else:
+        load = (
+            f"They were measured at 1-minute loads of up to {busiest:.1f} on {cores} "
+            "cores; an idle host is faster."
+        )
     return (
-        f"On {int(repro['cores'])} cores ({repro['cpu_model']}) the install takes about "
+        f"On {cores} cores ({repro['cpu_model']}) the install takes about "
         f"{duration(fresh.loc['uv', 'wall_s'])} with uv "
         f"({duration(fresh.loc['pip', 'wall_s'])} with pip), most of it the kernel compile "
         f"(about {duration(compile_.loc['warmup', 'wall_s'])}, "
-        f"{duration(compile_.loc['warmup', 'cpu_s'])} of CPU), and the reproduction takes "
-        f"about {duration(repro['value'])} (`benchmarks/results/install.csv`, `compile.csv`, "
-        "`speed.csv`; downloading the dependencies comes on top)."
+        f"{duration(compile_.loc['warmup', 'cpu_s'])} of CPU), {repro_and_tests} "
+        f"(`benchmarks/results/`: {files}; downloading the dependencies comes on top). "
+        f"{load}"
     )
 
 

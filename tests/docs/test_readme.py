@@ -68,6 +68,28 @@ def test_generated_blocks_are_current(gen):
     )
 
 
+def test_timing_line_says_how_busy_the_host_was(gen, tmp_path, monkeypatch):
+    """The timing line gives the tests' time once benchmarks/bench_tests.py has measured it,
+    and says whether its figures are an idle host's or how busy the host was."""
+    import shutil
+
+    for name in ("speed.csv", "compile.csv", "install.csv"):
+        shutil.copy(gen.BENCH / name, tmp_path / name)
+    monkeypatch.setattr(gen, "BENCH", tmp_path)
+    head = "command,wall_s,cpu_s,passed,failed,errors,skipped,load_mean,cpu_model,cores,"
+    head += "load_1min,load_5min,load_15min,measured_utc,commit\n"
+    row = "python -m pytest -q -n 2,{wall},700,2300,0,0,0,{mean},AMD EPYC,2,{l1},1,1,x,abc\n"
+    (tmp_path / "tests.csv").write_text(head + row.format(wall=330, mean=0.9, l1=0.4))
+    idle = gen.timing_sentence()
+    assert "the tests about 5.5 min" in idle and "`tests.csv`" in idle
+    assert "These are idle-host figures" in idle and "a busy host takes longer" in idle
+    (tmp_path / "tests.csv").write_text(head + row.format(wall=900, mean=6.3, l1=5.0))
+    busy = gen.timing_sentence()
+    assert "the tests about 15 min" in busy
+    assert "measured at 1-minute loads of up to 6.3 on 2 cores" in busy
+    assert "idle-host" not in busy
+
+
 def test_relative_links_resolve():
     links = re.findall(r"\]\(([^)#]+)(?:#[^)]*)?\)", README)
     assert links
