@@ -51,10 +51,11 @@ def read_table(path: str | os.PathLike[str]) -> pd.DataFrame:
     --------
     >>> import tempfile
     >>> from pathlib import Path
+    >>> import pencore
     >>> with tempfile.TemporaryDirectory() as tmp:
     ...     path = Path(tmp) / "shots.csv"
     ...     _ = path.write_text("# source: a paper, Table 1\\nshot,v_m_s,note\\n1,800,#2 rod\\n")
-    ...     frame = read_table(path)
+    ...     frame = pencore.read_table(path)
     >>> frame.attrs["provenance"], frame["v_m_s"].tolist(), frame["note"].tolist()
     (['source: a paper, Table 1'], [800], ['#2 rod'])
     """
