@@ -146,13 +146,18 @@ def run_guarded(
                 if now - t0 > allowed:
                     os.killpg(proc.pid, signal.SIGKILL)
                     proc.wait()
+                    why = (
+                        "a busy machine, not a failure of the code: rerun when it is quieter"
+                        if mean > cores
+                        else "on a machine this idle it should have finished: a hang, or a "
+                        "machine much slower than the one the guard was set on"
+                    )
                     raise TooSlow(
                         f"{label}: too slow, stopped after {now - t0:.0f} s with {where}: the "
                         f"machine's load averaged {mean:.1f} on {cores} cores (now {level:.1f}); "
                         f"the guard allows {idle_s:.0f} s on an idle machine times load/cores "
-                        f"({allowed:.0f} s here). A busy machine, not a failure of the code: "
-                        "rerun when it is quieter, or set PENCORE_TEST_GUARD_SCALE=2 (or more) "
-                        "on a slower one."
+                        f"({allowed:.0f} s here). Likely {why} (PENCORE_TEST_GUARD_SCALE=2 or "
+                        "more lengthens the guards)."
                     )
                 since = now - last_report
                 if progress and ((step != last_step and since >= gap_s) or since >= every_s):

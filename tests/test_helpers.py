@@ -61,6 +61,19 @@ def test_guard_stops_a_hang_on_an_idle_machine_saying_too_slow(tmp_path):
     assert msg.startswith("sleeper: too slow, stopped after ")
     assert "1 of 3 steps done" in msg  # the last progress line it saw
     assert "load averaged 0.5 on 2 cores" in msg and "PENCORE_TEST_GUARD_SCALE" in msg
+    assert "a hang" in msg  # idle: not blamed on the load
+
+
+def test_guard_on_a_busy_machine_says_so(tmp_path):
+    started = tmp_path / "started"
+    with pytest.raises(TooSlow) as err:
+        run_guarded(
+            _sleep(900, started), tmp_path, idle_s=0.5, label="busy",
+            load=_load_once(started, (7.0, 2)), poll_s=0.2,
+        )  # fmt: skip
+    msg = str(err.value)
+    assert msg.startswith("busy: too slow, stopped after ")
+    assert "load averaged 7.0 on 2 cores" in msg and "a busy machine" in msg
 
 
 def test_guard_gives_a_busy_machine_proportionally_longer(tmp_path):
