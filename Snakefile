@@ -110,3 +110,25 @@ rule all:
     default_target: True
     input:
         ALL_TARGETS,
+
+
+# The longest jobs (priority 1) start first, so that the short ones fill the cores at the
+# end; the first "N of M steps done" line then waits for one of them. Said before the wait
+# (light: the DAG Snakemake has already built, no import).
+onstart:
+    _long = sorted(
+        {
+            j.rule.name
+            for j in workflow.dag.needrun_jobs()
+            if isinstance(j.rule.priority, int) and j.rule.priority > 0
+        }
+    )
+    if _long:
+        _n = sum(1 for j in workflow.dag.needrun_jobs() if j.rule.name in _long)
+        _names = ", ".join(_long[:3]) + (", ..." if len(_long) > 3 else "")
+        print(
+            f"pencore: the {_n} longest jobs ({_names}) start first, so the first "
+            "'N of M steps done' line comes when one of them ends; the short jobs "
+            "fill the cores after them",
+            file=sys.stderr,
+        )

@@ -32,7 +32,7 @@ trap 'rm -rf "$WORK"' EXIT
 # (PENCORE_E2E_DIR, tests/workflow/conftest.py), else a run in a scratch clone
 E2E=${PENCORE_E2E_DIR:-}
 if [[ -n "$E2E" && -f "$E2E/done.json" ]] \
-    && python -c "import json, sys; sys.exit(json.load(open(sys.argv[1]))['returncode'])" \
+    && python -c "import json, sys; sys.exit(not json.load(open(sys.argv[1]))['ok'])" \
         "$E2E/done.json"; then
     run_dir="$E2E/wd"
     echo "docs: the workflow report from the test suite's run in $run_dir"

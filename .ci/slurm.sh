@@ -197,12 +197,25 @@ copy_workflow "$WORK/local-run"
 export PYTHONPATH="$REPO/src${PYTHONPATH:+:$PYTHONPATH}"   # jobs inherit it (--export=ALL)
 
 # ---- Slurm run ---------------------------------------------------------------
-log "snakemake through Slurm (timeout ${RUN_TIMEOUT}s)"
+# The site's partition and account as docs/user-guide/cluster.md gives them: two
+# environment variables the profile adds to its own resources. Every sbatch call is
+# recorded (a wrapper ahead of the real sbatch on PATH) to check that each job got them
+# and kept the profile's memory and run time. This cluster has no accounting database,
+# so a stand-in sacctmgr answers the plugin's check of the account with it, as a site's
+# accounting would.
+export PENCORE_SLURM_PARTITION=ci PENCORE_SLURM_ACCOUNT=pencore_ci
+SHIMS="$WORK/bin"; SBATCH_CALLS="$WORK/sbatch-calls.txt"
+mkdir -p "$SHIMS"
+REAL_SBATCH="$(command -v sbatch)"
+printf '#!/usr/bin/env bash\nprintf "%%s\\n" "$*" >> %q\nexec %q "$@"\n' \
+    "$SBATCH_CALLS" "$REAL_SBATCH" > "$SHIMS/sbatch"
+printf '#!/usr/bin/env bash\necho %q\n' "$PENCORE_SLURM_ACCOUNT" > "$SHIMS/sacctmgr"
+chmod +x "$SHIMS/sbatch" "$SHIMS/sacctmgr"
+log "snakemake through Slurm (timeout ${RUN_TIMEOUT}s; partition $PENCORE_SLURM_PARTITION, account $PENCORE_SLURM_ACCOUNT)"
 cd "$WORK/slurm-run"
 # shellcheck disable=SC2086
-if ! timeout -k 10 "$RUN_TIMEOUT" "$PY" -m snakemake \
+if ! PATH="$SHIMS:$PATH" timeout -k 10 "$RUN_TIMEOUT" "$PY" -m snakemake \
         --workflow-profile workflow/profiles/slurm --configfile .test/config.yaml \
-        --default-resources slurm_partition=ci \
         --jobs 4 --slurm-init-seconds-before-status-checks 5 \
         $TARGETS > "$SMK_LOG" 2>&1; then
     echo "slurm.sh: snakemake via Slurm failed or hung (timeout ${RUN_TIMEOUT}s)" >&2
@@ -220,6 +233,23 @@ if [[ -z "$n_jobs" || "$n_jobs" -eq 0 ]]; then
 fi
 if [[ $(( n_sub + n_local )) -ne "$n_jobs" || "$n_sub" -eq 0 ]]; then
     echo "slurm.sh: $n_sub sbatch submissions + $n_local localrules != $n_jobs jobs" >&2
+    exit 1
+fi
+# each submission with the site's partition and account and the profile's memory; the
+# ensemble's gather job with the profile's default run time (the profile's numbers, read
+# from it: a --default-resources on the command line would have dropped them)
+read -r prof_mem prof_runtime < <("$PY" -c '
+import yte
+with open("workflow/profiles/slurm/config.yaml") as f:
+    d = yte.process_yaml(f, require_use_yte=True)["default-resources"]
+print(d["mem_mb"], d["runtime"])')
+n_calls="$(wc -l < "$SBATCH_CALLS")"
+n_site="$(grep -c -- "-A pencore_ci -p ci .*--mem $prof_mem\b" "$SBATCH_CALLS" || true)"
+n_gather="$(grep -c -- "rule_ensemble_gather.* -t $prof_runtime\b" "$SBATCH_CALLS" || true)"
+log "sbatch calls=$n_calls, with partition, account and --mem $prof_mem: $n_site; gather with -t $prof_runtime: $n_gather"
+if [[ "$n_calls" -ne "$n_sub" || "$n_site" -ne "$n_calls" || "$n_gather" -ne 1 ]]; then
+    echo "slurm.sh: the jobs did not get the site's partition and account with the profile's resources:" >&2
+    cat "$SBATCH_CALLS" >&2
     exit 1
 fi
 

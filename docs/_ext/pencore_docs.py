@@ -2,10 +2,12 @@
 
 No number in the docs or the README is typed by hand where a file holds it: the pages
 include the Markdown this module writes to ``docs/_generated/`` at every build (a Sphinx
-extension, :func:`setup`), and the prose takes single numbers through MyST substitutions
-(``{{ vcr_p2_45 }}``, :func:`numbers`). The README's generated blocks come from the same
-functions (``python docs/_ext/pencore_docs.py --readme`` rewrites them;
-``tests/docs/test_generated.py`` fails when they are stale).
+extension, :func:`setup`), and the prose holds single numbers written into the Markdown
+between comments, ``<!-- n:vcr_p2_45 -->1573.68<!-- /n -->`` (:func:`numbers`,
+:func:`with_numbers`), so a page reads the same on GitHub, in a terminal and in the site.
+The README's generated blocks come from the same functions. ``python
+docs/_ext/pencore_docs.py --readme`` rewrites both; ``tests/docs/test_readme.py`` and
+``tests/docs/test_pages.py`` fail when either is stale.
 
 Sources: ``results/archive/paper_comparison.csv`` (the archived comparison with the paper),
 ``config/paper_claims.csv``, ``config/concrete_compilation.csv``, ``benchmarks/results/*.csv``,
@@ -140,12 +142,14 @@ def headline_table() -> str:
 
 
 def comparison_counts() -> str:
-    """One sentence counting the verdicts and trends of the comparison table."""
+    """One sentence counting the verdicts and trends of the comparison table, after its
+    first words "Of the paper's" (a page line must not start with the number's comment:
+    Markdown would take the line for HTML)."""
     table = comparison()
     verdicts = table[table["kind"] == "verdict"]["difference"].value_counts()
     trends = table[table["kind"] == "trend"]["pencore_value"].value_counts()
     return (
-        f"Of the paper's {len(table[table['kind'] == 'trend'])} trends, "
+        f"{len(table[table['kind'] == 'trend'])} trends, "
         f"{trends.get('holds', 0)} hold and {trends.get('partly holds', 0)} partly hold; "
         f"of its {len(table[table['kind'] == 'verdict'])} yes/no statements, "
         f"{verdicts.get('agrees', 0)} agree and {verdicts.get('differs', 0)} differ."
@@ -330,19 +334,51 @@ def fresh_installs() -> pd.DataFrame:
 
 
 def timing_sentence() -> str:
-    """The README's line on how long its first command takes, from the benchmarks."""
+    """The README's line on how long its two commands take, from the benchmarks, with the
+    load each figure was measured at: idle-host figures say so, and a figure from a busy
+    host says how busy (a busy host takes longer than the README's figures)."""
     speed = pd.read_csv(BENCH / "speed.csv").set_index("figure")
     compile_ = pd.read_csv(BENCH / "compile.csv").set_index("case")
     fresh = fresh_installs()
     repro = speed.loc["reproduction_wall"]
+    cores = int(repro["cores"])
+    loads = [
+        float(fresh.loc["uv", "load_1min"]),
+        float(fresh.loc["pip", "load_1min"]),
+        float(compile_.loc["warmup", "load_1min"]),
+        float(repro["load_1min"]),
+    ]
+    # the README's test command, timed by benchmarks/bench_tests.py (its newest row)
+    tests = pd.read_csv(BENCH / "tests.csv").iloc[-1] if (BENCH / "tests.csv").exists() else None
+    if tests is not None:
+        loads += [float(tests["load_1min"]), float(tests["load_mean"])]
+        files = "`install.csv`, `compile.csv`, `speed.csv`, `tests.csv`"
+        repro_and_tests = (
+            f"the reproduction about {duration(repro['value'])} and the tests about "
+            f"{duration(tests['wall_s'])}"
+        )
+    else:
+        files = "`install.csv`, `compile.csv`, `speed.csv`"
+        repro_and_tests = f"the reproduction about {duration(repro['value'])}"
+    busiest = max(loads)
+    if busiest <= cores:
+        load = (
+            f"These are idle-host figures (a 1-minute load of at most {busiest:.1f} on "
+            f"{cores} cores); a busy host takes longer."
+        )
+    else:
+        load = (
+            f"They were measured at 1-minute loads of up to {busiest:.1f} on {cores} "
+            "cores; an idle host is faster."
+        )
     return (
-        f"On {int(repro['cores'])} cores ({repro['cpu_model']}) the install takes about "
+        f"On {cores} cores ({repro['cpu_model']}) the install takes about "
         f"{duration(fresh.loc['uv', 'wall_s'])} with uv "
         f"({duration(fresh.loc['pip', 'wall_s'])} with pip), most of it the kernel compile "
         f"(about {duration(compile_.loc['warmup', 'wall_s'])}, "
-        f"{duration(compile_.loc['warmup', 'cpu_s'])} of CPU), and the reproduction takes "
-        f"about {duration(repro['value'])} (`benchmarks/results/install.csv`, `compile.csv`, "
-        "`speed.csv`; downloading the dependencies comes on top)."
+        f"{duration(compile_.loc['warmup', 'cpu_s'])} of CPU), {repro_and_tests} "
+        f"(`benchmarks/results/`: {files}; downloading the dependencies comes on top). "
+        f"{load}"
     )
 
 
@@ -1128,6 +1164,44 @@ def readme_with_blocks(text: str) -> str:
     return _BLOCK.sub(fill, text)
 
 
+#: a number in a Markdown page: ``<!-- n:name -->value<!-- /n -->``, the value written by
+#: :func:`pages_with_numbers` from :func:`numbers` (so the page reads the same on GitHub,
+#: in a terminal and in the site, where the comments do not show)
+_NUMBER = re.compile(r"<!-- n:(?P<name>\w+) -->(?P<value>.*?)<!-- /n -->", re.S)
+
+
+def number_pages() -> list[Path]:
+    """The Markdown pages of the docs that may hold numbers (not the build's output)."""
+    skip = {"_build", "_generated", "auto_examples"}
+    return sorted(p for p in (REPO / "docs").rglob("*.md") if not skip & set(p.parts))
+
+
+def with_numbers(text: str, values: dict[str, str]) -> str:
+    """``text`` with every ``<!-- n:name -->...<!-- /n -->`` holding ``values[name]``
+    (a name :func:`numbers` does not give stops with a KeyError naming it)."""
+
+    def fill(m: re.Match[str]) -> str:
+        name = m.group("name")
+        if name not in values:
+            raise KeyError(f"<!-- n:{name} --> names no number of pencore_docs.numbers()")
+        return f"<!-- n:{name} -->{values[name]}<!-- /n -->"
+
+    return _NUMBER.sub(fill, text)
+
+
+def write_numbers() -> list[Path]:
+    """Rewrite the numbers of every docs page (:func:`number_pages`); the pages changed."""
+    values = numbers()
+    changed = []
+    for page in number_pages():
+        text = page.read_text()
+        new = with_numbers(text, values)
+        if new != text:
+            page.write_text(new)
+            changed.append(page)
+    return changed
+
+
 def write_pages(target: Path = GENERATED) -> None:
     """Write every generated page into ``target`` (only files whose text changed)."""
     target.mkdir(parents=True, exist_ok=True)
@@ -1140,7 +1214,6 @@ def write_pages(target: Path = GENERATED) -> None:
 
 def _on_config_inited(app, config) -> None:  # noqa: ANN001 (Sphinx, Config)
     write_pages()
-    config.myst_substitutions = {**numbers(), **config.myst_substitutions}
 
 
 def setup(app) -> dict[str, object]:  # noqa: ANN001
@@ -1150,14 +1223,19 @@ def setup(app) -> dict[str, object]:  # noqa: ANN001
 
 
 def main(argv: list[str] | None = None) -> int:
-    """``--readme``: rewrite the README's generated blocks; ``--pages``: write the pages."""
+    """``--readme``: rewrite the README's generated blocks and the numbers in the docs'
+    Markdown pages; ``--pages``: write the pages."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--readme", action="store_true", help="rewrite README.md's blocks")
+    parser.add_argument(
+        "--readme", action="store_true", help="rewrite README.md's blocks and the docs' numbers"
+    )
     parser.add_argument("--pages", action="store_true", help="write docs/_generated/")
     args = parser.parse_args(argv)
     if args.readme:
         readme = REPO / "README.md"
         readme.write_text(readme_with_blocks(readme.read_text()))
+        for page in write_numbers():
+            print(f"pencore_docs: rewrote the numbers of {page.relative_to(REPO)}")
     if args.pages:
         write_pages()
     return 0

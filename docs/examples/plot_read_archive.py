@@ -25,8 +25,8 @@ from pathlib import Path
 
 import matplotlib.pyplot as plt
 import numpy as np
-import pandas as pd
 
+import pencore
 from pencore.io.netcdf import read_netcdf
 from pencore.paper.claims import at, load_claims
 
@@ -89,7 +89,7 @@ print(table.to_string())
 
 claims = load_claims(root / "config" / "paper_claims.csv")
 fig8_claims = claims[claims["study"] == "fig8/vcr"]
-comparison = pd.read_csv(archive / "paper_comparison.csv")
+comparison = pencore.read_table(archive / "paper_comparison.csv")  # pencore's CSV reader
 for c in fig8_claims.to_dict("records"):
     rows = comparison[comparison["claim"] == c["id"]]
     for row in rows.to_dict("records"):

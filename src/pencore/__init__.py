@@ -43,6 +43,7 @@ _EXPORTS = {
     "plot_run": "plotting.run",
     "read_netcdf": "io.netcdf",
     "write_netcdf": "io.netcdf",
+    "read_table": "io.tables",
     # analysis of a trajectory
     "final_deviation": "analysis.deviation",
     "deviation_from_normal": "analysis.deviation",
@@ -132,6 +133,7 @@ if TYPE_CHECKING:  # for type checkers and editors: the names as if imported eag
     from pencore.inputs.numerics import Numerics
     from pencore.inputs.target import Layer, Medium, Target
     from pencore.io.netcdf import read_netcdf, write_netcdf
+    from pencore.io.tables import read_table
     from pencore.plotting.run import plot_run
     from pencore.run.impact import prepare, simulate
     from pencore.search.critical import omega_c, vci, vcr

@@ -82,6 +82,8 @@ def test_every_command_has_a_way_to_run():
     known = (
         "python -m venv .venv",  # the set-up commands' virtual environment, and entering it
         ". .venv/bin/activate",
+        ". .venv-test/bin/activate",  # the tests' own environment
+        "export PENCORE_SLURM_",  # the cluster page's partition and account (dry runs use them)
         "pencore ",
         "python -m snakemake",
         "python -m pip install ",
@@ -136,8 +138,15 @@ def test_python_block_runs(block, tmp_path, monkeypatch):
 @pytest.mark.slow
 @pytest.mark.parametrize(("page", "command"), _commands("python -m snakemake"))
 def test_snakemake_command_dry_runs(page, command):
+    env = _env()
     for k, v in PLACEHOLDERS.items():
         command = command.replace(k, v)
+    for b in ex.blocks(page):  # the page's `export NAME=value` lines, as a reader runs them
+        for c in ex.commands(b) if b.lang == "bash" else []:
+            if c.startswith("export "):
+                for k, v in PLACEHOLDERS.items():
+                    c = c.replace(k, v)
+                env.update(item.split("=", 1) for item in shlex.split(c)[1:])
     argv = shlex.split(command)[1:]
     if "--report" in argv:
         # the report is of a finished run: its command is checked for what it names
@@ -145,7 +154,7 @@ def test_snakemake_command_dry_runs(page, command):
         assert argv[argv.index("--report") + 1] == "results/report.html"
         return
     done = subprocess.run(
-        [sys.executable, *argv, "-n"], cwd=REPO, env=_env(), capture_output=True, text=True
+        [sys.executable, *argv, "-n"], cwd=REPO, env=env, capture_output=True, text=True
     )
     assert done.returncode == 0, done.stderr[-2000:]
 
@@ -214,7 +223,7 @@ def test_durations_read_as_a_reader_says_them(gen):
     assert gen.duration(7200.0) == "2 h"
     numbers = gen.numbers()
     for page in PAGES:
-        used = re.findall(r"\{\{\s*(\w+)\s*\}\}", page.read_text())
+        used = re.findall(r"<!-- n:(\w+) -->", page.read_text())
         shown = {k: numbers[k] for k in used}
         assert not [k for k, v in shown.items() if re.search(r"\de[+-]\d", v)], page.name
     assert "min" in gen.timing_sentence()

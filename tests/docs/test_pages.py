@@ -72,14 +72,41 @@ def test_generated_tables_come_from_the_archive(gen, name):
     assert f"{float(vcr.iloc[0]):.{digits}g}" in text
 
 
-def test_substitutions_used_in_pages_are_defined(gen):
+def test_no_markdown_page_holds_a_template_field():
+    """The docs read the same on GitHub, in a terminal and in the site: no page holds a
+    field only the site's build fills (``{{ name }}``)."""
+    pages = [REPO / "README.md", *DOCS.rglob("*.md")]
+    pages = [p for p in pages if not {"_build", "auto_examples"} & set(p.parts)]
+    assert len(pages) > 20
+    held = [p.relative_to(REPO).as_posix() for p in pages if "{{" in p.read_text()]
+    assert not held, f"template fields in {held}"
+
+
+def test_the_numbers_written_into_the_pages_are_current(gen):
+    """Each ``<!-- n:name -->value<!-- /n -->`` of a page holds what its file gives now
+    (the archive, the benchmarks, the package's constants: ``pencore_docs.numbers()``)."""
     numbers = gen.numbers()
     used = set()
-    for page in DOCS.rglob("*.md"):
-        if "_build" in page.parts:
-            continue
-        used |= set(re.findall(r"\{\{\s*(\w+)\s*\}\}", page.read_text()))
-    assert used <= set(numbers), used - set(numbers)
+    for page in gen.number_pages():
+        text = page.read_text()
+        used |= set(re.findall(r"<!-- n:(\w+) -->", text))
+        assert gen.with_numbers(text, numbers) == text, (
+            f"{page.relative_to(REPO)} has stale numbers: run "
+            "`python docs/_ext/pencore_docs.py --readme`"
+        )
+        # a line that starts with the comment would be an HTML block to Markdown
+        starts = [ln for ln in text.splitlines() if ln.lstrip().startswith("<!-- n:")]
+        assert not starts, (page.name, starts)
+    assert {"warmup_cpu", "reproduction_wall", "ensemble_ms_per_sample"} <= used
+
+
+def test_a_stale_number_is_rewritten_and_an_unknown_one_named(gen):
+    text = "takes <!-- n:a -->1 s<!-- /n --> and <!-- n:b -->2<!-- /n --> m"
+    assert gen.with_numbers(text, {"a": "3 s", "b": "2"}) == (
+        "takes <!-- n:a -->3 s<!-- /n --> and <!-- n:b -->2<!-- /n --> m"
+    )
+    with pytest.raises(KeyError, match="n:b"):
+        gen.with_numbers(text, {"a": "3 s"})
 
 
 def test_ensemble_page_shows_the_shipped_case():

@@ -19,21 +19,26 @@ def test_opens_with_exactly_the_two_setup_commands():
     assert first[0] == "bash"
     commands = first[1:]
     assert len(commands) == 2
-    # both make and enter a virtual environment (uv installs only into one), install uv
-    # and then install with it
-    uv = (
-        "python -m venv .venv && . .venv/bin/activate && "
-        "python -m pip install uv && python -m uv pip install -e "
-    )
-    assert all(c.startswith(uv) for c in commands)
+
+    # each makes and enters a virtual environment of its own (uv installs only into one),
+    # installs uv and then installs with it: the pinned reproduction's `.venv` and the
+    # tests' `.venv-test`, so the tests' newest versions never move the reproduction's
+    def uv(venv: str) -> str:
+        return (
+            f"python -m venv {venv} && . {venv}/bin/activate && "
+            "python -m pip install uv && python -m uv pip install -e "
+        )
+
     # the reproduction installs the pinned versions the archive was made with, and builds
     # the kernels with them (the build's numba is the one the kernels must fit)
     assert commands[0].startswith(
-        f"{uv}'.[workflow]' -c constraints.txt --build-constraint constraints.txt &&"
+        f"{uv('.venv')}'.[workflow]' -c constraints.txt --build-constraint constraints.txt &&"
     )
     assert "snakemake --cores 2" in commands[0]
     # the tests resolve the newest versions pyproject.toml allows, as CI does
-    assert commands[1].startswith(f"{uv}'.[test]' &&")
+    assert commands[1].startswith(f"{uv('.venv-test')}'.[test]' &&")
+    envs = [re.findall(r"python -m venv (\S+) ", c) for c in commands]
+    assert envs == [[".venv"], [".venv-test"]], envs
     assert "constraints" not in commands[1]
     assert commands[1].endswith("python -m pytest -q -n 2")
     # CI runs the very test command a user runs, in a fresh virtual environment with a
@@ -61,6 +66,28 @@ def test_generated_blocks_are_current(gen):
     assert gen.readme_with_blocks(README) == README, (
         "README's generated blocks are stale: run `python docs/_ext/pencore_docs.py --readme`"
     )
+
+
+def test_timing_line_says_how_busy_the_host_was(gen, tmp_path, monkeypatch):
+    """The timing line gives the tests' time once benchmarks/bench_tests.py has measured it,
+    and says whether its figures are an idle host's or how busy the host was."""
+    import shutil
+
+    for name in ("speed.csv", "compile.csv", "install.csv"):
+        shutil.copy(gen.BENCH / name, tmp_path / name)
+    monkeypatch.setattr(gen, "BENCH", tmp_path)
+    head = "command,wall_s,cpu_s,passed,failed,errors,skipped,load_mean,cpu_model,cores,"
+    head += "load_1min,load_5min,load_15min,measured_utc,commit\n"
+    row = "python -m pytest -q -n 2,{wall},700,2300,0,0,0,{mean},AMD EPYC,2,{l1},1,1,x,abc\n"
+    (tmp_path / "tests.csv").write_text(head + row.format(wall=330, mean=0.9, l1=0.4))
+    idle = gen.timing_sentence()
+    assert "the tests about 5.5 min" in idle and "`tests.csv`" in idle
+    assert "These are idle-host figures" in idle and "a busy host takes longer" in idle
+    (tmp_path / "tests.csv").write_text(head + row.format(wall=900, mean=6.3, l1=5.0))
+    busy = gen.timing_sentence()
+    assert "the tests about 15 min" in busy
+    assert "measured at 1-minute loads of up to 6.3 on 2 cores" in busy
+    assert "idle-host" not in busy
 
 
 def test_relative_links_resolve():

@@ -67,7 +67,54 @@ def test_profile_keys_are_snakemake_options():
     for name in ("default", "slurm"):
         prof = yaml.safe_load((REPO / "workflow" / "profiles" / name / "config.yaml").read_text())
         for key in prof:
+            if key in ("__use_yte__", "__definitions__"):  # YTE's, read by Snakemake
+                continue
             assert f"--{key}" in help_text, f"profile {name}: {key!r} is not a snakemake option"
+
+
+def _dry_run_resources(out: str) -> dict[str, dict[str, str]]:
+    """``rule name -> {resource: value}`` of the first job of each rule a dry run lists."""
+    found: dict[str, dict[str, str]] = {}
+    for block in re.split(r"\n(?=(?:local)?rule \w+:)", out):
+        rule = re.match(r"(?:local)?rule (\w+):", block)
+        res = re.search(r"^\s+resources: (.*)$", block, flags=re.M)
+        if rule and res and rule.group(1) not in found:
+            pairs = (item.split("=", 1) for item in res.group(1).split(", "))
+            found[rule.group(1)] = dict(pairs)
+    return found
+
+
+def test_slurm_profile_adds_the_site_partition_and_account(workdir):
+    """The cluster page's command: the site's partition and account (two environment
+    variables the profile reads) join the profile's resources; the gather job keeps its
+    runtime and cpus_per_task, the chunks their memory. ``--default-resources`` on the
+    command line would replace them (checked too: the reason the page does not use it)."""
+    target = ["results/ensemble/p2_soil_oblique.nc", "-n", "--forceall"]
+    args = [*target, "--workflow-profile", "workflow/profiles/slurm"]
+    args += ["--configfile", ".test/config.yaml"]
+    env = {k: v for k, v in os.environ.items() if not k.startswith("PENCORE_SLURM_")}
+    site = {**env, "PENCORE_SLURM_PARTITION": "short", "PENCORE_SLURM_ACCOUNT": "proj-42"}
+    plain = run_snakemake(workdir, *args, env=env)
+    given = run_snakemake(workdir, *args, env=site)
+    for r in (plain, given):
+        assert r.returncode == 0, r.stderr[-3000:]
+    before = _dry_run_resources(plain.stdout + plain.stderr)
+    after = _dry_run_resources(given.stdout + given.stderr)
+    assert set(before) == set(after) == {"ensemble_chunk", "ensemble_gather"}
+    for rule, res in before.items():
+        assert "slurm_partition" not in res and "slurm_account" not in res
+        assert after[rule] == {**res, "slurm_partition": "short", "slurm_account": "proj-42"}
+    assert after["ensemble_gather"]["runtime"] == "30"  # the profile's default
+    assert after["ensemble_gather"]["cpus_per_task"] == "1"
+    assert after["ensemble_chunk"]["runtime"] == "15"  # the profile's set-resources
+    assert after["ensemble_chunk"]["mem_mb"] == "2000"
+    replaced = run_snakemake(
+        workdir, *args[:-2], "--default-resources", "slurm_partition=short",
+        "--configfile", ".test/config.yaml", env=env,
+    )  # fmt: skip
+    lost = _dry_run_resources(replaced.stdout + replaced.stderr)
+    assert "cpus_per_task" not in lost["ensemble_gather"]
+    assert lost["ensemble_chunk"]["mem_mb"] != "2000"
 
 
 def test_archive_target_dry_run(workdir):
@@ -313,6 +360,17 @@ def test_e2e_figures_logs_benchmarks(e2e):
 
 
 @pytest.mark.slow
+def test_e2e_says_the_long_jobs_start_first(e2e):
+    """The run's first line after the DAG says the longest jobs went first, before the
+    first "N of M steps done" line that waits for one of them (the Snakefile's onstart)."""
+    log = (e2e.parent / "snakemake.log").read_text()
+    said = [ln for ln in log.splitlines() if ln.startswith("pencore: the ")]
+    assert len(said) == 1, said
+    assert "longest jobs (" in said[0] and "near_surface_part" in said[0]
+    assert log.index(said[0]) < log.index(" steps (")
+
+
+@pytest.mark.slow
 def test_e2e_rerun_is_targeted(e2e):
     r = run_snakemake(e2e, "-n", "--cores", "1", "--configfile", ".test/config.yaml")
     assert r.returncode == 0
@@ -334,15 +392,7 @@ def _planned_rules(out: str) -> set[str]:
 
 def _dry_run_with_src(wd: Path, src: Path) -> set[str]:
     env = {**os.environ, "PYTHONPATH": str(src)}
-    r = subprocess.run(
-        [sys.executable, "-m", "snakemake", "-n", "--cores", "1"]
-        + ["--configfile", ".test/config.yaml"],
-        cwd=wd,
-        capture_output=True,
-        text=True,
-        timeout=600,
-        env=env,
-    )
+    r = run_snakemake(wd, "-n", "--cores", "1", "--configfile", ".test/config.yaml", env=env)
     assert r.returncode == 0, r.stderr[-3000:]
     return _planned_rules(r.stdout + r.stderr)
 

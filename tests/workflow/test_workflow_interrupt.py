@@ -20,6 +20,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import xarray as xr
+from helpers import run_snakemake
 
 REPO = Path(__file__).resolve().parents[2]
 TARGET = "results/fig8/vcr.nc"
@@ -38,9 +39,7 @@ def _copy(dest: Path) -> Path:
 
 
 def _run(cwd: Path, *args: str) -> subprocess.CompletedProcess:
-    return subprocess.run(
-        [*SNAKEMAKE, *args, *OPTIONS], cwd=cwd, capture_output=True, text=True, timeout=600
-    )
+    return run_snakemake(cwd, *args, *OPTIONS)
 
 
 def _netcdf_files(root: Path) -> dict[str, Path]:

@@ -1,6 +1,6 @@
 """Files: netCDF with provenance (:mod:`~pencore.io.netcdf`), atomic, durable writes
-(:mod:`~pencore.io.atomic`),
-and the check of result files (:mod:`~pencore.io.results`).
+(:mod:`~pencore.io.atomic`), the check of result files (:mod:`~pencore.io.results`), and
+the reader of CSV tables with a ``#`` provenance header (:mod:`~pencore.io.tables`).
 
 ``__all__`` lists the public names; each is imported from its module on first use, so the
 command line's use of :mod:`~pencore.io.atomic` does not load xarray.
@@ -18,6 +18,7 @@ __getattr__, __dir__, __all__ = attach(
         "readable_netcdf": "results",
         "set_aside_unreadable": "results",
         "atomic_path": "atomic",
+        "read_table": "tables",
     },
 )
 del attach
