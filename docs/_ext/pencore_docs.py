@@ -421,6 +421,7 @@ def numbers() -> dict[str, str]:
     out["comparison_counts"] = comparison_counts()
     out.update(concrete_numbers())
     out.update(compilation_numbers())
+    out.update(record_numbers())
     from pencore.inputs import gate
     from pencore.inputs.numerics import DEFAULT_MAX_WALL
 
@@ -825,6 +826,156 @@ def compilation_numbers() -> dict[str, str]:
     }
 
 
+def _record():  # noqa: ANN202 (xarray.Dataset, xarray.Dataset)
+    """The archived concrete record and its statistics."""
+    with open_archive(
+        ARCHIVE / "validation" / "concrete_record.nc", "validation/concrete_record"
+    ) as d:
+        ds = d.load()
+    with open_archive(
+        ARCHIVE / "validation" / "concrete_record_stats.nc", "validation/concrete_record_stats"
+    ) as s:
+        stats = s.load()
+    return ds, stats
+
+
+def _law_label(law: str) -> str:
+    from pencore.inputs.record import DEFAULT_RECORD_LAW, RECORD_LAWS
+
+    if law not in RECORD_LAWS:
+        return law
+    o = RECORD_LAWS[law]
+    text = f"S {o['s_model']}, crater {o['crater']}, size term {o['size_term']}"
+    return f"`{law}` ({text})" + (" **default**" if law == DEFAULT_RECORD_LAW else "")
+
+
+def record_laws_table() -> str:
+    """Every scored model on the held-out rows: count, median error, median and mean abs(e),
+    the share within 25 %, and the depth band's calibration."""
+    ds, st = _record()
+    lines = [
+        "| law or closed form | held-out shots | median e | median abs(e) | mean abs(e) | "
+        "within 25 % | all clean: median e | band's level | band held |",
+        "|---|---|---|---|---|---|---|---|---|",
+    ]
+    for m in st["model"].values.astype(str):
+        h = st.sel(model=m, rows="held_out")
+        a = st.sel(model=m, rows="all_clean")
+        if str(st["kind"].sel(model=m).values) == "solver":
+            lvl = f"{float(st['nominal_level'].sel(model=m)):.2f}"
+            held = f"{100 * float(st['held_out_coverage'].sel(model=m)):.0f} %"
+        else:
+            lvl = held = "-"
+        lines.append(
+            f"| {_law_label(m)} | {int(h['overall_n'])} | {_pct(float(h['overall_median_error']))} "
+            f"| {_pct(float(h['overall_median_abs_error'])).lstrip('+')} "
+            f"| {_pct(float(h['overall_mean_abs_error'])).lstrip('+')} "
+            f"| {100 * float(h['overall_within']):.0f} % "
+            f"| {_pct(float(a['overall_median_error']))} | {lvl} | {held} |"
+        )
+    return "\n".join(lines)
+
+
+def _record_bins(quantity: str, stat: str = "median_error") -> str:
+    _, st = _record()
+    bins = [str(b) for b in st[f"{quantity}_bin"].values]
+    n = st[f"{quantity}_n"].isel(model=0).values
+    lines = [
+        "| law or closed form | "
+        + " | ".join(f"{b} ({int(k)})" for b, k in zip(bins, n, strict=True))
+        + " |",
+        "|---|" + "---|" * len(bins),
+    ]
+    for m in st["model"].values.astype(str):
+        v = st[f"{quantity}_{stat}"].sel(model=m).values
+        cells = ["-" if not math.isfinite(x) else _pct(float(x)) for x in v]
+        lines.append(f"| `{m}` | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
+def record_diameter_table() -> str:
+    """Median error per diameter bin over the held-out rows (count in the header)."""
+    return _record_bins("diameter")
+
+
+def record_speed_table() -> str:
+    """Median error per striking-speed bin over the held-out rows."""
+    return _record_bins("speed")
+
+
+def record_regime_table() -> str:
+    """The rigid-regime criterion on the record: rows kept and flagged, clean and eroding,
+    with the default law's median error."""
+    from pencore.inputs.record import DEFAULT_RECORD_LAW
+
+    _, st = _record()
+    lines = ["| rows | shots | median e (default law) | within 25 % |", "|---|---|---|---|"]
+    for g in st["regime"].values.astype(str):
+        r = st.sel(model=DEFAULT_RECORD_LAW, regime=g)
+        n = int(r["regime_n"])
+        if n == 0:
+            lines.append(f"| {g} | 0 | - | - |")
+            continue
+        lines.append(
+            f"| {g} | {n} | {_pct(float(r['regime_median_error']))} "
+            f"| {100 * float(r['regime_within']):.0f} % |"
+        )
+    return "\n".join(lines)
+
+
+def record_numbers() -> dict[str, str]:
+    """Single numbers of the concrete record for the prose and the README."""
+    from pencore.inputs.record import DEFAULT_RECORD_LAW
+
+    ds, st = _record()
+    h = st.sel(rows="held_out")
+    d = h.sel(model=DEFAULT_RECORD_LAW)
+    f = h.sel(model="forrestal")
+    big = st.sel(diameter_bin=str(st["diameter_bin"].values[-1]))
+    band = st.sel(model=DEFAULT_RECORD_LAW)
+    return {
+        "record_scored": str(ds.sizes["shot"]),
+        "record_clean": str(int((ds["group"] == "clean").sum())),
+        "record_eroding": str(int((ds["group"] == "eroding").sum())),
+        "record_held_out": str(int(d["overall_n"])),
+        "record_sources_held_out": str(
+            len(set(ds["source"].values[ds["held_out"].values.astype(bool)]))
+        ),
+        "record_best": DEFAULT_RECORD_LAW,
+        "record_best_within": f"{100 * float(d['overall_within']):.0f} %",
+        "record_best_median_abs": f"{100 * float(d['overall_median_abs_error']):.1f} %",
+        "record_forrestal_within": f"{100 * float(f['overall_within']):.0f} %",
+        "record_forrestal_median_abs": f"{100 * float(f['overall_median_abs_error']):.1f} %",
+        "record_big_forrestal": _pct(float(big["diameter_median_error"].sel(model="forrestal"))),
+        "record_big_best": _pct(float(big["diameter_median_error"].sel(model=DEFAULT_RECORD_LAW))),
+        "record_big_n": str(int(big["diameter_n"].sel(model="forrestal"))),
+        "record_band_held": f"{100 * float(band['held_out_coverage']):.0f} %",
+        "record_band_level": f"{float(band['nominal_level']):.2f}",
+        "record_band_uncalibrated": f"{100 * float(band['coverage_at_stated']):.0f} %",
+        "record_loses": str(st.attrs["best_law_loses"]) or "no bin",
+    }
+
+
+def record_headline() -> str:
+    """The README's rows of the concrete record: each concrete law on the held-out sources."""
+    _, st = _record()
+    lines = [
+        "| concrete law (`law: concrete` options) | held-out shots | median error | "
+        "within 25 % | 80 % band held |",
+        "|---|---|---|---|---|",
+    ]
+    for m in st["model"].values.astype(str):
+        if str(st["kind"].sel(model=m).values) != "solver":
+            continue
+        h = st.sel(model=m, rows="held_out")
+        lines.append(
+            f"| {_law_label(m)} | {int(h['overall_n'])} | {_pct(float(h['overall_median_error']))} "
+            f"| {100 * float(h['overall_within']):.0f} % "
+            f"| {100 * float(st['held_out_coverage'].sel(model=m)):.0f} % |"
+        )
+    return "\n".join(lines)
+
+
 def validation_headline() -> str:
     """The README's table of pencore against measured depths: pencore's 3-D run, one row
     per data file (config entry) and law with a rigid shot, its rigid shots pooled (a body
@@ -1134,6 +1285,10 @@ PAGES: dict[str, Callable[[], str]] = {
     "compilation_reasons.md": compilation_reasons_table,
     "compilation_sources.md": compilation_sources_table,
     "compilation_duplicates.md": compilation_duplicates_table,
+    "record_laws.md": record_laws_table,
+    "record_diameter.md": record_diameter_table,
+    "record_speed.md": record_speed_table,
+    "record_regime.md": record_regime_table,
     "layers.md": layers_table,
     "measurement_options.md": measurement_options_table,
     "obliquity_ratio.md": obliquity_ratio_table,
@@ -1146,6 +1301,7 @@ PAGES: dict[str, Callable[[], str]] = {
 README_BLOCKS: dict[str, Callable[[], str]] = {
     "headline": headline_table,
     "validation": validation_headline,
+    "record": record_headline,
     "timing": timing_sentence,
 }
 

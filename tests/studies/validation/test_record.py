@@ -91,6 +91,14 @@ def test_the_default_law_is_the_best_on_held_out_sources(archived):
     assert laws[int(np.argmin(crit))] == DEFAULT_RECORD_LAW
 
 
+def test_the_statistics_recompute_from_the_archived_record(archived):
+    ds, stats = archived
+    again = R.record_statistics(ds)  # ds as read back: its flags are int8, not bool
+    for v in stats.data_vars:
+        np.testing.assert_array_equal(stats[v].values, again[v].values, err_msg=v)
+    assert again.attrs["best_law"] == stats.attrs["best_law"]
+
+
 def test_the_band_calibration_recomputes_from_the_archive(archived):
     ds, stats = archived
     for law in RECORD_LAWS:

@@ -429,7 +429,7 @@ def record_statistics(ds: xr.Dataset) -> xr.Dataset:
     models = ds["model"].to_numpy().astype(str)
     kinds = ds["kind"].to_numpy().astype(str)
     clean = (ds["group"] == "clean").to_numpy()
-    held_out = ds["held_out"].to_numpy()
+    held_out = ds["held_out"].to_numpy().astype(bool)  # int8 once read from netCDF
     e_all = ds["held_out_rel_error"].to_numpy()
     stats = STATISTICS
     long = {
