@@ -16,7 +16,7 @@ import io
 import os
 from typing import TYPE_CHECKING
 
-from pencore.errors import InputError
+from pencore.errors import InputError, hint_keywords
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -84,3 +84,6 @@ def read_table(path: str | os.PathLike[str]) -> pd.DataFrame:
     frame.attrs["provenance"] = [ln.strip()[1:].strip() for ln in lines[:n]]
     frame.attrs["path"] = name
     return frame
+
+
+hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint
