@@ -60,6 +60,7 @@ from pencore.integrators.driver import (
     CHUNK_STEPS,
     RunGuard,
     RunResult,
+    leaving,
     path_of,
     reserve_path,
     stalled,
@@ -88,6 +89,7 @@ from pencore.kernels.state import (
     SI_N_RHS,
     SI_REV,
     STEP_UNDERFLOW,
+    body_extent,
     layer_step_bound,
     lu_factor,
     lu_solve,
@@ -422,7 +424,10 @@ def integrate(
     ``chatter``: the steps are accepted, but so small that the run would only end at
     ``max_steps`` (the discontinuous law, ``eps = 0``, does this on an oblique shank:
     steps of ~1e-8 s). A run slowing to a stop changes its speed by far more than 1 %
-    over 500 steps, so it is not mistaken for one.
+    over 500 steps, so it is not mistaken for one; nor is a body backing out of the
+    target at a pace that takes it out within the step budget
+    (:func:`~pencore.integrators.driver.leaving`: a slow rebound, whose steps the
+    creeping lateral contact of its shank holds to ~1e-7 s).
 
     ``problem`` carries the arrays and the numerics
     (:class:`~pencore.integrators.problem.Problem`); ``velocity``
@@ -502,8 +507,10 @@ def _integrate(
             outcome = "step_limit"
             break
         if ts.size == CHUNK_STEPS and stalled(ys, stall_distance):
-            outcome = "chatter"
-            break
+            depth = bounds[0, 0] - body_extent(ys[-1], rings)[0]
+            if not leaving(ys, depth, max_steps - n_saved):
+                outcome = "chatter"
+                break
         if guard.out_of_time:
             outcome = "wall_limit"
             break

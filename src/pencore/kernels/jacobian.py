@@ -497,7 +497,7 @@ def analytic_jacobian_applies(eps: float, n_gauss: int, crater: bool = False) ->
     """Whether the closed-form velocity Jacobian (:mod:`pencore.kernels.jacobian`) covers this
     right-hand side: the smoothed step (``eps > 0``), no friction (``n_gauss == 0``,
     a frictionless target) and no crater region (``crater``: its factor,
-    :func:`pencore.kernels.crater.crater_factor`, depends on the axial speed, which the
+    :func:`pencore.kernels.crater.element_factor`, depends on the axial speed, which the
     closed form leaves out). Every shank model and surface of :mod:`pencore.kernels.forces`
     is covered (rings, panels, the cavity shank's points)."""
     return eps > 0.0 and n_gauss == 0 and not crater
