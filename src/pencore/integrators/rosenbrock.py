@@ -69,7 +69,6 @@ from pencore.integrators.driver import (
 from pencore.integrators.problem import Problem
 from pencore.kernels.cache import use_kernel_cache
 from pencore.kernels.contact_points import MAX_SAMPLES_PER_STEP, push_path
-from pencore.kernels.crater import has_crater
 from pencore.kernels.forces import rhs_model
 from pencore.kernels.jacobian import analytic_jacobian_applies, velocity_jacobian
 from pencore.kernels.state import (
@@ -479,8 +478,7 @@ def _integrate(
     entered = clear <= 0.0
     sf = np.array([0.0, h_init, 0.0 if entered else math.nan, clear, 0.0])
     si = np.array([int(entered), 0, 1, 0, 0], dtype=np.int64)
-    crater = has_crater(bounds)
-    analytic = num.jacobian == "analytic" and analytic_jacobian_applies(eps, n_gauss, crater)
+    analytic = num.jacobian == "analytic" and analytic_jacobian_applies(eps, n_gauss)
     ts_parts = [np.zeros(1)]
     ys_parts = [y[None, :].copy()]
     fs_parts = [f0[None, :].copy()]
