@@ -199,7 +199,7 @@ def plot_ballistic_map(
         for t in tod:
             flag(ax, t, float(base["v_bl"].sel(obliquity=o, t_over_d=t)), first, t, o)
     ax.plot([], [], "k--", lw=1, label=r"line of sight $v_{bl}(0)\,\sec\theta$")
-    if mesh is not None:
+    if mesh is not None and (mesh["reason"] != "").any():
         factor = float(mesh.attrs.get("mesh_factor", 2))
         ax.plot([], [], "o", ms=11, mfc="none", color="0.2", lw=0.8,
                 label=f"not converged on {factor:g}x the rings")  # fmt: skip
