@@ -23,30 +23,39 @@ a force of the present depth and speed only, equal to ``c z`` on every normal tr
 Element by element: every element's DAFL stress (its own normal velocity and normal) is
 multiplied by the factor of the normal-entry state that puts it at its own depth::
 
-    lam(z_e, V_a) = g(z_e / (k d)) F_full(V_a) / R(z_e, V_a),   z_e = h + s_t,
+    lam(z_e, V_a) = g(z_e / (k d)) F_full(V_a) / R_q(z_e, V_a),   z_e = h + s_t,
 
 with ``h`` the element's depth below the layer's top face (the ring centre's, for a ring),
-``s_t`` its axial distance from the nose tip, ``V_a >= 0`` the body's axial speed, and
-``R(z, V) = sum_k a_k V^k J_k(min(z, L_n))`` the frictionless DAFL axial resistance of the
-nose tip-first to depth ``z`` in normal entry, ``J_k(z) = int 2 pi r n_a^k dr`` over the
-nose's exact profile from the tip to axial distance ``z`` (:func:`nose_moment`; not the
-rings: the factor is the same on every ring mesh), ``F_full = R(L_n, V)``. So:
+``s_t`` its axial distance from the nose tip, ``V_a >= 0`` the body's axial speed,
+``F_full = sum_k a_k V^k J_k(L_n)`` the frictionless DAFL axial force on the whole nose in
+normal entry, ``J_k(z) = int 2 pi r n_a^k dr`` over the nose's exact profile from the tip
+to axial distance ``z`` (the layer's columns; :func:`nose_moment`), and ``R_q(z, V)`` the
+model's own quadrature of the normal-entry resistance of the nose tip-first to depth ``z``
+(:func:`fill_reference`, :func:`reference_resistance`: each ring's load times the share
+of its band below the face). Written against the exact profile's resistance ``R(z)``
+(:func:`nose_resistance`), ``lam = Lambda(z_e) R(z_e) / R_q(z_e)``: ``Lambda = g F_full /
+R``, the factor Forrestal's law puts on the DAFL, which no ring mesh enters, times the
+rings' correction of their own quadrature at that depth, which tends to 1 as the rings
+are refined. The correction keeps the load finite at a sharp tip: the rings load their
+first band a little before the tip reaches the face, and ``Lambda`` grows like ``1 /
+z``, so the product of the two alone would not be. So:
 
 * normal entry: every element has ``z_e = z``, the tip's depth, and one factor
-  ``g F_full / R(z)``; the axial load is ``c z`` times the rings' own quadrature of the DAFL
-  over the embedded nose (``R_rings(z) / R(z)``, which tends to 1 with the rings as the
-  plain DAFL does; exactly ``c z`` for the exact profile);
+  ``g F_full / R_q(z)``: the axial load is ``g F_full = c z`` on any ring mesh, to
+  round-off, with the exact profile's ``N*``;
 * oblique or yawed entry (Forrestal's form says nothing there): each element carries the
   factor it would carry in normal entry at its own depth, so an element well below the
-  face carries the DAFL's stress times ``g <= 1`` wherever the tip is; the factor grows
-  like ``1 / z_e`` only on the elements near a sharp tip that are themselves near the
-  face (where the DAFL's ``z^2`` resistance of a pointed nose stands for Forrestal's
-  ``c z``). The load is not ``c z``;
-* a plate: ``R`` is the medium's half-space resistance (Forrestal's ``c z`` is a
+  face carries the DAFL's stress times about ``g <= 1`` wherever the tip is; the factor
+  exceeds 1 only on the elements near a sharp tip that are themselves near the face
+  (where Forrestal's linear force exceeds the DAFL's quadratic resistance of a pointed
+  nose). The load's direction and centre of pressure follow the elements; it is not
+  ``c z``;
+* a plate: ``R_q`` is the medium's half-space resistance (Forrestal's ``c z`` is a
   half-space's force), so a plate thinner than the embedded part of the nose carries
   the half-space's factor on the load it really takes (a slice of the half-space's crater);
-* ``z_e >= k d``: ``lam = 1`` (the DAFL unchanged; continuous, ``k d >= L_n``);
-  ``z_e <= 0``: ``lam = 0``.
+* ``z_e >= k d``: ``lam = 1`` (the DAFL unchanged; ``k d >= L_n``, and the step there is
+  the rings' ``F_full`` against the exact one, 2e-4 at 48 nose rings); ``z_e <= 0``:
+  ``lam = 0``.
 
 ``beta`` uses the ``a2`` term and ``J_2(L_n) = pi a^2 N*``, so the reduction to ``c z`` is
 exact for Forrestal's law ``a0 + a2 Vn^2``; other terms of the law are scaled by the same
