@@ -492,7 +492,7 @@ class Target:
             :func:`pencore.inputs.geometry.nose_axial_moments`), :data:`WINDOW_COLUMNS` in
             all; see
             :func:`pencore.kernels.windows.depth_factor` and
-            :func:`pencore.kernels.crater.crater_factor`.
+            :func:`pencore.kernels.crater.element_factor`.
         coef : (n, p) float
             Resistance coefficients, zero-padded.
         fric : (n, k, 2) float
