@@ -9,8 +9,9 @@ obliquity, with ``v_bl`` (m/s) and ``status`` on each mesh, the default one incl
 (factor 1, run here too, so that the file stands on its own).
 
 A cell counts as converged in the mesh when its ``v_bl`` on twice the rings is within the
-search's tolerance of the default's (:func:`converged`); the docs' map marks the others
-(``docs/_ext/pencore_docs.py``, ``ballistic_map_table``).
+search's tolerance of the default's (:func:`pencore.studies.perforation.mesh_check.mesh_check`,
+the rule the workflow's own check, rule ``near_surface_mesh``, applies and archives; the
+docs' map marks the others from the archive); ``reason`` says why for the others.
 Run (about 10 min on one core): python benchmarks/near_surface_mesh.py [--factors 0.5 1 2]
 """
 
@@ -21,11 +22,11 @@ import sys
 import time
 from pathlib import Path
 
-import numpy as np
 import pandas as pd
+import xarray as xr
 import yaml
 
-import pencore
+from pencore.studies.perforation.mesh_check import finer_rings, mesh_check
 from pencore.studies.perforation.obliquity import ballistic_map
 
 HERE = Path(__file__).parent
@@ -36,15 +37,11 @@ from machine import machine  # noqa: E402
 OUT = HERE / "results" / "near_surface_mesh.csv"
 
 
-def mesh_map(study: dict, factor: float) -> pd.DataFrame:
+def mesh_map(study: dict, factor: float) -> xr.Dataset:
     """The map of ``study`` (the config's ``near_surface`` block) on the ring mesh scaled
-    by ``factor``: option, t_over_d, obliquity, v_bl (m/s), status."""
-    default = pencore.Numerics()
-    numerics = {
-        "n_nose": round(factor * default.n_nose),
-        "n_shank": round(factor * default.n_shank),
-    }
-    ds = ballistic_map(
+    by ``factor``."""
+    numerics = finer_rings(None, factor)
+    return ballistic_map(
         study["projectile"],
         study["medium"],
         study["t_over_d"],
@@ -56,16 +53,12 @@ def mesh_map(study: dict, factor: float) -> pd.DataFrame:
         scan=study["scan_points"],
         numerics=numerics,
     )
+
+
+def as_table(ds: xr.Dataset) -> pd.DataFrame:
+    """option, t_over_d, obliquity, v_bl (m/s), status of a map."""
     df = ds[["v_bl", "status"]].to_dataframe().reset_index()
     return df[["option", "t_over_d", "obliquity", "v_bl", "status"]]
-
-
-def converged(table: pd.DataFrame, tol: float) -> pd.Series:
-    """Per row of the written table: True when ``v_bl`` on twice the default rings
-    (``v_bl_mesh2``) is within ``tol`` (m/s) of the default's (``v_bl_mesh1``); False when
-    it is not, or when either search failed."""
-    a, b = table["v_bl_mesh1"], table["v_bl_mesh2"]
-    return pd.Series(np.abs(b - a) <= tol, index=table.index) & a.notna() & b.notna()
 
 
 def label(factor: float) -> str:
@@ -82,14 +75,19 @@ def main() -> None:
         raise SystemExit("near_surface_mesh: --factors must include 1 and 2 (the verdict)")
     study = yaml.safe_load((REPO / "config" / "config.yaml").read_text())["near_surface"]
     table = None
+    maps = {}
+    keys = ["option", "t_over_d", "obliquity"]
     for f in args.factors:
         t0 = time.perf_counter()
-        df = mesh_map(study, f)
+        maps[f] = mesh_map(study, f)
         print(f"mesh x{f:g}: {time.perf_counter() - t0:.1f} s", flush=True)
+        df = as_table(maps[f])
         df = df.rename(columns={"v_bl": f"v_bl_{label(f)}", "status": f"status_{label(f)}"})
-        keys = ["option", "t_over_d", "obliquity"]
         table = df if table is None else table.merge(df, on=keys)
-    table["converged"] = converged(table, float(study["velocity_tol_m_s"]))
+    check = mesh_check(maps[1.0], maps[2.0], 2.0)
+    verdict = check[["converged", "reason"]].to_dataframe().reset_index()
+    table = table.merge(verdict, on=keys)
+    table["converged"] = table["converged"].astype(bool)
     m = machine()
     table["tol_m_s"] = float(study["velocity_tol_m_s"])
     table["commit"] = m["commit"]

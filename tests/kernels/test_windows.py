@@ -125,7 +125,7 @@ def test_finite_sphere_far_from_every_face_is_the_half_space_law():
     slab = Target("slab", (Layer(replace(CONCRETE, plastic_zone_ratio=ratio), 40.0),))
     plain = Target("plain", (Layer(CONCRETE, 40.0),))
     mp = P2.mass_properties()
-    on = slab.kernel_arrays(P2.diameter, mp.mass, P2.nose_length, mp.lc)
+    on = slab.kernel_arrays(P2.diameter, mp.mass, P2.nose_length, mp.lc, P2.nose)
     off = plain.kernel_arrays(P2.diameter)
     rings = P2.rings(48, 24, 4).as_array()
     y = initial_state(P2, rings, 300.0, math.radians(20.0), 0.0, 0.0, None, 0.0, "cm")

@@ -56,6 +56,19 @@ def test_dry_run_lists_every_study(workdir):
     assert "archive_dataset" not in out
 
 
+def test_the_reproduction_checks_the_near_surface_map_on_finer_rings(workdir):
+    # the ring-mesh check is part of `all` (its dataset, and the figure that marks the
+    # cells it does not pass) and of the archive, beside the map
+    r = run_snakemake(workdir, "-n", "--cores", "1")
+    out = r.stdout + r.stderr
+    for rule in ("near_surface_mesh_part", "near_surface_mesh"):
+        assert f"rule {rule}:" in out, f"rule {rule} missing from the dry run"
+    figure = out[out.index("rule near_surface_figure:") :].split("\n\n", 1)[0]
+    assert "results/near_surface/mesh_check.nc" in figure
+    r = run_snakemake(workdir, "-n", "--cores", "1", "archive")
+    assert "results/archive/near_surface/mesh_check.nc" in r.stdout
+
+
 def test_dry_run_with_workflow_profiles(workdir):
     r = run_snakemake(workdir, "-n", "--workflow-profile", "workflow/profiles/default")
     assert r.returncode == 0, r.stderr + r.stdout

@@ -37,6 +37,7 @@ __all__ = [
     "Rings",
     "MassProperties",
     "nose_factor",
+    "nose_axial_moments",
 ]
 
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(96)
@@ -792,6 +793,28 @@ def nose_factor(nose: Nose) -> float:
     if isinstance(nose, ConeNose):
         return math.sin(nose.half_angle) ** 2
     return 1.0
+
+
+def nose_axial_moments(nose: Nose, a: float, n: int) -> np.ndarray:
+    """Full-nose moments ``J_k = int 2 pi r n_a^k dr`` (m^2), ``k = 0 .. n - 1``, over the
+    exact profile of ``nose`` on a body of radius ``a`` (m): the frictionless DAFL axial
+    force on the embedded nose in normal entry at speed ``V`` is ``sum_k a_k V^k J_k``
+    (``J_0 = pi a^2``, ``J_2 = pi a^2 N*``, :func:`nose_factor`). Tangent ogive: 96-point
+    Gauss-Legendre in the meridian angle (exact to round-off); cone and flat face in
+    closed form. Used by the crater region (:mod:`pencore.kernels.crater`)."""
+    k = np.arange(n)
+    if isinstance(nose, ConeNose):
+        return math.pi * a * a * math.sin(nose.half_angle) ** k
+    if isinstance(nose, FlatNose):
+        return np.full(n, math.pi * a * a)
+    ro = 2.0 * nose.crh * a
+    b_tip = math.asin(min(nose.length(a) / ro, 1.0))
+    b = 0.5 * b_tip * (_GL_X + 1.0)
+    sb = np.sin(b)
+    integrand = (ro * np.cos(b) - (ro - a)) * sb
+    return np.array(
+        [2.0 * math.pi * ro * 0.5 * b_tip * float(np.sum(_GL_W * integrand * sb**j)) for j in k]
+    )
 
 
 hint_keywords(globals())  # a misspelt keyword of a public function: one line with a hint

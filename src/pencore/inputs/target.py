@@ -76,6 +76,7 @@ import numpy as np
 
 from pencore.errors import InputError, TargetError, hint_keywords
 from pencore.inputs.gate import brief
+from pencore.inputs.geometry import ConeNose, Nose, OgiveNose, nose_axial_moments
 from pencore.inputs.limits import as_float, count, number, plausible
 from pencore.inputs.record import RECORD_LAWS
 
@@ -89,14 +90,29 @@ __all__ = [
 ]
 
 
-#: Columns of the layer array when a near-surface option is on
-#: (:meth:`Target.kernel_arrays`).
-WINDOW_COLUMNS = 10
-
 #: Most resistance coefficients a medium may have: the compiled kernels hold the stress
 #: polynomial, its smoothed step (one degree more) and the Jacobian's moments (three
 #: more) in arrays of ``pencore.kernels.arcs._MAXD + 2`` entries (tests/run/test_impact.py checks).
 MAX_COEFFICIENTS = 8
+
+#: Columns of the layer array when a near-surface option is on
+#: (:meth:`Target.kernel_arrays`): ten of the windows, then the crater's nose (kind,
+#: parameter, length) and its full-nose moments (``pencore.kernels.crater.COL_NOSE``,
+#: ``COL_MOMENTS``; tests/kernels/test_crater.py checks the layout).
+WINDOW_COLUMNS = 13 + MAX_COEFFICIENTS
+
+
+def _nose_columns(nose: Nose, a: float, nose_length: float) -> np.ndarray:
+    """The crater's nose columns of a layer row (``pencore.kernels.crater``): kind (1
+    ogive, 2 cone, 3 flat), parameter (ogive radius ``2 CRH a``, m; cone ``tan`` of the
+    half-angle; 0), length (m), and the full-nose moments ``J_k`` (m^2)."""
+    if isinstance(nose, OgiveNose):
+        head = (1.0, 2.0 * nose.crh * a, nose_length)
+    elif isinstance(nose, ConeNose):
+        head = (2.0, math.tan(nose.half_angle), nose_length)
+    else:
+        head = (3.0, 0.0, 0.0)
+    return np.concatenate([head, nose_axial_moments(nose, a, MAX_COEFFICIENTS)])
 
 
 #: Li & Chen's crater depth ``k = 0.707 + H/d`` (their Eq. 25): the 0.707 calibers of the
@@ -645,20 +661,22 @@ class Target:
         mass: float | None = None,
         nose_length: float | None = None,
         tip: float | None = None,
+        nose: Nose | None = None,
     ) -> tuple[np.ndarray, ...]:
         """Arrays for the compiled kernel.
 
         ``diameter`` (m) of the projectile scales the depth windows (needed only when a
         medium has ``crater_depth`` or ``free_surface_depth``); the crater also needs the
-        projectile's ``mass`` (kg), ``nose_length`` (m) and ``tip`` (m: axial coordinate
-        of the nose tip from the centre of mass).
+        projectile's ``mass`` (kg), ``nose_length`` (m), ``tip`` (m: axial coordinate
+        of the nose tip from the centre of mass) and ``nose`` (its exact profile, from which
+        the crater factor's reference resistance is computed).
 
         Gaps are left out (their elements carry no load), so consecutive rows need not
         touch.
 
         Returns
         -------
-        bounds : (n, 2) or (n, 10) float
+        bounds : (n, 2) or (n, WINDOW_COLUMNS) float
             ``y_top, y_bottom`` of each layer of a medium (m); the last bottom is
             ``-inf`` for a semi-infinite target, the rear face otherwise. With a
             near-surface option on, seven more: crater depth ``k_c d`` (m), free-surface
@@ -666,9 +684,12 @@ class Target:
             face if it is free (else 0), the projectile mass (kg; 0 without a crater),
             the plastic-zone ratio ``c/a`` at the top face if it is free (else 0) and at
             the bottom face if it is free (else 0), the projectile radius (m) and the
-            tip's axial coordinate (m; 0 without a crater); see
+            tip's axial coordinate (m; 0 without a crater), and with a crater the nose's
+            kind, parameter, length (m) and full-nose moments (m^2,
+            :func:`pencore.inputs.geometry.nose_axial_moments`), :data:`WINDOW_COLUMNS` in
+            all; see
             :func:`pencore.kernels.windows.depth_factor` and
-            :func:`pencore.kernels.crater.crater_factor`.
+            :func:`pencore.kernels.crater.element_factor`.
         coef : (n, p) float
             Resistance coefficients, zero-padded.
         fric : (n, k, 2) float
@@ -677,7 +698,8 @@ class Target:
         Raises
         ------
         TargetError
-            A window without ``diameter``, a crater without ``mass`` and ``nose_length``,
+            A window without ``diameter``, a crater without ``mass``, ``nose_length``,
+            ``tip`` and ``nose``,
             or a crater shorter than the nose (Forrestal's crater ends with the nose
             embedded: ``k d >= L_n``).
         """
@@ -698,10 +720,14 @@ class Target:
                 "diameter (pass diameter= to kernel_arrays)"
             )
         if crater:
-            if mass is None or nose_length is None or tip is None or not mass > 0.0:
+            if (
+                mass is None or nose_length is None or tip is None or nose is None
+                or not mass > 0.0
+            ):  # fmt: skip
                 raise TargetError(
                     f"target {self.name!r}: crater_depth needs the projectile mass, nose "
-                    "length and tip (pass mass=, nose_length=, tip= to kernel_arrays)"
+                    "length, tip and nose (pass mass=, nose_length=, tip=, nose= to "
+                    "kernel_arrays)"
                 )
             for lay in solid:
                 kc = lay.medium.crater_depth
@@ -736,6 +762,8 @@ class Target:
                 bounds[j, 7] = ratio if free_bottom and math.isfinite(bottom) else 0.0
                 bounds[j, 8] = 0.5 * diameter
                 bounds[j, 9] = tip if crater else 0.0
+                if crater:
+                    bounds[j, 10:] = _nose_columns(nose, 0.5 * diameter, nose_length)
             c = lay.medium.coefficients
             coef[j, : len(c)] = c
             sp, mu = lay.medium.friction_speeds, lay.medium.friction_mu

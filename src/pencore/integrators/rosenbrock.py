@@ -60,6 +60,7 @@ from pencore.integrators.driver import (
     CHUNK_STEPS,
     RunGuard,
     RunResult,
+    leaving,
     path_of,
     reserve_path,
     stalled,
@@ -68,7 +69,6 @@ from pencore.integrators.driver import (
 from pencore.integrators.problem import Problem
 from pencore.kernels.cache import use_kernel_cache
 from pencore.kernels.contact_points import MAX_SAMPLES_PER_STEP, push_path
-from pencore.kernels.crater import has_crater
 from pencore.kernels.forces import rhs_model
 from pencore.kernels.jacobian import analytic_jacobian_applies, velocity_jacobian
 from pencore.kernels.state import (
@@ -88,6 +88,7 @@ from pencore.kernels.state import (
     SI_N_RHS,
     SI_REV,
     STEP_UNDERFLOW,
+    body_extent,
     layer_step_bound,
     lu_factor,
     lu_solve,
@@ -422,7 +423,10 @@ def integrate(
     ``chatter``: the steps are accepted, but so small that the run would only end at
     ``max_steps`` (the discontinuous law, ``eps = 0``, does this on an oblique shank:
     steps of ~1e-8 s). A run slowing to a stop changes its speed by far more than 1 %
-    over 500 steps, so it is not mistaken for one.
+    over 500 steps, so it is not mistaken for one; nor is a body backing out of the
+    target at a pace that takes it out within the step budget
+    (:func:`~pencore.integrators.driver.leaving`: a slow rebound, whose steps the
+    creeping lateral contact of its shank holds to ~1e-7 s).
 
     ``problem`` carries the arrays and the numerics
     (:class:`~pencore.integrators.problem.Problem`); ``velocity``
@@ -474,8 +478,7 @@ def _integrate(
     entered = clear <= 0.0
     sf = np.array([0.0, h_init, 0.0 if entered else math.nan, clear, 0.0])
     si = np.array([int(entered), 0, 1, 0, 0], dtype=np.int64)
-    crater = has_crater(bounds)
-    analytic = num.jacobian == "analytic" and analytic_jacobian_applies(eps, n_gauss, crater)
+    analytic = num.jacobian == "analytic" and analytic_jacobian_applies(eps, n_gauss)
     ts_parts = [np.zeros(1)]
     ys_parts = [y[None, :].copy()]
     fs_parts = [f0[None, :].copy()]
@@ -502,8 +505,10 @@ def _integrate(
             outcome = "step_limit"
             break
         if ts.size == CHUNK_STEPS and stalled(ys, stall_distance):
-            outcome = "chatter"
-            break
+            depth = bounds[0, 0] - body_extent(ys[-1], rings)[0]
+            if not leaving(ys, depth, max_steps - n_saved):
+                outcome = "chatter"
+                break
         if guard.out_of_time:
             outcome = "wall_limit"
             break

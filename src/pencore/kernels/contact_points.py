@@ -32,6 +32,7 @@ import numba as nb
 import numpy as np
 
 from pencore.kernels.cache import use_kernel_cache
+from pencore.kernels.crater import element_factor, fill_reference, has_crater
 from pencore.kernels.dynamics import body_velocity, quat_to_matrix
 from pencore.kernels.friction import friction_coefficient
 from pencore.kernels.windows import depth_factor
@@ -209,6 +210,14 @@ def point_loads(y, pts, bounds, coef, fric, eps, with_friction, cavity, cav, pat
         dx, dy, dz = tip[0] - path[n - 1, 0], tip[1] - path[n - 1, 1], tip[2] - path[n - 1, 2]
         s_tip = path[n - 1, 3] + math.sqrt(dx * dx + dy * dy + dz * dz)
     reg = eps if eps > 0.0 else 1e-9
+    crater = has_crater(bounds)
+    ref = np.empty((2 + nlay if crater else 0, pts.shape[0]))
+    if crater:  # the points' normal-entry reference (pencore.kernels.crater.fill_reference)
+        npt = pts.shape[0]
+        fill_reference(
+            ref, 0, pts[:, 0], np.zeros(npt), pts[:, 3], np.zeros(npt),
+            pts[:, 6] / (2.0 * math.pi), bounds, coef, v1, eps,
+        )  # fmt: skip
     j_prev = np.int64(-1)
     x1_prev = np.nan
     for i in range(pts.shape[0]):
@@ -237,6 +246,8 @@ def point_loads(y, pts, bounds, coef, fric, eps, with_friction, cavity, cav, pat
         area = pts[i, 6] * hw
         if bounds.shape[1] >= 5:
             area *= depth_factor(height, bounds, lay)
+            if bounds[lay, 2] > 0.0:  # the crater factor at the point's own depth
+                area *= element_factor(height, bounds[lay, 9] - px, v1, bounds, coef, lay, ref, 0)
         if cavity and pts[i, 7] > 0.0:
             qx = y[0] + rot[0, 0] * px + rot[0, 1] * py + rot[0, 2] * pz
             qy = y[1] + rot[1, 0] * px + rot[1, 1] * py + rot[1, 2] * pz

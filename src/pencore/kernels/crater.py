@@ -20,30 +20,53 @@ a force of the present depth and speed only, equal to ``c z`` on every normal tr
 (``g(0) = 0``, ``g(1) = 1``). The depth is then Forrestal's closed form exactly
 (:func:`pencore.closedform.forrestal_crater_depth`).
 
-Element by element: every element's stress is the DAFL's (its own normal velocity and
-normal) times one factor of the layer, ``lam(z, V_a) = g(s) F_full(V_a) / R_ref(z, V_a)``,
-with ``z`` the tip's depth below the layer's top face (``s = z / (k d)``), ``V_a`` the
-velocity component along the body axis, and ``R_ref`` the DAFL axial resistance of the
-same body in *normal* entry at tip depth ``z`` and speed ``V_a`` into a half-space of the
-layer's medium (evaluated by the kernel itself on that reference state,
-:func:`reference_state`, :func:`reference_bounds`). So:
+Element by element: every element's DAFL stress (its own normal velocity and normal) is
+multiplied by the factor of the normal-entry state that puts it at its own depth::
 
-* normal entry: the reference state is the state, and the axial force is
-  ``g(s) F_full(V) = c z``, Forrestal's law, whatever part of the nose is embedded;
-* oblique or yawed entry: each element carries the factor it would carry in normal
-  entry at the same tip depth and axial speed; the distribution of the load over the
-  elements (its direction, its centre of pressure) is the DAFL's; the axial load is not
-  ``c z`` (a tilted nose has a different part of itself below a given tip depth);
-* a plate thinner than the embedded part of the nose: each element carries the
-  half-space's factor, on the load the plate really takes, so a thin plate's crater
-  load vanishes with its thickness (the plate is a slice of the half-space's crater);
-* ``s >= 1``: ``lam = 1`` (the DAFL unchanged); tip above the face: the deepest point's
-  depth stands in for ``z`` (a body touching side-first); ``z <= 0``: ``lam = 0``.
+    lam(z_e, V_a) = g(z_e / (k d)) F_full(V_a) / R_q(z_e, V_a),   z_e = h + s_t,
 
-``F_full`` and ``N*`` are the full-nose moments ``B_k = sum 2 pi w na^(k+1)`` over the
-rings of the kernel (``na > 0``), so that at full embedment ``lam`` tends to ``g``. ``beta``
-uses the ``a2`` term, so the reduction to ``c z`` is exact for Forrestal's law
-``a0 + a2 Vn^2``; other terms of the law are scaled by the same ``g``.
+with ``h`` the element's depth below the layer's top face (the ring centre's, for a ring),
+``s_t`` its axial distance from the nose tip, ``V_a >= 0`` the body's axial speed,
+``F_full = sum_k a_k V^k J_k(L_n)`` the frictionless DAFL axial force on the whole nose in
+normal entry, ``J_k(z) = int 2 pi r n_a^k dr`` over the nose's exact profile from the tip
+to axial distance ``z`` (the layer's columns; :func:`nose_moment`), and ``R_q(z, V)`` the
+model's own quadrature of the normal-entry resistance of the nose tip-first to depth ``z``
+(:func:`fill_reference`, :func:`reference_resistance`: each ring's load times the share
+of its band below the face). Written against the exact profile's resistance ``R(z)``
+(:func:`nose_resistance`), ``lam = Lambda(z_e) R(z_e) / R_q(z_e)``: ``Lambda = g F_full /
+R``, the factor Forrestal's law puts on the DAFL, which no ring mesh enters, times the
+rings' correction of their own quadrature at that depth, which tends to 1 as the rings
+are refined. The correction keeps the load finite at a sharp tip: the rings load their
+first band a little before the tip reaches the face, and ``Lambda`` grows like ``1 /
+z``, so the product of the two alone would not be. So:
+
+* normal entry: every element has ``z_e = z``, the tip's depth, and one factor
+  ``g F_full / R_q(z)``: the axial load is ``g F_full = c z`` on any ring mesh, to
+  round-off, with the exact profile's ``N*``;
+* oblique or yawed entry (Forrestal's form says nothing there): each element carries the
+  factor it would carry in normal entry at its own depth, so an element well below the
+  face carries the DAFL's stress times about ``g <= 1`` wherever the tip is; the factor
+  exceeds 1 only on the elements near a sharp tip that are themselves near the face
+  (where Forrestal's linear force exceeds the DAFL's quadratic resistance of a pointed
+  nose). The load's direction and centre of pressure follow the elements; it is not
+  ``c z``;
+* a plate: ``R_q`` is the medium's half-space resistance (Forrestal's ``c z`` is a
+  half-space's force), so a plate thinner than the embedded part of the nose carries
+  the half-space's factor on the load it really takes (a slice of the half-space's crater);
+* ``z_e >= k d``: ``lam = 1`` (the DAFL unchanged; ``k d >= L_n``, and the step there is
+  the rings' ``F_full`` against the exact one, 2e-4 at 48 nose rings); ``z_e <= 0``:
+  ``lam = 0``.
+
+``beta`` uses the ``a2`` term and ``J_2(L_n) = pi a^2 N*``, so the reduction to ``c z`` is
+exact for Forrestal's law ``a0 + a2 Vn^2``; other terms of the law are scaled by the same
+``g``. Friction, where a layer has it, is scaled by the same factor as the normal stress.
+
+Layer columns (:meth:`pencore.inputs.target.Target.kernel_arrays`): 2 ``k d`` (m), 5 the
+projectile mass (kg), 8 the body radius ``a`` (m), 9 the tip's axial coordinate (m),
+:data:`COL_NOSE` the nose kind (:data:`NOSE_OGIVE`, :data:`NOSE_CONE`, :data:`NOSE_FLAT`),
+then its parameter (the ogive radius ``2 CRH a``, m; the cone's ``tan`` of its
+half-angle), its length ``L_n`` (m), and the full-nose moments ``J_k(L_n)`` (m^2) from
+column :data:`COL_MOMENTS` on.
 """
 
 from __future__ import annotations
@@ -51,24 +74,43 @@ from __future__ import annotations
 import math
 
 import numba as nb
+import numpy as np
 
+from pencore.kernels.bands import band_half_height
 from pencore.kernels.cache import use_kernel_cache
 
 __all__ = [
+    "COL_NOSE",
+    "COL_MOMENTS",
+    "NOSE_OGIVE",
+    "NOSE_CONE",
+    "NOSE_FLAT",
     "has_crater",
     "crater_shape",
-    "crater_depth_and_speed",
-    "reference_state",
-    "reference_bounds",
-    "crater_factor",
+    "nose_moment",
+    "nose_resistance",
+    "fill_reference",
+    "reference_resistance",
+    "element_factor",
 ]
+
+#: Column of the layer array holding the nose kind; its parameter and length follow.
+COL_NOSE = 10
+#: First column of the full-nose moments ``J_k(L_n)``, k = 0, 1, ...
+COL_MOMENTS = 13
+NOSE_OGIVE, NOSE_CONE, NOSE_FLAT = 1.0, 2.0, 3.0
+
+# Gauss-Legendre nodes for the ogive's partial moments: the integrand is smooth on an
+# interval of at most pi / 2 in the meridian angle, so 12 points are exact to round-off
+# (tests/kernels/test_crater.py checks them against the 96-point full-nose moments)
+_GX, _GW = np.polynomial.legendre.leggauss(12)
 
 
 @nb.njit(cache=True)
 def has_crater(bounds):
     """True when a layer of ``bounds`` (:meth:`pencore.inputs.target.Target.kernel_arrays`)
-    has a crater region (column 2 > 0; the crater needs all 10 near-surface columns)."""
-    if bounds.shape[1] < 10:
+    has a crater region (column 2 > 0; the crater needs the nose columns)."""
+    if bounds.shape[1] <= COL_MOMENTS:
         return False
     for lay in range(bounds.shape[0]):
         if bounds[lay, 2] > 0.0:
@@ -88,90 +130,150 @@ def crater_shape(s, beta):
 
 
 @nb.njit(cache=True)
-def crater_depth_and_speed(y, rot, bounds, lay, clearance):
-    """Tip depth ``z`` (m) below the top face of layer ``lay`` (the deepest point's depth
-    when the tip is above the face) and the axial speed ``V_a >= 0`` (m/s)."""
-    tip = y[1] + rot[1, 0] * bounds[lay, 9]
-    z = bounds[lay, 0] - tip
+def nose_moment(z, k, bounds, lay):
+    """``J_k(z) = int 2 pi r n_a^k dr`` (m^2) over the nose of layer ``lay``'s columns from
+    the tip to axial distance ``z`` (m, clipped to ``[0, L_n]``): the frictionless DAFL
+    axial resistance in normal entry is ``sum_k a_k V^k J_k``. Exact profile: tangent ogive
+    (meridian angle ``b``, ``r = R_o cos b - (R_o - a)``, ``n_a = sin b``; Gauss-Legendre in
+    ``b``), cone ``pi (z tan t)^2 sin^k t``, flat face ``pi a^2``."""
+    ln = bounds[lay, COL_NOSE + 2]
+    if z >= ln:
+        return bounds[lay, COL_MOMENTS + k]
     if z <= 0.0:
-        z = bounds[lay, 0] - clearance
-    va = rot[0, 0] * y[7] + rot[1, 0] * y[8] + rot[2, 0] * y[9]
-    return z, max(va, 0.0)
+        return 0.0
+    kind = bounds[lay, COL_NOSE]
+    a = bounds[lay, 8]
+    if kind == NOSE_FLAT:
+        return math.pi * a * a
+    if kind == NOSE_CONE:
+        tn = bounds[lay, COL_NOSE + 1]
+        r = z * tn
+        return math.pi * r * r * (tn / math.sqrt(1.0 + tn * tn)) ** k
+    ro = bounds[lay, COL_NOSE + 1]
+    b_tip = math.asin(min(ln / ro, 1.0))
+    b_z = math.asin(min((ln - z) / ro, 1.0))
+    half = 0.5 * (b_tip - b_z)
+    mid = 0.5 * (b_tip + b_z)
+    acc = 0.0
+    for j in range(_GX.shape[0]):
+        b = mid + half * _GX[j]
+        sb = math.sin(b)
+        acc += _GW[j] * (ro * math.cos(b) - (ro - a)) * sb ** (k + 1)
+    return 2.0 * math.pi * ro * half * acc
 
 
 @nb.njit(cache=True)
-def reference_state(y, bounds, lay, z, va):
-    """The normal-entry state with the tip ``z`` (m) below the top face of layer ``lay``,
-    moving along its axis (``-y``) at ``va`` (m/s), no rotation; other entries of ``y``
-    (the work) kept."""
-    yr = y.copy()
-    yr[0] = 0.0
-    yr[1] = bounds[lay, 0] - z + bounds[lay, 9]
-    yr[2] = 0.0
-    # body axis along -y: a quarter turn about z (exact zeros, as the initial state)
-    h = math.sqrt(0.5)
-    yr[3] = h
-    yr[4] = 0.0
-    yr[5] = 0.0
-    yr[6] = -h
-    yr[7] = 0.0
-    yr[8] = -va
-    yr[9] = 0.0
-    yr[10] = 0.0
-    yr[11] = 0.0
-    yr[12] = 0.0
-    return yr
+def nose_resistance(z, va, bounds, coef, lay):
+    """``R(z, V) = sum_k a_k V^k J_k(z)`` (N): the frictionless DAFL axial resistance of the
+    nose of layer ``lay``'s columns tip-first to depth ``z`` (m) at axial speed ``va`` (m/s)
+    in normal entry, on the exact profile (:func:`nose_moment`), in one pass."""
+    ncoef = coef.shape[1]
+    ln = bounds[lay, COL_NOSE + 2]
+    if z >= ln or bounds[lay, COL_NOSE] != NOSE_OGIVE:
+        out = 0.0
+        vk = 1.0
+        for k in range(ncoef):
+            out += coef[lay, k] * vk * nose_moment(z, k, bounds, lay)
+            vk *= va
+        return out
+    if z <= 0.0:
+        return 0.0
+    a = bounds[lay, 8]
+    ro = bounds[lay, COL_NOSE + 1]
+    b_tip = math.asin(min(ln / ro, 1.0))
+    b_z = math.asin(min((ln - z) / ro, 1.0))
+    half = 0.5 * (b_tip - b_z)
+    mid = 0.5 * (b_tip + b_z)
+    acc = 0.0
+    for j in range(_GX.shape[0]):
+        b = mid + half * _GX[j]
+        sb = math.sin(b)
+        vn = va * sb
+        sigma = 0.0
+        for k in range(ncoef - 1, -1, -1):
+            sigma = sigma * vn + coef[lay, k]
+        acc += _GW[j] * (ro * math.cos(b) - (ro - a)) * sb * sigma
+    return 2.0 * math.pi * ro * half * acc
 
 
 @nb.njit(cache=True)
-def reference_bounds(bounds):
-    """The one-layer ``bounds`` (1, 10) as a half-space of the same medium: no rear face
-    (bottom ``-inf``, no free-surface zone or plastic-zone ratio at it). Forrestal's
-    ``c z`` is a half-space's force, so the reference resistance of a plate is that of
-    its medium's half-space: a plate thinner than the nose's embedded part then carries
-    the factor the half-space would, on the load it really takes."""
-    ref = bounds.copy()
-    ref[0, 1] = -math.inf
-    ref[0, 4] = 0.0
-    ref[0, 7] = 0.0
-    return ref
+def fill_reference(tab, row0, x1, r, na, nr, w, bounds, coef, va, eps):
+    """Rows ``row0`` on of ``tab`` (``2 + n_layers`` by ``n`` elements): the model's own
+    quadrature of the normal-entry resistance, element by element. Row ``row0``: the
+    element's axial distance from the tip ``s_j = tip - x1`` (m); ``row0 + 1``: the
+    half-height of its band's immersion ramp in normal entry (m;
+    :func:`pencore.kernels.bands.band_half_height`, 0 for a point); ``row0 + 2 + lay``: its
+    axial load in normal entry at axial speed ``va`` (m/s) wholly in layer ``lay``,
+    ``2 pi w n_a sigma(V n_a) H_eps(V n_a)`` (N; for a point of area ``w``, ``w n_a sigma
+    H_eps``: pass ``r = 0`` and ``w`` already times ``1 / (2 pi)``). ``x1, r, na, nr, w``
+    are the element arrays (m, m, -, -, m^2)."""
+    tip = bounds[0, 9]
+    v = max(va, 0.0)
+    ncoef = coef.shape[1]
+    for j in range(x1.shape[0]):
+        tab[row0, j] = tip - x1[j]
+        tab[row0 + 1, j] = band_half_height(-1.0, 0.0, r[j], na[j], nr[j], w[j])
+        vn = v * na[j]
+        if eps > 0.0:
+            h = min(max((vn + eps) / (2.0 * eps), 0.0), 1.0)
+        else:
+            h = 1.0 if vn >= 0.0 else 0.0
+        for lay in range(bounds.shape[0]):
+            sigma = 0.0
+            for k in range(ncoef - 1, -1, -1):
+                sigma = sigma * vn + coef[lay, k]
+            tab[row0 + 2 + lay, j] = 2.0 * math.pi * w[j] * na[j] * sigma * h
 
 
 @nb.njit(cache=True)
-def crater_factor(y, rings, bounds, coef, lay, z, va, ref_axial_force):
-    """Factor ``lam`` on every load of layer ``lay`` (module docstring).
+def reference_resistance(z, tab, row0, lay):
+    """The model's quadrature of the normal-entry axial resistance (N) of layer ``lay``'s
+    half-space with the tip ``z`` (m) deep, from the table of :func:`fill_reference`: each
+    element's load times the share of its band below the face (the ramp of
+    :func:`pencore.kernels.dynamics.contact_loads` in normal entry; a point: 0 or 1)."""
+    out = 0.0
+    for j in range(tab.shape[1]):
+        load = tab[row0 + 2 + lay, j]
+        if load == 0.0:
+            continue
+        d = z - tab[row0, j]
+        hb = tab[row0 + 1, j]
+        if hb > 0.0:
+            share = min(max((d + hb) / (2.0 * hb), 0.0), 1.0)
+        else:
+            share = 1.0 if d >= 0.0 else 0.0
+        out += share * load
+    return out
 
-    ``z`` (m) and ``va`` (m/s) from :func:`crater_depth_and_speed`; ``ref_axial_force``
-    (N) is the body-frame axial load of the layer on :func:`reference_state` without the
-    crater (negative when it resists). 1 when the layer has no crater or ``z >= k d``.
-    """
+
+@nb.njit(cache=True)
+def element_factor(height, s_tip, va, bounds, coef, lay, tab, row0):
+    """Crater factor (module docstring) of an element at ``height`` (m) in layer ``lay``,
+    ``s_tip`` (m) from the nose tip along the axis, the body moving at ``va`` (m/s) along
+    its axis (negative taken as 0): ``g(z_e / k d) F_full(V_a) / R_q(z_e)`` with ``R_q`` the
+    model's quadrature of the normal-entry resistance (:func:`reference_resistance` on the
+    table ``tab`` from row ``row0``). 1 when the layer has no crater or ``z_e = top -
+    height + s_tip >= k d``, 0 when ``z_e <= 0``."""
     kd = bounds[lay, 2]
     if kd <= 0.0:
         return 1.0
-    s = z / kd
-    if s >= 1.0:
+    z = bounds[lay, 0] - height + s_tip
+    if z >= kd:
         return 1.0
-    if s <= 0.0:
+    if z <= 0.0:
         return 0.0
-    mass = bounds[lay, 5]
+    v = max(va, 0.0)
     ncoef = coef.shape[1]
     full = 0.0
-    b2 = 0.0
-    for i in range(rings.shape[0]):
-        na = rings[i, 2]
-        if na <= 0.0:
-            continue
-        term = 2.0 * math.pi * rings[i, 4] * na
-        vk = 1.0
-        for k in range(ncoef):
-            full += coef[lay, k] * vk * term
-            if k == 2:
-                b2 += term
-            term *= na
-            vk *= va
-    beta = kd * coef[lay, 2] * b2 / mass if ncoef > 2 else 0.0
-    g = crater_shape(s, beta)
-    resist = -ref_axial_force
+    vk = 1.0
+    for k in range(ncoef):
+        full += coef[lay, k] * vk * bounds[lay, COL_MOMENTS + k]
+        vk *= v
+    beta = 0.0
+    if ncoef > 2:
+        beta = kd * coef[lay, 2] * bounds[lay, COL_MOMENTS + 2] / bounds[lay, 5]
+    g = crater_shape(z / kd, beta)
+    resist = reference_resistance(z, tab, row0, lay)
     if not resist > 0.0:
         return g
     return g * full / resist

@@ -84,6 +84,7 @@ from pencore.kernels.arcs import (
 )
 from pencore.kernels.bands import band_eps, band_half_height
 from pencore.kernels.cache import use_kernel_cache
+from pencore.kernels.crater import element_factor, fill_reference, has_crater
 from pencore.kernels.friction import _friction_ring, _leggauss
 from pencore.kernels.wholering import whole_ring_integrals
 from pencore.kernels.windows import depth_factor
@@ -227,7 +228,15 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
     # (friction is excluded through `need` below: its quadrature needs every ring's angles)
     simple = nlay == 1 and bounds.shape[1] < 5
     n = rings.shape[0]
-    geo = np.empty((14, n))  # per ring: y0 yk yc ys hb q av bc bs kv cph sph epsr need
+    crater = has_crater(bounds)
+    # per ring: y0 yk yc ys hb q av bc bs kv cph sph epsr need (and with a crater region,
+    # the rings' normal-entry reference of pencore.kernels.crater.fill_reference)
+    geo = np.empty((14 + (2 + nlay if crater else 0), n))
+    if crater:
+        fill_reference(
+            geo, 14, rings[:, 0], rings[:, 1], rings[:, 2], rings[:, 3], rings[:, 4], bounds,
+            coef, v1, eps,
+        )  # fmt: skip
     kind = np.empty(n, dtype=np.int64)  # -1 out of contact, -2 general, else fast slot
     tab = np.empty((5, n))  # the fast rings' av, kv, cos/sin(phi0), epsr
     nf = np.int64(0)
@@ -301,10 +310,12 @@ def contact_loads(y, rings, bounds, coef, fric, eps, n_gauss):
         for lay in range(nlay):
             if high < bounds[lay, 1]:
                 continue  # wholly below this layer
-            # depth windows (crater, free surface) at the ring centre; 1 when off
+            # depth windows (free surface) and the crater factor at the ring centre; 1 when off
             wl = w
             if bounds.shape[1] >= 5:
                 wl = w * depth_factor(y0, bounds, lay)
+                if bounds[lay, 2] > 0.0:
+                    wl *= element_factor(y0, bounds[lay, 9] - x1, v1, bounds, coef, lay, geo, 14)
                 if wl == 0.0:
                     continue
             # the layer's share of the band: the cores and ramps of

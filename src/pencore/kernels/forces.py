@@ -27,14 +27,7 @@ from pencore.inputs.geometry import Projectile, Rings
 from pencore.inputs.models import SHANK_CAVITY, SURFACE_PANELS, Emulation, ShankModel
 from pencore.kernels.cache import use_kernel_cache
 from pencore.kernels.contact_points import point_loads, push_path, tip_position
-from pencore.kernels.crater import (
-    crater_depth_and_speed,
-    crater_factor,
-    has_crater,
-    reference_bounds,
-    reference_state,
-)
-from pencore.kernels.dynamics import contact_loads, equations_of_motion, quat_to_matrix
+from pencore.kernels.dynamics import contact_loads, equations_of_motion
 from pencore.kernels.panels import N_COLUMNS, panel_points, ring_points
 
 __all__ = ["rhs_model", "model_loads", "loads_along", "kernel_model", "default_model"]
@@ -44,42 +37,9 @@ __all__ = ["rhs_model", "model_loads", "loads_along", "kernel_model", "default_m
 def model_loads(y, rings, bounds, coef, fric, eps, n_gauss, model):
     """Contact force and moment (body frame) and clearance under ``model``.
 
-    With a crater in ``bounds`` (:func:`pencore.kernels.crater.has_crater`), each layer's
-    loads are computed alone and multiplied by its crater factor
-    (:func:`pencore.kernels.crater.crater_factor`); otherwise this is the plain sum.
-    """
-    if not has_crater(bounds):
-        return _plain_loads(y, rings, bounds, coef, fric, eps, n_gauss, model)
-    rot = quat_to_matrix(y[3:7])
-    fb = np.zeros(3)
-    mb = np.zeros(3)
-    clear = np.inf
-    for lay in range(bounds.shape[0]):
-        b = bounds[lay : lay + 1]
-        c = coef[lay : lay + 1]
-        fr = fric[lay : lay + 1]
-        f1, m1, c1 = _plain_loads(y, rings, b, c, fr, eps, n_gauss, model)
-        lam = 1.0
-        if b[0, 2] > 0.0:
-            z, va = crater_depth_and_speed(y, rot, b, 0, c1)
-            if z < b[0, 2]:
-                yr = reference_state(y, b, 0, z, va)
-                if not (b[0, 1] > -np.inf) and np.array_equal(yr[1:13], y[1:13]):
-                    ref = f1[0]  # the state is its own normal-entry reference
-                else:
-                    bh = reference_bounds(b)  # the medium's half-space
-                    ref = _plain_loads(yr, rings, bh, c, fr, eps, n_gauss, model)[0][0]
-                lam = crater_factor(y, rings, b, c, 0, z, va, ref)
-        for k in range(3):
-            fb[k] += lam * f1[k]
-            mb[k] += lam * m1[k]
-        clear = min(clear, c1)
-    return fb, mb, clear
-
-
-@nb.njit(cache=True)
-def _plain_loads(y, rings, bounds, coef, fric, eps, n_gauss, model):
-    """:func:`model_loads` without the crater factor."""
+    A crater region (:mod:`pencore.kernels.crater`) is a factor on each element's stress,
+    applied where the elements are summed (:func:`pencore.kernels.dynamics.contact_loads`,
+    :func:`pencore.kernels.contact_points.point_loads`)."""
     ipar, cav, pts, path, npath = model
     cavity = ipar[0] == SHANK_CAVITY
     if ipar[1] == SURFACE_PANELS:

@@ -2,9 +2,9 @@
 
 The forms and their sources are in :mod:`pencore.inputs.target`; the lengths come in the extra
 columns of the layer array of :meth:`pencore.inputs.target.Target.kernel_arrays`, which exist
-only when a window is on (so the paper's runs never evaluate this). The crater region is not a
-window on each element's depth but a factor on a layer's loads
-(:mod:`pencore.kernels.crater`).
+only when a window is on (so the paper's runs never evaluate this). The crater region is a
+factor on each element's stress too, but of the element's depth and its distance from the
+nose tip together (:mod:`pencore.kernels.crater`).
 """
 
 from __future__ import annotations

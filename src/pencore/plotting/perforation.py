@@ -4,6 +4,8 @@ measured against predicted for the validation against published measurements."""
 
 from __future__ import annotations
 
+import textwrap
+
 import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
@@ -186,7 +188,9 @@ def plot_measurements(ds: xr.Dataset) -> Figure:
 
 
 @styled
-def plot_ballistic_map(bl_map: xr.Dataset, cmp: xr.Dataset | None = None) -> Figure:
+def plot_ballistic_map(
+    bl_map: xr.Dataset, cmp: xr.Dataset | None = None, mesh: xr.Dataset | None = None
+) -> Figure:
     """Ballistic-limit map and the obliquity ratio, with the line-of-sight rule.
 
     Left: ``v_bl`` against plate thickness (calibers) for each obliquity, the paper's
@@ -196,6 +200,9 @@ def plot_ballistic_map(bl_map: xr.Dataset, cmp: xr.Dataset | None = None) -> Fig
     the measured plates' median, one line per near-surface option, ``sec(theta)``
     dashed, and the measured ratios (``cmp``,
     :func:`~pencore.studies.perforation.obliquity.compare_obliquity`) as points.
+    With the ring-mesh check (``mesh``, :func:`~pencore.studies.perforation.mesh_check.mesh_check`)
+    a cell that is not converged is ringed, and every cell drawn without a number (a
+    failed search) or ringed is listed under the figure with its reason.
     """
     fig = new_figure(11.0, 4.6)
     ax, bx = fig.subplots(1, 2)
@@ -203,28 +210,59 @@ def plot_ballistic_map(bl_map: xr.Dataset, cmp: xr.Dataset | None = None) -> Fig
     first = "none" if "none" in names else names[0]
     base = bl_map.sel(option=first)
     tod = base["t_over_d"].values
+    notes: list[str] = []
+
+    def flag(axis, x, y, option, t, o):
+        """Ring a cell the mesh check did not pass and note why (once per cell)."""
+        if mesh is None:
+            return
+        reason = str(mesh["reason"].sel(option=option, t_over_d=t, obliquity=o).values)
+        if reason:
+            if np.isfinite(y):
+                axis.plot([x], [y], "o", ms=11, mfc="none", color="0.2", lw=0.8)
+            note = f"{option}, t/d {t:g}, {o:g}°: {reason}"
+            if note not in notes:
+                notes.append(note)
+
     for k, o in enumerate(base["obliquity"].values):
         c = _c(k)
         ax.plot(tod, base["v_bl"].sel(obliquity=o), "-", color=c,
                 marker=_MARKERS[k % len(_MARKERS)], label=f"{o:g}°")  # fmt: skip
         if o > 0:
             ax.plot(tod, base["v_bl_los"].sel(obliquity=o), "--", color=c, lw=1)
+        for t in tod:
+            flag(ax, t, float(base["v_bl"].sel(obliquity=o, t_over_d=t)), first, t, o)
     ax.plot([], [], "k--", lw=1, label=r"line of sight $v_{bl}(0)\,\sec\theta$")
+    if mesh is not None and (mesh["reason"] != "").any():
+        factor = float(mesh.attrs.get("mesh_factor", 2))
+        ax.plot([], [], "o", ms=11, mfc="none", color="0.2", lw=0.8,
+                label=f"not converged on {factor:g}x the rings")  # fmt: skip
     ax.set_xlabel("Plate thickness / projectile diameter")
     ax.set_ylabel(r"Ballistic limit $v_{bl}$ (m/s)")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8, frameon=False, title="obliquity", title_fontsize=8)
+    model = "the paper's model, no near-surface option" if first == "none" else f"option {first}"
     ax.set_title(
         f"{_pname(bl_map.attrs.get('projectile', ''))} into {bl_map.attrs.get('medium', '')}"
-        f" ({first})",
+        f" ({model})",
         fontsize=9,
     )
     x0 = float(np.median(cmp["t_over_d"].values)) if cmp is not None else float(np.median(tod))
     t_pick = float(tod[np.argmin(np.abs(tod - x0))])
     obl = bl_map["obliquity"].values
     for k, o in enumerate(bl_map["option"].values):
-        bx.plot(obl, bl_map["ratio"].sel(option=o, t_over_d=t_pick), "-", color=_c(k),
+        ratio = bl_map["ratio"].sel(option=o, t_over_d=t_pick)
+        bx.plot(obl, ratio, "-", color=_c(k),
                 marker=_MARKERS[k % len(_MARKERS)], label=f"pencore, {o}")  # fmt: skip
+        for j, th in enumerate(obl):
+            r = float(ratio.values[j])
+            flag(bx, th, r, str(o), t_pick, th)
+            if not np.isfinite(r):
+                sub = bl_map.sel(option=o, t_over_d=t_pick, obliquity=th)
+                status = str(sub["status"].values) if "status" in sub else "no limit"
+                note = f"{o}, t/d {t_pick:g}, {th:g}°: no point drawn, the search ended {status}"
+                if note not in notes:
+                    notes.append(note)
     th = np.linspace(0.0, float(obl.max()), 61)
     bx.plot(th, 1.0 / np.cos(np.radians(th)), "k--", lw=1, label=r"line of sight $\sec\theta$")
     if cmp is not None:
@@ -238,6 +276,24 @@ def plot_ballistic_map(bl_map: xr.Dataset, cmp: xr.Dataset | None = None) -> Fig
     bx.grid(alpha=0.3)
     bx.legend(fontsize=7, frameon=False)
     bx.set_title(f"obliquity ratio, pencore at t/d = {t_pick:g}", fontsize=9)
+    if mesh is not None:  # every cell the check did not pass, drawn or not
+        reasons = mesh["reason"].to_series()
+        for (option, t, o), reason in reasons[reasons != ""].items():
+            note = f"{option}, t/d {t:g}, {o:g}°: {reason}"
+            if note not in notes:
+                notes.append(note)
+    if mesh is not None and not notes:
+        notes.append(
+            f"ring-mesh check: all {mesh.attrs.get('n_cells', '')} cells of the map agree "
+            f"within the search tolerance ({mesh.attrs.get('search_tol_m_s', np.nan):g} m/s) "
+            f"on {mesh.attrs.get('mesh_factor', 2):g}x the rings"
+        )
+    if notes:
+        frac = min(0.5, 0.03 + 0.028 * len(notes))
+        fig.set_figheight(fig.get_figheight() / (1.0 - frac))
+        fig.get_layout_engine().set(rect=(0.0, frac, 1.0, 1.0 - frac))
+        fig.text(0.01, 0.005, "\n".join(textwrap.shorten(n, 190) for n in notes),
+                 fontsize=6.5, va="bottom", ha="left")  # fmt: skip
     return fig
 
 

@@ -137,7 +137,7 @@ def prepare(
     mp = p.mass_properties()
     ring_set = p.rings(num.n_nose, num.n_shank, num.n_face)
     rings = ring_set.as_array()
-    bounds, coef, fric = t.kernel_arrays(p.diameter, mp.mass, p.nose_length, mp.lc)
+    bounds, coef, fric = t.kernel_arrays(p.diameter, mp.mass, p.nose_length, mp.lc, p.nose)
     inertia = np.array([mp.i_axial, mp.i_transverse, mp.i_transverse])
     pr = Problem(p, t, num, rings, bounds, coef, fric, mp.mass, inertia, mp.lc, sm, em)
     if not (sm.is_default and em.surface == "rings"):
