@@ -8,7 +8,7 @@ from pencore.studies.perforation.mesh_check import mesh_check
 from pencore.studies.perforation.obliquity import combine_maps
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
-log = start_log(smk.log[0], "near_surface_mesh")
+log = start_log(smk, "near_surface_mesh")
 
 study = dict(smk.params.study)
 parts = {p.rsplit("/", 1)[-1].removesuffix(".nc"): p for p in smk.input.parts}

@@ -9,7 +9,7 @@ from pencore.studies.perforation.mesh_check import finer_rings
 from pencore.studies.perforation.obliquity import ballistic_map
 
 smk = snakemake  # noqa: F821 -- injected by Snakemake's `script:` directive
-log = start_log(smk.log[0], f"near_surface_mesh_part {smk.wildcards.option}")
+log = start_log(smk, f"near_surface_mesh_part {smk.wildcards.option}")
 
 study = dict(smk.params.study)
 numerics = finer_rings(dict(smk.params.numerics), float(study["mesh_factor"]))
