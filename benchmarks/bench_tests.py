@@ -36,11 +36,16 @@ COLUMNS = [
 ]  # fmt: skip
 
 
+def summary_line(text: str) -> str:
+    """pytest's last summary line (``2258 passed, 10 errors in ...``), '' when none."""
+    lines = [ln for ln in text.splitlines() if re.search(r"\d+ (passed|failed|error)", ln)]
+    return lines[-1].strip("= ") if lines else ""
+
+
 def summary_counts(text: str) -> dict[str, int]:
     """The counts of pytest's last summary line (``2258 passed, 10 errors in ...``)."""
-    lines = [ln for ln in text.splitlines() if re.search(r"\d+ (passed|failed|error)", ln)]
     counts = {"passed": 0, "failed": 0, "errors": 0, "skipped": 0}
-    for n, word in re.findall(r"(\d+) (passed|failed|errors?|skipped)", lines[-1] if lines else ""):
+    for n, word in re.findall(r"(\d+) (passed|failed|errors?|skipped)", summary_line(text)):
         counts["errors" if word.startswith("error") else word] = int(n)
     return counts
 
@@ -86,7 +91,7 @@ def main(argv: list[str] | None = None) -> int:
         if new:
             writer.writeheader()
         writer.writerow(row)
-    print(output.strip().splitlines()[-1] if output.strip() else "(no output)")
+    print(summary_line(output) or output.strip()[-2000:] or "(no output)")
     print(f"bench_tests: {row['wall_s']} s wall, {row['cpu_s']} s CPU, mean load {mean:.1f}")
     return 0
 

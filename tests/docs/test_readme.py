@@ -86,8 +86,11 @@ def test_timing_line_says_how_busy_the_host_was(gen, tmp_path, monkeypatch):
     (tmp_path / "tests.csv").write_text(head + row.format(wall=900, mean=6.3, l1=5.0))
     busy = gen.timing_sentence()
     assert "the tests about 15 min" in busy
-    assert "measured at 1-minute loads of up to 6.3 on 2 cores" in busy
+    assert "the tests' a busy one's (a mean load of 6.3)" in busy
     assert "idle-host" not in busy
+    other = head + row.format(wall=900, mean=6.3, l1=5.0).replace("AMD EPYC", "Other CPU")
+    (tmp_path / "tests.csv").write_text(other)
+    assert "the tests about 15 min on an Other CPU (" in gen.timing_sentence()
 
 
 def test_relative_links_resolve():
