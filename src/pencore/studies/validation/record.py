@@ -447,16 +447,20 @@ def record_statistics(ds: xr.Dataset) -> xr.Dataset:
             unit, name = long[k]
             out[f"{prefix}_{k}"] = (dims, values[k], {"units": unit, "long_name": name})
 
+    def by_group(groups: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+        """The statistics of every model over each group of rows (a mask)."""
+        per = {k: np.full((len(models), len(groups)), np.nan) for k in stats}
+        for i in range(len(models)):
+            for j, m in enumerate(groups.values()):
+                b = binned(e_all[i][m], np.zeros(int(m.sum())), [-1.0, 1.0])
+                for k in stats:
+                    per[k][i, j] = b[k][0]
+        return per
+
     # overall
     groups = {"held_out": held_out, "all_clean": clean}
-    ov = {k: np.full((len(models), len(groups)), np.nan) for k in stats}
-    for i in range(len(models)):
-        for j, m in enumerate(groups.values()):
-            b = binned(e_all[i][m], np.zeros(int(m.sum())), [-1.0, 1.0])
-            for k in stats:
-                ov[k][i, j] = b[k][0]
     coords["rows"] = ("rows", list(groups))
-    put("overall", ("model", "rows"), ov)
+    put("overall", ("model", "rows"), by_group(groups))
 
     # per bin, held-out rows
     for q, (var, edges, unit, scale) in BINS.items():
@@ -488,14 +492,8 @@ def record_statistics(ds: xr.Dataset) -> xr.Dataset:
         for g in ROW_GROUPS
         for v in ("rigid", "flagged")
     }
-    rg = {k: np.full((len(models), len(regime_groups)), np.nan) for k in stats}
-    for i in range(len(models)):
-        for j, m in enumerate(regime_groups.values()):
-            b = binned(e_all[i][m], np.zeros(int(m.sum())), [-1.0, 1.0])
-            for k in stats:
-                rg[k][i, j] = b[k][0]
     coords["regime"] = ("regime", list(regime_groups))
-    put("regime", ("model", "regime"), rg)
+    put("regime", ("model", "regime"), by_group(regime_groups))
 
     # the band's calibration, per law
     cal = {
@@ -518,7 +516,7 @@ def record_statistics(ds: xr.Dataset) -> xr.Dataset:
 
     laws = [m for m, k in zip(models, kinds, strict=True) if k == "solver"]
     li = [list(models).index(m) for m in laws]
-    mae = ov[CRITERION][li, 0]
+    mae = out[f"overall_{CRITERION}"][1][li, 0]
     best = laws[int(np.nanargmin(mae))]
     loses = []
     for q in BINS:
