@@ -52,7 +52,7 @@ from pencore.inputs.record import (
     Scores,
 )
 from pencore.inputs.regime import rigid_regime
-from pencore.inputs.target import Target
+from pencore.inputs.target import Medium, Target
 from pencore.measured.compilation import read_compilation, rows_allowing
 from pencore.run.impact import simulate
 from pencore.studies.validation.bodies import body_projectile
@@ -67,8 +67,11 @@ __all__ = [
     "score_law",
     "gather_record",
     "record_statistics",
+    "CRITERION",
+    "scores",
     "statistics_table",
     "record_rows",
+    "write_record",
     "bands_document",
 ]
 
@@ -112,7 +115,7 @@ def record_rows_to_score(every: int = 1) -> pd.DataFrame:
     return out.iloc[::every].reset_index(drop=True)
 
 
-def law_medium(row: Mapping[str, Any], law: str, d0: float | None = None):
+def law_medium(row: Mapping[str, Any], law: str, d0: float | None = None) -> Medium:
     """The shot's concrete under a record law (:data:`RECORD_LAWS`), its size term's
     ``d0`` replaced when given (a refit)."""
     if law not in RECORD_LAWS:
@@ -127,7 +130,7 @@ def law_medium(row: Mapping[str, Any], law: str, d0: float | None = None):
     return m
 
 
-def _run(row: pd.Series, medium, num: Numerics) -> tuple[float, str]:
+def _run(row: pd.Series, medium: Medium, num: Numerics) -> tuple[float, str]:
     """pencore's depth (m; the tip's path below the face) of one shot and its outcome."""
     proj = body_projectile(row, f"row {row['row']}")
     try:
