@@ -128,11 +128,12 @@ class Calibration:
     coverage_at_stated : float
         The same at the nominal level equal to the stated one (uncalibrated).
     n_with_band : int
-        Shots with at least :data:`MIN_SHOTS` comparable shots of other sources.
+        Shots with at least :data:`~pencore.inputs.record.MIN_SHOTS` comparable shots of other
+        sources.
     n_shots : int
         All the law's shots.
     stated_level : float
-        :data:`STATED_LEVEL`.
+        :data:`~pencore.inputs.record.STATED_LEVEL`.
     """
 
     nominal_level: float

@@ -796,7 +796,7 @@ def nose_factor(nose: Nose) -> float:
 
 
 def nose_axial_moments(nose: Nose, a: float, n: int) -> np.ndarray:
-    """Full-nose moments ``J_k = int 2 pi r n_a^k dr`` (m^2), ``k = 0 .. n - 1``, over the
+    """Full-nose moments ``J_k = int 2 pi r n_a^k dr`` (m^2), ``k`` from 0 to ``n - 1``, over the
     exact profile of ``nose`` on a body of radius ``a`` (m): the frictionless DAFL axial
     force on the embedded nose in normal entry at speed ``V`` is ``sum_k a_k V^k J_k``
     (``J_0 = pi a^2``, ``J_2 = pi a^2 N*``, :func:`nose_factor`). Tangent ogive: 96-point

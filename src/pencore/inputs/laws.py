@@ -26,7 +26,8 @@ Concrete and grout (:func:`concrete_law`)
     ``crater="forrestal"`` (2 calibers) or ``"li_chen"`` (``0.707 + H/d`` calibers, their
     Eq. 25, H the nose length, set with the projectile); ``size_term="fit"``, ``S(fc) f(d)``
     of the form of Bazant's size-effect law with a declared fitted constant
-    (:data:`SIZE_TERM_FILE`, :mod:`pencore.studies.validation.size_term`), set with the
+    (:data:`~pencore.inputs.laws.SIZE_TERM_FILE`, :mod:`pencore.studies.validation.size_term`), set
+    with the
     projectile's diameter (:meth:`~pencore.inputs.target.Medium.for_projectile`).
 Metals (:func:`metal_law`, :func:`cavity_expansion`)
     The spherical cavity-expansion solution for an elastic-plastic solid with power-law
@@ -129,6 +130,7 @@ __all__ = [
     "metal",
     "soil",
     "medium_from_law",
+    "SIZE_TERM_FILE",
 ]
 
 #: Source of ``S = 82.6 fc^-0.544``.
@@ -155,7 +157,7 @@ SIZE_TERM_FILE = Path(__file__).parent / "data" / "concrete_size_term.yaml"
 
 @functools.lru_cache(maxsize=1)
 def size_term_constants() -> dict[str, Any]:
-    """The size term's constants file (:data:`SIZE_TERM_FILE`): ``d_ref_m``,
+    """The size term's constants file (:data:`~pencore.inputs.laws.SIZE_TERM_FILE`): ``d_ref_m``,
     ``exponent``, the rows and files it was fitted to, and per ``"s_model/crater"`` the
     fitted ``d0_m`` (see :mod:`pencore.studies.validation.size_term`)."""
     import yaml
@@ -312,8 +314,10 @@ def concrete_law(
         Constant Coulomb friction coefficient (default 0).
     s_model : {"forrestal", "li_chen"}, optional
         ``S`` from fc when ``s`` is not given: ``"forrestal"`` (the default),
-        ``S = 82.6 fc^-0.544`` (:func:`forrestal_s`); ``"li_chen"``, ``S = 72 fc^-0.5``
-        (:func:`li_chen_s`). Both are fits to the same Sandia/WES shots of 12.9-76.2 mm
+        ``S = 82.6 fc^-0.544`` (:func:`~pencore.inputs.laws.forrestal_s`); ``"li_chen"``, ``S = 72
+        fc^-0.5``
+        (:func:`~pencore.inputs.laws.li_chen_s`). Both are fits to the same Sandia/WES shots of
+        12.9-76.2 mm
         rods; neither has a size term.
     crater : {"none", "forrestal", "li_chen"}, optional
         The crater region by name: ``"none"`` (the paper's model, the default),
@@ -327,7 +331,8 @@ def concrete_law(
         ``f = ((1 + d_ref/d0) / (1 + d/d0))^1/2`` (the form of Bazant's size-effect law), 1
         at ``d_ref = 25 mm``; ``d0`` a declared fit per ``s_model`` and ``crater`` to the
         Sandia/WES shots and Wu et al.'s scaled series
-        (:mod:`pencore.studies.validation.size_term`, :data:`SIZE_TERM_FILE`), applied with
+        (:mod:`pencore.studies.validation.size_term`, :data:`~pencore.inputs.laws.SIZE_TERM_FILE`),
+        applied with
         the projectile's diameter when a run is prepared. Not a published law. Needs ``S``
         from fc (not a given ``s``) and a named crater (not ``crater_depth``). Default
         ``"none"``.

@@ -10,7 +10,8 @@ provenance)::
 
 ``sigma_n(V) = a0 + a1 V + a2 V^2`` is the normal stress the target's law puts on the nose
 tip at the striking speed (the rigid model's stagnation stress, the largest it puts on the
-nose), ``Y`` the projectile's yield strength (:attr:`pencore.Projectile.yield_strength`).
+nose), ``Y`` the projectile's yield strength (``yield_strength`` of
+:class:`~pencore.inputs.geometry.Projectile`).
 The bound (5.5) is set on the rods Piekutowski et al. call rigid or deformed; it is a
 judgement on the nose's load, not a model of erosion: outside it pencore still answers, and
 warns (:class:`~pencore.errors.RigidRegimeWarning`) once per prepared problem.

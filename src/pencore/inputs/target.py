@@ -130,9 +130,8 @@ class SizeTerm:
     """A size term on the static resistance: ``a0(d) = a0 f(d)``, of the form of
     Bazant's size-effect law (Z.P. Bazant, "Size effect in blunt fracture: concrete, rock,
     metal", J. Eng. Mech. 110 (1984) 518-535: a nominal strength falling as
-    ``(1 + D/D0)^-1/2``), normalised to 1 at a reference diameter::
-
-        f(d) = ((1 + d_ref / d0) / (1 + d / d0)) ** exponent
+    ``(1 + D/D0)^-1/2``), normalised to 1 at a reference diameter:
+    ``f(d) = ((1 + d_ref / d0) / (1 + d / d0)) ** exponent``.
 
     Parameters
     ----------
@@ -686,7 +685,8 @@ class Target:
             the bottom face if it is free (else 0), the projectile radius (m) and the
             tip's axial coordinate (m; 0 without a crater), and with a crater the nose's
             kind, parameter, length (m) and full-nose moments (m^2,
-            :func:`pencore.inputs.geometry.nose_axial_moments`), :data:`WINDOW_COLUMNS` in
+            :func:`pencore.inputs.geometry.nose_axial_moments`),
+            :data:`~pencore.inputs.target.WINDOW_COLUMNS` in
             all; see
             :func:`pencore.kernels.windows.depth_factor` and
             :func:`pencore.kernels.crater.element_factor`.

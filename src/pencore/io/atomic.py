@@ -142,7 +142,8 @@ def atomic_path(
     mode : int
         Permission bits of the finished file, before the umask.
     protect : iterable of path-like
-        Files ``path`` must not be (the run's own inputs), see :func:`check_replaceable`.
+        Files ``path`` must not be (the run's own inputs), see
+        :func:`~pencore.io.outputs.check_replaceable`.
     suffixes : iterable of str, optional
         The suffixes the writer knows (e.g. ``(".nc",)``); None: any.
 
@@ -150,7 +151,7 @@ def atomic_path(
     ------
     WriteError
         A destination that is not a regular file or is protected (before anything is
-        written, see :func:`check_replaceable`); any failure to write, with the
+        written, see :func:`~pencore.io.outputs.check_replaceable`); any failure to write, with the
         temporary file removed. ``KeyboardInterrupt``
         and ``SystemExit`` (SIGTERM) pass through, also after the clean-up.
     """

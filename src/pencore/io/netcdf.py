@@ -157,7 +157,7 @@ def write_netcdf(
     """Write ``ds`` to ``path`` with provenance, compression and an atomic replace.
 
     Only a regular file (or nothing) at ``path`` is replaced, and never one of
-    ``protect`` (the run's own input files): :func:`pencore.io.atomic.check_replaceable`.
+    ``protect`` (the run's own input files): :func:`pencore.io.outputs.check_replaceable`.
 
     Parameters
     ----------

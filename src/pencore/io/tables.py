@@ -1,6 +1,6 @@
 """Reading pencore's CSV tables: the shipped ones (``config/*.csv``, the measured shots
 and the paper's claims; ``results/archive/**/*.csv``; ``benchmarks/results/*.csv``) and
-those ``pencore ... --out FILE.csv`` writes.
+those a command's ``--out FILE.csv`` writes.
 
 A table may open with ``#`` lines that say where its numbers come from (source, table,
 page, units, the command that wrote it); the rows follow. :func:`read_table` keeps those

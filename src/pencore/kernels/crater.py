@@ -63,7 +63,7 @@ exact for Forrestal's law ``a0 + a2 Vn^2``; other terms of the law are scaled by
 
 Layer columns (:meth:`pencore.inputs.target.Target.kernel_arrays`): 2 ``k d`` (m), 5 the
 projectile mass (kg), 8 the body radius ``a`` (m), 9 the tip's axial coordinate (m),
-:data:`COL_NOSE` the nose kind (:data:`NOSE_OGIVE`, :data:`NOSE_CONE`, :data:`NOSE_FLAT`),
+:data:`COL_NOSE` the nose kind (``NOSE_OGIVE``, ``NOSE_CONE``, ``NOSE_FLAT``),
 then its parameter (the ogive radius ``2 CRH a``, m; the cone's ``tan`` of its
 half-angle), its length ``L_n`` (m), and the full-nose moments ``J_k(L_n)`` (m^2) from
 column :data:`COL_MOMENTS` on.

@@ -2,7 +2,8 @@
 
 The public compilation of normal-impact, ogive-nose shots into concrete
 (:mod:`pencore.measured.compilation`, ``config/concrete_compilation.csv``) is run shot by
-shot with the solver (each rod by its measured mass, :func:`body_projectile`; the target a
+shot with the solver (each rod by its measured mass,
+:func:`~pencore.studies.validation.bodies.body_projectile`; the target a
 half-space of the shot's ``fc`` and density) under every concrete law pencore ships
 (:data:`pencore.inputs.record.RECORD_LAWS`), and beside them three closed forms
 (:data:`CLOSED_FORMS`). Two groups of rows are scored: the clean rows, which make the
@@ -116,7 +117,8 @@ def record_rows_to_score(every: int = 1) -> pd.DataFrame:
 
 
 def law_medium(row: Mapping[str, Any], law: str, d0: float | None = None) -> Medium:
-    """The shot's concrete under a record law (:data:`RECORD_LAWS`), its size term's
+    """The shot's concrete under a record law (:data:`~pencore.inputs.record.RECORD_LAWS`), its
+    size term's
     ``d0`` replaced when given (a refit)."""
     if law not in RECORD_LAWS:
         raise InputError(f"record: unknown law {law!r}; use one of {', '.join(RECORD_LAWS)}")
@@ -177,7 +179,7 @@ def score_law(
     Parameters
     ----------
     law : str
-        A record law (:data:`RECORD_LAWS`).
+        A record law (:data:`~pencore.inputs.record.RECORD_LAWS`).
     rows : pandas.DataFrame, optional
         The rows (default :func:`record_rows_to_score`).
     numerics : Numerics or mapping, optional
