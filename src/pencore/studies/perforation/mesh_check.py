@@ -134,7 +134,7 @@ def mesh_check(coarse: xr.Dataset, fine: xr.Dataset, factor: float) -> xr.Datase
             ),  # fmt: skip
             "reason": (dims, reason.astype(str), {"long_name": "why a cell is not converged"}),
         },
-        coords={d: coarse[d].values for d in dims},
+        coords={d: coarse[d] for d in dims},  # with their units and long names
     )
     num1 = _rings(coarse)
     num2 = _rings(fine)
