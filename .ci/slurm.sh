@@ -235,19 +235,20 @@ if [[ $(( n_sub + n_local )) -ne "$n_jobs" || "$n_sub" -eq 0 ]]; then
     echo "slurm.sh: $n_sub sbatch submissions + $n_local localrules != $n_jobs jobs" >&2
     exit 1
 fi
-# each submission with the site's partition and account and the profile's memory; the
-# ensemble's gather job with the profile's default run time (the profile's numbers, read
-# from it: a --default-resources on the command line would have dropped them)
-read -r prof_mem prof_runtime < <("$PY" -c '
+# each submission with the site's partition and account and the profile's default memory
+# and cpus per task, and a run time (the rule's, or the profile's default): the profile's
+# numbers, read from it; a --default-resources on the command line would have dropped them
+# (the ensemble's gather is a local rule, so every submitted rule sets its own run time)
+read -r prof_mem prof_cpus < <("$PY" -c '
 import yte
 with open("workflow/profiles/slurm/config.yaml") as f:
     d = yte.process_yaml(f, require_use_yte=True)["default-resources"]
-print(d["mem_mb"], d["runtime"])')
+print(d["mem_mb"], d["cpus_per_task"])')
 n_calls="$(wc -l < "$SBATCH_CALLS")"
 n_site="$(grep -c -- "-A pencore_ci -p ci .*--mem $prof_mem\b" "$SBATCH_CALLS" || true)"
-n_gather="$(grep -c -- "rule_ensemble_gather.* -t $prof_runtime\b" "$SBATCH_CALLS" || true)"
-log "sbatch calls=$n_calls, with partition, account and --mem $prof_mem: $n_site; gather with -t $prof_runtime: $n_gather"
-if [[ "$n_calls" -ne "$n_sub" || "$n_site" -ne "$n_calls" || "$n_gather" -ne 1 ]]; then
+n_kept="$(grep -c -- " -t [0-9][0-9]* .*--cpus-per-task=$prof_cpus\b" "$SBATCH_CALLS" || true)"
+log "sbatch calls=$n_calls, with partition, account and --mem $prof_mem: $n_site; with a run time and --cpus-per-task=$prof_cpus: $n_kept"
+if [[ "$n_calls" -ne "$n_sub" || "$n_site" -ne "$n_calls" || "$n_kept" -ne "$n_calls" ]]; then
     echo "slurm.sh: the jobs did not get the site's partition and account with the profile's resources:" >&2
     cat "$SBATCH_CALLS" >&2
     exit 1
